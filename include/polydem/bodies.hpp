@@ -1,0 +1,49 @@
+#pragma once
+// Body state as structure-of-arrays, split by how hot each field is.
+#include <cstddef>
+#include <vector>
+
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+struct Bodies {
+  // Hot: read by the contact loop every step.
+  std::vector<Vec3> position;          // m, centre of mass, world frame
+  std::vector<Quat> orientation;       // principal frame -> world frame, unit
+  std::vector<Vec3> velocity;          // m/s, world frame
+  std::vector<Vec3> angular_velocity;  // rad/s, world frame (derived from angular_momentum)
+
+  // Integration state.
+  std::vector<Vec3> angular_momentum;  // kg m^2/s, principal (body) frame
+  std::vector<Vec3> force;             // N, world frame, summed this step
+  std::vector<Vec3> torque;            // N m, world frame, about the centre of mass
+
+  // Constant per body.
+  std::vector<int> shape;              // index into the shape table
+  std::vector<double> scale;           // homothety factor applied to the library shape
+  std::vector<double> mass;            // kg
+  std::vector<Vec3> inertia;           // kg m^2, principal moments
+
+  // Cold: output only.
+  std::vector<int> group;
+
+  std::size_t size() const { return position.size(); }
+
+  void resize(std::size_t n) {
+    position.resize(n, Vec3::Zero());
+    orientation.resize(n, Quat::Identity());
+    velocity.resize(n, Vec3::Zero());
+    angular_velocity.resize(n, Vec3::Zero());
+    angular_momentum.resize(n, Vec3::Zero());
+    force.resize(n, Vec3::Zero());
+    torque.resize(n, Vec3::Zero());
+    shape.resize(n, 0);
+    scale.resize(n, 1.0);
+    mass.resize(n, 0.0);
+    inertia.resize(n, Vec3::Zero());
+    group.resize(n, 0);
+  }
+};
+
+}  // namespace polydem

@@ -1,0 +1,18 @@
+#pragma once
+// Parameters of the contact force law as the user types them (`config`, `config_driver`).
+
+namespace polydem {
+
+struct ContactParams {
+  double kn = 0.0;         // N/m, normal stiffness
+  double kt = 0.0;         // N/m, tangential stiffness
+  double kr = 0.0;         // N m/rad, rolling stiffness (0: no rolling resistance)
+  double mur = 0.0;        // -, rolling friction coefficient (cap mur * l * fn)
+  double mu = 0.0;         // -, Coulomb friction coefficient
+  double en = -1.0;        // -, normal restitution in (0, 1]; < 0 when damp_rate is given
+  double damp_rate = -1.0; // -, damping ratio alpha_n in [0, 1); < 0 when en is given
+  double fc = 0.0;         // N, cohesion force at touching (0: no cohesion)
+  double dncut = 0.0;      // m, width of the cohesion band beyond touching
+};
+
+}  // namespace polydem

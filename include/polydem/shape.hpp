@@ -1,0 +1,32 @@
+#pragma once
+// A spheropolyhedron shape: a convex polyhedron swept by a sphere of radius `radius`.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+struct Shape {
+  std::string name;
+  double radius = 0.0;                      // m, Minkowski (rounding) radius, > 0
+  std::vector<Vec3> vertices;               // m, principal frame, about the centre of mass
+  std::vector<std::array<int, 2>> edges;    // vertex index pairs, each edge once
+  std::vector<std::vector<int>> faces;      // convex polygons, counter-clockwise seen from outside
+
+  // Mass properties of the rounded body (filled by compute_mass_properties).
+  double volume = 0.0;                      // m^3, Steiner volume of the rounded body
+  Vec3 inertia_per_mass = Vec3::Zero();     // m^2, principal moments of inertia / mass
+  double bounding_radius = 0.0;             // m, max |vertex| + radius (about the centre of mass)
+  std::vector<Vec3> face_normals;           // outward unit normals, one per face
+
+  // Placement of the principal frame in the frame the shape was given in:
+  // x_input = input_center + input_rotation * x_principal.
+  Vec3 input_center = Vec3::Zero();
+  Quat input_rotation = Quat::Identity();
+
+  bool is_sphere() const { return vertices.size() == 1; }
+};
+
+}  // namespace polydem
