@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what polydem needs to build and test, from Debian packages. Idempotent: installs
+# only what is missing. Uses sudo only when not root.
+set -euo pipefail
+packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2
+          python3 python3-vtk9 python3-numpy python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all dependencies present"
+  exit 0
+fi
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+echo "setup: installing ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
