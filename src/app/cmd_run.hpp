@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+// `polydem run SCENE.yaml [--out DIR] [--threads N] [--until T] [--resume CHECKPOINT]`
+int cmd_run(const std::vector<std::string>& args);
+// `polydem check SCENE.yaml`
+int cmd_check(const std::vector<std::string>& args);
+
+}  // namespace polydem

@@ -1,0 +1,40 @@
+#pragma once
+// Rigid-body time integration: velocity Verlet for translation, a symmetric splitting of the
+// free rotor (NO_SQUISH, Miller et al. 2002, J. Chem. Phys. 116, 8649) for rotation.
+// One engine step: kick(dt/2); drift(dt); compute forces; kick(dt/2).
+// Preconditions: mass > 0 and every principal moment > 0 (massless bodies are drivers).
+#include <cstddef>
+#include <vector>
+
+#include "polydem/bodies.hpp"
+
+namespace polydem {
+
+// Bodies sorted once by rotation path, so the drift loop never tests inertia per body.
+struct RotorGroups {
+  std::vector<std::size_t> isotropic;   // Ix == Iy == Iz: one exact rotation per step
+  std::vector<std::size_t> asymmetric;  // the 3,2,1,2,3 splitting
+};
+
+// True when the principal moments agree within 1e-12 relative (sphere, cube, Platonic solid).
+bool is_isotropic(const Vec3& inertia);
+
+// Recompute whenever inertia changes (bodies added or removed).
+RotorGroups group_rotors(const Bodies& b);
+
+// v += F/m h; L_body += R^T torque h (a half kick with h = dt/2 in velocity Verlet).
+void kick(Bodies& b, double h);
+
+// x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).
+void drift(Bodies& b, double dt, const RotorGroups& groups);
+
+// Same, choosing each body's rotation path on the fly (for callers without RotorGroups).
+void drift(Bodies& b, double dt);
+
+// angular_velocity from angular_momentum and orientation (after the caller sets them).
+void update_angular_velocity(Bodies& b);
+
+// angular_momentum of body i from a world angular velocity; also sets angular_velocity[i].
+void set_angular_velocity(Bodies& b, std::size_t i, const Vec3& w_world);
+
+}  // namespace polydem

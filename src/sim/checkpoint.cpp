@@ -1,0 +1,153 @@
+#include "sim/checkpoint.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "polydem/error.hpp"
+
+namespace polydem {
+
+namespace {
+
+constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '1'};
+
+struct Writer {
+  std::ofstream out;
+  template <class T> void pod(const T& v) { out.write(reinterpret_cast<const char*>(&v), sizeof(T)); }
+  template <class T> void array(const std::vector<T>& v) {
+    pod<std::uint64_t>(v.size());
+    out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(T)));
+  }
+  void string(const std::string& s) { pod<std::uint64_t>(s.size()); out.write(s.data(), std::streamsize(s.size())); }
+};
+
+struct Reader {
+  std::ifstream in;
+  std::string path;
+  void fail() const { throw InputError(path + ": truncated or damaged checkpoint"); }
+  template <class T> void pod(T& v) { if (!in.read(reinterpret_cast<char*>(&v), sizeof(T))) fail(); }
+  template <class T> void array(std::vector<T>& v, std::size_t expected) {
+    std::uint64_t n = 0;
+    pod(n);
+    if (n != expected) throw InputError(path + ": checkpoint holds " + std::to_string(n) +
+                                        " entries where the scene has " + std::to_string(expected) +
+                                        " (was it written for another scene?)");
+    v.resize(n);
+    if (!in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)))) fail();
+  }
+  void string(std::string& s) {
+    std::uint64_t n = 0;
+    pod(n);
+    if (n > (1u << 20)) fail();
+    s.resize(n);
+    if (!in.read(s.data(), std::streamsize(n))) fail();
+  }
+};
+
+// Active slots with their pair, so the next rebuild hands their history over by key.
+struct SavedSlot { BodyPair pair; ContactSlot slot; };
+
+void write_active(Writer& w, const PairList& list) {
+  std::vector<SavedSlot> saved;
+  for (std::size_t k = 0; k < list.size(); ++k)
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+      if (list.slots[s].active) saved.push_back({list.pairs[k], list.slots[s]});
+  w.pod<std::uint64_t>(saved.size());
+  for (const SavedSlot& s : saved) w.pod(s);
+}
+
+void read_active(Reader& r, PairList& list) {
+  std::uint64_t n = 0;
+  r.pod(n);
+  list = PairList{};
+  list.slot_begin.push_back(0);
+  for (std::uint64_t e = 0; e < n; ++e) {
+    SavedSlot s;
+    r.pod(s);
+    if (list.pairs.empty() || list.pairs.back().i != s.pair.i || list.pairs.back().j != s.pair.j) {
+      list.pairs.push_back(s.pair);
+      list.slot_begin.push_back(list.slot_begin.back());
+    }
+    list.slots.push_back(s.slot);
+    ++list.slot_begin.back();
+  }
+  list.resize_results();
+}
+
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Simulation& sim, const OutputProgress& progress) {
+  const std::string tmp = path + ".tmp";
+  Writer w{std::ofstream(tmp, std::ios::binary)};
+  if (!w.out) throw RunError("cannot write checkpoint " + tmp + ": " + std::strerror(errno));
+  w.out.write(kMagic, sizeof(kMagic));
+  w.pod(sim.step_index());
+  w.pod(sim.dt());
+  w.pod(sim.ledger);
+  const Bodies& b = sim.bodies;
+  w.array(b.position); w.array(b.orientation); w.array(b.velocity); w.array(b.angular_velocity);
+  w.array(b.angular_momentum); w.array(b.force); w.array(b.torque);
+  w.pod<std::uint64_t>(sim.drivers.size());
+  for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
+    const Driver& d = sim.drivers[j];
+    w.pod(d.active); w.pod(d.point); w.pod(d.normal); w.pod(d.velocity); w.pod(d.force); w.pod(d.torque); w.pod(d.work);
+  }
+  write_active(w, sim.engine().body_pairs());
+  write_active(w, sim.engine().driver_pairs());
+  w.pod(progress.frame);
+  w.pod<std::uint64_t>(progress.frames.size());
+  for (const OutputFrame& f : progress.frames) {
+    w.pod(f.time);
+    w.pod<std::uint64_t>(f.files.size());
+    for (const std::string& s : f.files) w.string(s);
+  }
+  w.out.close();
+  if (!w.out) throw RunError("cannot write checkpoint " + tmp);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0)  // atomic: a crash never leaves half a checkpoint
+    throw RunError("cannot rename " + tmp + " to " + path + ": " + std::strerror(errno));
+}
+
+void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress) {
+  Reader r{std::ifstream(path, std::ios::binary), path};
+  if (!r.in) throw InputError(path + ": cannot open checkpoint");
+  char magic[sizeof(kMagic)];
+  if (!r.in.read(magic, sizeof(magic)) || std::memcmp(magic, kMagic, sizeof(kMagic)) != 0)
+    throw InputError(path + ": not a polydem checkpoint");
+  std::int64_t step = 0;
+  double dt = 0.0;
+  r.pod(step);
+  r.pod(dt);
+  if (dt != sim.dt())
+    throw InputError(path + ": checkpoint time step " + std::to_string(dt) + " s differs from the scene's " +
+                     std::to_string(sim.dt()) + " s (was it written for another scene?)");
+  sim.set_step_index(step);
+  r.pod(sim.ledger);
+  Bodies& b = sim.bodies;
+  const std::size_t n = b.size();
+  r.array(b.position, n); r.array(b.orientation, n); r.array(b.velocity, n); r.array(b.angular_velocity, n);
+  r.array(b.angular_momentum, n); r.array(b.force, n); r.array(b.torque, n);
+  std::uint64_t nd = 0;
+  r.pod(nd);
+  if (nd != sim.drivers.size()) throw InputError(path + ": checkpoint driver count differs from the scene's");
+  for (std::size_t j = 0; j < nd; ++j) {
+    Driver& d = sim.drivers[j];
+    r.pod(d.active); r.pod(d.point); r.pod(d.normal); r.pod(d.velocity); r.pod(d.force); r.pod(d.torque); r.pod(d.work);
+  }
+  read_active(r, sim.engine().body_pairs());
+  read_active(r, sim.engine().driver_pairs());
+  sim.engine().force_rebuild();
+  r.pod(progress.frame);
+  std::uint64_t nf = 0;
+  r.pod(nf);
+  progress.frames.resize(nf);
+  for (OutputFrame& f : progress.frames) {
+    r.pod(f.time);
+    std::uint64_t nfiles = 0;
+    r.pod(nfiles);
+    f.files.resize(nfiles);
+    for (std::string& s : f.files) r.string(s);
+  }
+}
+
+}  // namespace polydem

@@ -1,0 +1,26 @@
+#pragma once
+// Checkpoints: the full dynamic state of a run, so `--resume` continues bit for bit.
+// The contact lists are rebuilt at every checkpoint step, in the uninterrupted run as in the
+// resumed one, so only the active contacts (keys and histories) need to be stored.
+#include <string>
+#include <vector>
+
+#include "sim/simulation.hpp"
+
+namespace polydem {
+
+struct OutputFrame {
+  double time = 0.0;
+  std::vector<std::string> files;   // relative to the output folder
+};
+
+struct OutputProgress {              // where the writers were, so a resumed run appends
+  std::int64_t frame = 0;            // next VTK frame number
+  std::vector<OutputFrame> frames;   // frames already in scene.pvd
+};
+
+void write_checkpoint(const std::string& path, const Simulation& sim, const OutputProgress& progress);
+// Restores a checkpoint written for the same scene; throws InputError when it does not fit.
+void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress);
+
+}  // namespace polydem

@@ -1,0 +1,202 @@
+#include "sim/contact_engine.hpp"
+
+#include <algorithm>
+
+namespace polydem {
+
+namespace {
+
+// The partner of a body-body pair: the other body.
+struct BodyPartner {
+  const PosedBody* posed;
+  const Bodies* bodies;
+  bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
+    return feature_contact(a, posed[j], f, max_gap, out);
+  }
+  Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
+  Vec3 velocity_at(std::uint32_t j, const Vec3& p) const {
+    return bodies->velocity[j] + bodies->angular_velocity[j].cross(p - bodies->position[j]);
+  }
+  Vec3 angular_velocity(std::uint32_t j) const { return bodies->angular_velocity[j]; }
+  double m_eff(std::uint32_t i, std::uint32_t j) const {
+    const double mi = bodies->mass[i], mj = bodies->mass[j];
+    return mi * mj / (mi + mj);
+  }
+};
+
+// The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC).
+struct DriverPartner {
+  const Drivers* drivers;
+  const Bodies* bodies;
+  bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
+    return drivers->contact(a, j, f, max_gap, out);
+  }
+  Vec3 center(std::uint32_t j) const { return drivers->center(j); }
+  Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
+  Vec3 angular_velocity(std::uint32_t j) const { return drivers->angular_velocity(j); }
+  double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
+};
+
+// Lays out per-pair candidate lists as the CSR slots of a PairList, each run sorted by key.
+void fill_slots(std::vector<std::vector<FeaturePair>>& per_pair, PairList& list) {
+  list.slot_begin.assign(per_pair.size() + 1, 0);
+  for (std::size_t k = 0; k < per_pair.size(); ++k)
+    list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
+  list.slots.assign(list.slot_begin.back(), ContactSlot{});
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t k = 0; k < per_pair.size(); ++k) {
+    auto& c = per_pair[k];
+    std::sort(c.begin(), c.end(), [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); });
+    for (std::size_t s = 0; s < c.size(); ++s) list.slots[list.slot_begin[k] + s].features = c[s];
+  }
+  list.resize_results();
+}
+
+}  // namespace
+
+ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bodies,
+                             ContactSettings settings)
+    : shapes_(shapes), settings_(settings) {
+  band_particle_ = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;
+  band_driver_ = settings_.driver.cohesion ? settings_.driver.dncut : 0.0;
+  const std::size_t n = bodies.size();
+  vertex_offset_.assign(n + 1, 0);
+  bounding_.resize(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const Shape& s = shapes_[bodies.shape[b]];
+    vertex_offset_[b + 1] = vertex_offset_[b] + std::uint32_t(s.vertices.size());
+    bounding_[b] = s.bounding_radius * bodies.scale[b];
+  }
+  world_vertices_.resize(vertex_offset_[n]);
+  posed_.resize(n);
+}
+
+void ContactEngine::pose(const Bodies& bodies) {
+  const std::size_t n = bodies.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < n; ++b) {
+    const Shape& s = shapes_[bodies.shape[b]];
+    Vec3* v = world_vertices_.data() + vertex_offset_[b];
+    pose_vertices(s, bodies.scale[b], bodies.position[b], bodies.orientation[b], v);
+    posed_[b] = PosedBody{&s, v, bodies.orientation[b].toRotationMatrix(), bodies.position[b],
+                          s.radius * bodies.scale[b]};
+  }
+}
+
+void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
+  const double range_p = settings_.skin + band_particle_;
+  const double range_d = settings_.skin + band_driver_;
+  PairList fresh;
+  cells_.build_pairs(bodies.position, bounding_, range_p, fresh.pairs);
+  std::vector<std::vector<FeaturePair>> per_pair(fresh.pairs.size());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t k = 0; k < fresh.pairs.size(); ++k)
+    candidate_features(posed_[fresh.pairs[k].i], posed_[fresh.pairs[k].j], range_p, per_pair[k]);
+  fill_slots(per_pair, fresh);
+  carry_history(body_list_, fresh);
+  body_list_ = std::move(fresh);
+  body_index_.build(body_list_.pairs, bodies.size(), true);
+
+  PairList fresh_d;
+  per_pair.clear();
+  for (std::uint32_t i = 0; i < bodies.size(); ++i)
+    for (std::uint32_t j = 0; j < drivers.size(); ++j)
+      if (drivers.near(j, bodies.position[i], bounding_[i] + range_d)) {
+        fresh_d.pairs.push_back({i, j});
+        per_pair.emplace_back();
+        drivers.candidates(posed_[i], j, range_d, per_pair.back());
+      }
+  fill_slots(per_pair, fresh_d);
+  carry_history(driver_list_, fresh_d);
+  driver_list_ = std::move(fresh_d);
+  driver_index_.build(driver_list_.pairs, bodies.size(), false);
+
+  trigger_.mark_built(bodies.position, bodies.orientation);
+  must_rebuild_ = false;
+  ++stats_.rebuilds;
+  stats_.body_pairs = body_list_.size();
+  stats_.driver_pairs = driver_list_.size();
+  stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
+}
+
+template <class Partner>
+static void all_pair_forces(PairList& list, const LawParams& law, double band, double dt,
+                            const BodyView& view, const Partner& partner, std::vector<double>& elastic,
+                            std::vector<double>& dissipated, std::vector<int>& contacts) {
+  const std::size_t n = list.size();
+  elastic.assign(n, 0.0);
+  dissipated.assign(n, 0.0);
+  contacts.assign(n, 0);
+#pragma omp parallel
+  {
+    PairScratch scratch;
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t k = 0; k < n; ++k) {
+      const PairTotals t = pair_forces(law, band, dt, view, partner, list, std::uint32_t(k), scratch);
+      list.force_i[k] = t.force_i;
+      list.torque_i[k] = t.torque_i;
+      list.torque_j[k] = t.torque_j;
+      list.touching[k] = t.contacts > 0;
+      elastic[k] = t.elastic;
+      dissipated[k] = t.dissipated;
+      contacts[k] = t.contacts;
+    }
+  }
+}
+
+void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
+  pose(bodies);
+  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin))
+    rebuild(bodies, drivers);
+  const BodyView view{posed_.data(), bodies.velocity.data(), bodies.angular_velocity.data(), bodies.mass.data()};
+  stats_.elastic = stats_.dissipated = 0.0;
+  stats_.contacts = 0;
+  // Energies are summed serially in pair order: repeatable whatever the thread count.
+  auto add_totals = [this]() {
+    for (std::size_t k = 0; k < pair_elastic_.size(); ++k) {
+      stats_.elastic += pair_elastic_[k];
+      stats_.dissipated += pair_dissipated_[k];
+      stats_.contacts += std::size_t(pair_contacts_[k]);
+    }
+  };
+  all_pair_forces(body_list_, settings_.particle, band_particle_, dt, view, BodyPartner{posed_.data(), &bodies},
+                  pair_elastic_, pair_dissipated_, pair_contacts_);
+  add_totals();
+  if (!driver_list_.pairs.empty()) {
+    all_pair_forces(driver_list_, settings_.driver, band_driver_, dt, view, DriverPartner{&drivers, &bodies},
+                    pair_elastic_, pair_dissipated_, pair_contacts_);
+    add_totals();
+  }
+  reduce(bodies, drivers);
+}
+
+void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {
+  const std::size_t n = bodies.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < n; ++b) {
+    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+    for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
+      const std::uint32_t k = body_index_.entries[e] >> 1;
+      if (!body_list_.touching[k]) continue;
+      if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
+      else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
+    }
+    for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
+      const std::uint32_t k = driver_index_.entries[e] >> 1;
+      if (!driver_list_.touching[k]) continue;
+      f += driver_list_.force_i[k];
+      t += driver_list_.torque_i[k];
+    }
+    bodies.force[b] += f;
+    bodies.torque[b] += t;
+  }
+  for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
+  for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable
+    if (!driver_list_.touching[k]) continue;
+    Driver& d = drivers[driver_list_.pairs[k].j];
+    d.force -= driver_list_.force_i[k];
+    d.torque += driver_list_.torque_j[k];
+  }
+}
+
+}  // namespace polydem

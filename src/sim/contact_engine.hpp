@@ -1,0 +1,71 @@
+#pragma once
+// The contact stage of a step: poses the bodies, keeps the Verlet lists (rebuilt when a body
+// may have moved half the skin), evaluates every pair in parallel and sums the forces on
+// each body in a fixed order, so results do not depend on the thread count.
+#include <vector>
+
+#include "driver/drivers.hpp"
+#include "polydem/bodies.hpp"
+#include "polydem/shape.hpp"
+#include "sim/contact_lists.hpp"
+#include "sim/pair_kernel.hpp"
+
+namespace polydem {
+
+struct ContactSettings {
+  LawParams particle;       // `config`
+  LawParams driver;         // `config_driver`
+  double skin = 0.0;        // m, Verlet skin
+};
+
+struct ContactStats {
+  std::size_t rebuilds = 0;
+  std::size_t body_pairs = 0, driver_pairs = 0;   // in the Verlet lists
+  std::size_t slots = 0;                          // candidate feature pairs
+  std::size_t contacts = 0;                       // active sub-contacts this step
+  double elastic = 0.0;                           // J, stored in the springs now
+  double dissipated = 0.0;                        // J, dissipated this step
+};
+
+class ContactEngine {
+ public:
+  ContactEngine(const std::vector<Shape>& shapes, const Bodies& bodies, ContactSettings settings);
+
+  // Adds the contact forces and torques of this step to bodies.force / bodies.torque and the
+  // reactions to the drivers.
+  void compute(Bodies& bodies, Drivers& drivers, double dt);
+  // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
+  // in an uninterrupted and in a resumed run).
+  void force_rebuild() { must_rebuild_ = true; }
+
+  const ContactStats& stats() const { return stats_; }
+  const PairList& body_pairs() const { return body_list_; }
+  const PairList& driver_pairs() const { return driver_list_; }
+  PairList& body_pairs() { return body_list_; }
+  PairList& driver_pairs() { return driver_list_; }
+
+ private:
+  void pose(const Bodies& bodies);
+  void rebuild(const Bodies& bodies, const Drivers& drivers);
+  void body_pair_forces(const Bodies& bodies, double dt);
+  void driver_pair_forces(const Bodies& bodies, const Drivers& drivers, double dt);
+  void reduce(Bodies& bodies, Drivers& drivers) const;
+
+  const std::vector<Shape>& shapes_;
+  ContactSettings settings_;
+  double band_particle_, band_driver_;    // m, interaction band beyond touching (cohesion)
+  std::vector<std::uint32_t> vertex_offset_;
+  std::vector<Vec3> world_vertices_;
+  std::vector<PosedBody> posed_;
+  std::vector<double> bounding_;           // m, scaled bounding radius per body
+  CellList cells_;
+  RebuildTrigger trigger_;
+  bool must_rebuild_ = true;
+  PairList body_list_, driver_list_;
+  BodyPairIndex body_index_, driver_index_;
+  std::vector<double> pair_elastic_, pair_dissipated_;
+  std::vector<int> pair_contacts_;
+  ContactStats stats_;
+};
+
+}  // namespace polydem

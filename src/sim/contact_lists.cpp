@@ -1,0 +1,47 @@
+#include "sim/contact_lists.hpp"
+
+namespace polydem {
+
+void BodyPairIndex::build(const std::vector<BodyPair>& pairs, std::size_t n_bodies,
+                          bool partner_is_body) {
+  begin.assign(n_bodies + 1, 0);
+  for (const BodyPair& p : pairs) {
+    ++begin[p.i + 1];
+    if (partner_is_body) ++begin[p.j + 1];
+  }
+  for (std::size_t b = 0; b < n_bodies; ++b) begin[b + 1] += begin[b];
+  entries.resize(begin[n_bodies]);
+  std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) {  // increasing k: fixed summation order
+    entries[fill[pairs[k].i]++] = k << 1;
+    if (partner_is_body) entries[fill[pairs[k].j]++] = (k << 1) | 1u;
+  }
+}
+
+namespace {
+bool pair_less(const BodyPair& a, const BodyPair& b) {
+  return a.i != b.i ? a.i < b.i : a.j < b.j;
+}
+}  // namespace
+
+void carry_history(const PairList& old_list, PairList& fresh) {
+  std::size_t k_new = 0;
+  for (std::size_t k_old = 0; k_old < old_list.size(); ++k_old) {
+    const BodyPair& p = old_list.pairs[k_old];
+    while (k_new < fresh.size() && pair_less(fresh.pairs[k_new], p)) ++k_new;
+    if (k_new == fresh.size()) return;
+    if (pair_less(p, fresh.pairs[k_new])) continue;  // pair dropped out of range
+    std::uint32_t s_new = fresh.slot_begin[k_new];
+    const std::uint32_t s_new_end = fresh.slot_begin[k_new + 1];
+    for (std::uint32_t s = old_list.slot_begin[k_old]; s < old_list.slot_begin[k_old + 1]; ++s) {
+      const ContactSlot& old_slot = old_list.slots[s];
+      if (!old_slot.active) continue;
+      const std::uint64_t key = feature_key(old_slot.features);
+      while (s_new < s_new_end && feature_key(fresh.slots[s_new].features) < key) ++s_new;
+      if (s_new < s_new_end && feature_key(fresh.slots[s_new].features) == key)
+        fresh.slots[s_new] = old_slot;
+    }
+  }
+}
+
+}  // namespace polydem

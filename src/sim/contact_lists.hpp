@@ -1,0 +1,61 @@
+#pragma once
+// Verlet lists of interacting pairs and the contact state that persists between steps.
+//
+// A pair is (body i, partner j): another body (i < j) or a driver. Each pair owns a run of
+// slots, one per candidate feature pair found at the last rebuild, sorted by key. A slot
+// carries its contact's history (tangential spring, rolling moment) while the key lives, so
+// history needs no lookup between rebuilds; rebuilds hand it over by key.
+#include <cstdint>
+#include <vector>
+
+#include "contact/law.hpp"
+#include "geometry/features.hpp"
+#include "neighbor/broad_phase.hpp"
+
+namespace polydem {
+
+struct ContactSlot {
+  FeaturePair features;       // the key within the pair: (type, feature of i, feature of j)
+  bool active = false;        // in contact at the last step
+  ContactHistory history;     // N, N m: springs carried while the key lives
+  Vec3 point = Vec3::Zero();  // m, last contact point: history hand-over, output
+  Vec3 force = Vec3::Zero();  // N on i at the last step: output
+  double fn = 0.0;            // N, last normal force
+  double gap = 0.0;           // m, last gap (negative: overlap)
+};
+
+// Packs a contact key of one pair into an integer that orders slots deterministically.
+inline std::uint64_t feature_key(FeaturePair f) {
+  return (std::uint64_t(f.type) << 32) | (std::uint64_t(f.a) << 16) | std::uint64_t(f.b);
+}
+
+struct PairList {
+  std::vector<BodyPair> pairs;             // sorted by (i, j)
+  std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
+  std::vector<ContactSlot> slots;
+  // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
+  std::vector<Vec3> force_i, torque_i, torque_j;
+  std::vector<std::uint8_t> touching;      // 1 when the pair had an active contact this step
+
+  std::size_t size() const { return pairs.size(); }
+  void resize_results() {
+    force_i.assign(pairs.size(), Vec3::Zero());
+    torque_i.assign(pairs.size(), Vec3::Zero());
+    torque_j.assign(pairs.size(), Vec3::Zero());
+    touching.assign(pairs.size(), 0);
+  }
+};
+
+// Per body, the pairs it belongs to in increasing pair order (CSR), with its side in each:
+// the fixed order of this list makes the force sum independent of the thread count.
+struct BodyPairIndex {
+  std::vector<std::uint32_t> begin;        // size n_bodies + 1
+  std::vector<std::uint32_t> entries;      // pair index << 1 | (1 when the body is j)
+  void build(const std::vector<BodyPair>& pairs, std::size_t n_bodies, bool partner_is_body);
+};
+
+// Copies the history of every active slot of `old_list` into the slot with the same pair
+// and key in `fresh` (both sorted). Keys absent from `fresh` end their contact.
+void carry_history(const PairList& old_list, PairList& fresh);
+
+}  // namespace polydem

@@ -1,0 +1,104 @@
+#pragma once
+// Forces of one interacting pair: evaluates its candidate feature pairs, shares the patch
+// between sub-contacts, hands history over, applies the contact law. Templated on the
+// partner (another body or a driver) so the hot loop has no virtual call.
+#include <vector>
+
+#include "contact/law.hpp"
+#include "sim/contact_lists.hpp"
+
+namespace polydem {
+
+// What a pair kernel needs to know about body i (the particle side of every pair).
+struct BodyView {
+  const PosedBody* posed;   // per body, posed for this step
+  const Vec3* velocity;     // m/s
+  const Vec3* angular_velocity;  // rad/s
+  const double* mass;       // kg
+};
+
+// One sub-contact found this step, before forces.
+struct FoundContact {
+  std::uint32_t slot;
+  ContactPoint geometry;
+};
+
+// Patch weights (SPEC "faces in contact"): the sub-contacts of one pair share the pair's
+// stiffness and damping in proportion to their depth inside the interaction band,
+// w_k = s_k / sum(s), s_k = band - gap_k. A face landing flat (equal depths) then acts as one
+// contact of stiffness kn whatever its vertex count; a lone contact has w = 1; a sub-contact
+// that appears at the band edge has w = 0, so forces stay continuous.
+inline void patch_weights(const std::vector<FoundContact>& found, double band,
+                          std::vector<double>& weight) {
+  weight.resize(found.size());
+  double total = 0.0;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    weight[k] = band - found[k].geometry.gap;
+    total += weight[k];
+  }
+  for (double& w : weight) w = total > 0.0 ? w / total : 1.0 / double(found.size());
+}
+
+// A slot that starts touching inherits the history of the nearest slot of the same pair
+// that stopped touching this step (a vertex sliding from a face onto an edge keeps its
+// spring); each ended slot gives its history once.
+void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end,
+                       const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on);
+
+struct PairTotals {
+  Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
+  double elastic = 0.0;      // J stored in the pair's springs
+  double dissipated = 0.0;   // J dissipated this step
+  int contacts = 0;
+};
+
+// Per-thread scratch so the pair loop does not allocate.
+struct PairScratch {
+  std::vector<FoundContact> found;
+  std::vector<double> weight;
+  std::vector<std::uint8_t> now_on;
+};
+
+// Partner must provide:
+//   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
+//   Vec3 center(j), Vec3 velocity_at(j, point), Vec3 angular_velocity(j), double m_eff(i, j)
+template <class Partner>
+PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
+                       const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
+  const BodyPair p = list.pairs[k];
+  const PosedBody& a = bodies.posed[p.i];
+  const std::uint32_t s0 = list.slot_begin[k], s1 = list.slot_begin[k + 1];
+  scratch.found.clear();
+  for (std::uint32_t s = s0; s < s1; ++s) {
+    ContactPoint cp;
+    if (partner.contact(a, p.j, list.slots[s].features, band, cp)) scratch.found.push_back({s, cp});
+  }
+  hand_over_history(list, s0, s1, scratch.found, scratch.now_on);
+  PairTotals totals;
+  if (scratch.found.empty()) return totals;
+  patch_weights(scratch.found, band, scratch.weight);
+  const Vec3 xi = a.position, xj = partner.center(p.j);
+  const double m_eff = partner.m_eff(p.i, p.j);
+  for (std::size_t c = 0; c < scratch.found.size(); ++c) {
+    const ContactPoint& g = scratch.found[c].geometry;
+    ContactSlot& slot = list.slots[scratch.found[c].slot];
+    const Vec3 vi = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(g.point - xi);
+    ContactKinematics kin{g.normal, g.gap, vi - partner.velocity_at(p.j, g.point),
+                          bodies.angular_velocity[p.i] - partner.angular_velocity(p.j), m_eff,
+                          (g.point - xi).norm(), scratch.weight[c]};
+    const ContactForce f = contact_force(law, kin, slot.history, dt);
+    slot.point = g.point;
+    slot.force = f.force;
+    slot.fn = f.fn;
+    slot.gap = g.gap;
+    totals.force_i += f.force;
+    totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
+    totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
+    totals.elastic += f.elastic;
+    totals.dissipated += f.dissipated;
+  }
+  totals.contacts = int(scratch.found.size());
+  return totals;
+}
+
+}  // namespace polydem

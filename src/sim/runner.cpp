@@ -1,0 +1,216 @@
+#include "sim/runner.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+#include "output/csv.hpp"
+#include "output/vtk.hpp"
+#include "polydem/error.hpp"
+#include "sim/checkpoint.hpp"
+
+namespace polydem {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+void on_interrupt(int) { g_interrupted = true; }
+
+using Clock = std::chrono::steady_clock;
+
+std::int64_t steps_for(std::optional<double> every, double dt) {
+  return every ? std::max<std::int64_t>(1, std::llround(*every / dt)) : 0;
+}
+
+std::string numbered(const char* stem, std::int64_t n, const char* ext) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%s_%06lld.%s", stem, static_cast<long long>(n), ext);
+  return buf;
+}
+
+// One line per touching pair (force chains): body-body from centre to centre, body-driver
+// from the centre to the contact point; force summed over the pair's sub-contacts.
+std::vector<ContactOut> contact_lines(const Simulation& sim) {
+  std::vector<ContactOut> out;
+  const Bodies& b = sim.bodies;
+  auto add = [&](const PairList& list, bool driver) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (!list.touching[k]) continue;
+      ContactOut c{};
+      double weight = 0.0;
+      for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
+        const ContactSlot& slot = list.slots[s];
+        if (!slot.active) continue;
+        c.fn += slot.fn;
+        c.force += slot.force;
+        c.overlap = std::max(c.overlap, -slot.gap);
+        c.point += slot.point * std::max(slot.fn, 1e-300);
+        weight += std::max(slot.fn, 1e-300);
+        c.type = int(slot.features.type);
+      }
+      c.point /= weight;
+      const BodyPair p = list.pairs[k];
+      c.i = p.i;
+      c.j = driver ? -1 - std::int64_t(p.j) : std::int64_t(p.j);
+      c.from = b.position[p.i];
+      c.to = driver ? c.point : b.position[p.j];
+      c.ft = (c.force - c.force.dot((c.from - c.point).normalized()) * (c.from - c.point).normalized()).norm();
+      out.push_back(c);
+    }
+  };
+  add(sim.engine().body_pairs(), false);
+  add(sim.engine().driver_pairs(), true);
+  return out;
+}
+
+double scene_extent(const Bodies& b) {
+  if (b.size() == 0) return 1.0;
+  Vec3 lo = b.position[0], hi = b.position[0];
+  for (const Vec3& x : b.position) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
+  return std::max(0.5 * (hi - lo).norm(), 1e-3);
+}
+
+class OutputWriter {
+ public:
+  OutputWriter(const Simulation& sim, const RunOptions& o, OutputProgress progress)
+      : sim_(sim), dir_(o.out_dir), progress_(std::move(progress)), pvd_(dir_ + "/scene.pvd"),
+        extent_(scene_extent(sim.bodies)) {
+    for (const OutputFrame& f : progress_.frames) pvd_.add(f.time, f.files);
+    if (sim.scene().output.csv_every)
+      energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
+          std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
+                                   "driver_work", "contacts"}, !o.resume.empty());
+  }
+
+  void frame() {
+    OutputFrame f{sim_.time(), {numbered("bodies", progress_.frame, "vtu")}};
+    write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes());
+    if (!sim_.drivers.empty()) {
+      f.files.push_back(numbered("drivers", progress_.frame, "vtp"));
+      write_drivers_vtp(dir_ + "/" + f.files.back(), sim_.drivers.meshes(extent_));
+    }
+    if (sim_.scene().output.contacts) {
+      f.files.push_back(numbered("contacts", progress_.frame, "vtp"));
+      write_contacts_vtp(dir_ + "/" + f.files.back(), contact_lines(sim_));
+    }
+    pvd_.add(f.time, f.files);
+    progress_.frames.push_back(f);
+    ++progress_.frame;
+  }
+
+  void energy_row() {
+    if (!energy_) return;
+    const EnergyRow e = sim_.energy();
+    energy_->row({sim_.time(), e.kinetic, e.rotational, e.elastic, e.dissipated, e.gravity_work, e.driver_work,
+                  double(e.contacts)});
+  }
+
+  std::string checkpoint(Simulation& sim) {
+    const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
+    write_checkpoint(path, sim, progress_);
+    sim.engine().force_rebuild();  // the resumed run rebuilds here too: same lists, same bits
+    return path;
+  }
+
+ private:
+  const Simulation& sim_;
+  std::string dir_;
+  OutputProgress progress_;
+  PvdSeries pvd_;
+  std::unique_ptr<CsvSeries> energy_;
+  double extent_;
+};
+
+std::string format_duration(double s) {
+  char buf[32];
+  if (s < 60) std::snprintf(buf, sizeof(buf), "%.0fs", s);
+  else if (s < 3600) std::snprintf(buf, sizeof(buf), "%dm%02ds", int(s) / 60, int(s) % 60);
+  else std::snprintf(buf, sizeof(buf), "%dh%02dm", int(s) / 3600, (int(s) % 3600) / 60);
+  return buf;
+}
+
+[[noreturn]] void fail_non_finite(const Simulation& sim, long body, const Bodies& last_good,
+                                  std::int64_t good_step, const std::string& dir) {
+  const std::string good = dir + "/bodies_last_good.vtu";
+  write_bodies_vtu(good, last_good, sim.shapes());
+  const TimeStepEstimate& e = sim.time_step();
+  char msg[512];
+  std::snprintf(msg, sizeof(msg),
+                "body %ld (shape '%s') became non-finite by step %lld (t = %.6g s). Likely cause: the time step "
+                "dt = %.3g s is %.2g x the critical step %.3g s of the stiffest contact (reduce dt or kn, or use "
+                "dt: auto). Last good state (step %lld) written to %s",
+                body, sim.shapes()[sim.bodies.shape[body]].name.c_str(), static_cast<long long>(sim.step_index()),
+                sim.time(), sim.dt(), sim.dt() / e.critical, e.critical, static_cast<long long>(good_step),
+                good.c_str());
+  throw RunError(msg);
+}
+
+}  // namespace
+
+RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
+  std::filesystem::create_directories(o.out_dir);
+  OutputProgress progress;
+  if (!o.resume.empty()) read_checkpoint(o.resume, sim, progress);
+  const OutputSettings& out = sim.scene().output;
+  const double dt = sim.dt();
+  const double end_time = o.until ? *o.until : sim.scene().simulation.duration;
+  const std::int64_t last_step = std::llround(end_time / dt);
+  const std::int64_t vtk_steps = steps_for(out.vtk_every, dt), csv_steps = steps_for(out.csv_every, dt),
+                     ckpt_steps = steps_for(out.checkpoint_every, dt);
+  constexpr std::int64_t kCheckSteps = 100;  // finiteness check and last-good copy period
+  OutputWriter writer(sim, o, progress);
+  if (o.resume.empty()) {
+    if (vtk_steps) writer.frame();
+    if (csv_steps) writer.energy_row();
+  }
+  g_interrupted = false;
+  auto previous = std::signal(SIGINT, on_interrupt);
+  Bodies last_good = sim.bodies;
+  std::int64_t good_step = sim.step_index();
+  const auto start = Clock::now();
+  auto last_print = start;
+  const std::int64_t first_step = sim.step_index();
+  RunSummary summary;
+  while (sim.step_index() < last_step) {
+    sim.step();
+    const std::int64_t s = sim.step_index();
+    if (s % kCheckSteps == 0 || s == last_step) {
+      const long bad = first_non_finite_body(sim.bodies);
+      if (bad >= 0) fail_non_finite(sim, bad, last_good, good_step, o.out_dir);
+      last_good = sim.bodies;
+      good_step = s;
+    }
+    if (vtk_steps && s % vtk_steps == 0) writer.frame();
+    if (csv_steps && s % csv_steps == 0) writer.energy_row();
+    if (ckpt_steps && s % ckpt_steps == 0 && s != last_step) writer.checkpoint(sim);
+    if (g_interrupted) {
+      const std::string path = writer.checkpoint(sim);
+      std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run SCENE --resume %s\n",
+                   sim.time(), path.c_str());
+      break;
+    }
+    const auto now = Clock::now();
+    if (o.progress && std::chrono::duration<double>(now - last_print).count() > 2.0) {
+      last_print = now;
+      const double wall = std::chrono::duration<double>(now - start).count();
+      const double rate = double(s - first_step) / wall;
+      std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %zu contacts  left %s%s",
+                   sim.time(), end_time, static_cast<long long>(s), rate, sim.engine().stats().contacts,
+                   format_duration(double(last_step - s) / rate).c_str(), isatty(2) ? "      \r" : "\n");
+    }
+  }
+  std::signal(SIGINT, previous);
+  if (!g_interrupted) writer.checkpoint(sim);
+  summary.steps = sim.step_index() - first_step;
+  summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.rebuilds = sim.engine().stats().rebuilds;
+  if (o.progress && isatty(2)) std::fprintf(stderr, "\n");
+  return summary;
+}
+
+}  // namespace polydem

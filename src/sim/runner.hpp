@@ -1,0 +1,27 @@
+#pragma once
+// Runs a simulation to its end: the output schedule (VTK, CSV, checkpoints), the progress
+// line, and the stop on a non-finite state.
+#include <optional>
+#include <string>
+
+#include "sim/simulation.hpp"
+
+namespace polydem {
+
+struct RunOptions {
+  std::string out_dir;               // the output folder (created)
+  std::optional<double> until;       // s, stop at this time instead of simulation.duration
+  std::string resume;                // checkpoint file to continue from
+  bool progress = true;              // print a progress line to stderr
+};
+
+struct RunSummary {
+  std::int64_t steps = 0;
+  double wall_seconds = 0.0;
+  std::size_t rebuilds = 0;
+};
+
+// Throws RunError when the state turns non-finite (after writing the last good state).
+RunSummary run_simulation(Simulation& sim, const RunOptions& options);
+
+}  // namespace polydem

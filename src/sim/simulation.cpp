@@ -1,0 +1,98 @@
+#include "sim/simulation.hpp"
+
+#include <cmath>
+
+#include "integrate/integrate.hpp"
+#include "polydem/error.hpp"
+#include "sim/build_bodies.hpp"
+
+namespace polydem {
+
+namespace {
+
+ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const std::vector<Shape>& shapes) {
+  const ContactOperator& op = scene.forces.contact;
+  ContactSettings s;
+  s.particle = prepare_law(op.config);
+  s.driver = prepare_law(op.has_config_driver ? op.config_driver : op.config);
+  if (scene.simulation.skin) {
+    s.skin = *scene.simulation.skin;
+  } else {  // 10% of the smallest bounding radius: few candidates, rebuilds every ~tens of steps
+    double r_min = std::numeric_limits<double>::infinity();
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      r_min = std::min(r_min, shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
+    s.skin = bodies.size() ? 0.1 * r_min : 0.0;
+  }
+  return s;
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs)
+    : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library) {
+  if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
+  const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
+  engine_ = std::make_unique<ContactEngine>(library_.shapes, bodies, cs);
+  const bool contacts = scene.forces.contact.present;
+  dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
+                                    scene.simulation.dt);
+  if (!contacts && !scene.simulation.dt)
+    throw InputError(input_message(scene.path, 0, "dt", "'auto' needs a contact law to estimate the critical step; give a number"));
+  dt_ = dt_estimate_.chosen;
+  if (!std::isfinite(dt_) || dt_ <= 0.0)
+    throw InputError(input_message(scene.path, 0, "dt", "cannot choose a time step automatically for this scene; give simulation.dt"));
+  for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];
+  external_forces();
+  if (contacts) engine_->compute(bodies, drivers, dt_);
+}
+
+void Simulation::external_forces() {
+  const std::size_t n = bodies.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < n; ++b) {
+    bodies.force[b] = bodies.mass[b] * gravity_;
+    bodies.torque[b].setZero();
+  }
+}
+
+void Simulation::step() {
+  kick(bodies, 0.5 * dt_);
+  drift(bodies, dt_);
+  drivers.advance(time(), dt_);
+  external_forces();
+  if (scene_.forces.contact.present) {
+    engine_->compute(bodies, drivers, dt_);
+    ledger.dissipated += engine_->stats().dissipated;
+    for (std::size_t j = 0; j < drivers.size(); ++j)  // force on particles = -force on driver
+      ledger.driver_work -= drivers[j].force.dot(drivers[j].velocity) * dt_;
+  }
+  kick(bodies, 0.5 * dt_);
+  ++step_;
+}
+
+EnergyRow Simulation::energy() const {
+  EnergyRow e{0, 0, 0, 0, 0, 0, 0};
+  Vec3 mass_moment = Vec3::Zero();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    e.kinetic += 0.5 * bodies.mass[b] * bodies.velocity[b].squaredNorm();
+    const Vec3& L = bodies.angular_momentum[b];
+    e.rotational += 0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum();
+    mass_moment += bodies.mass[b] * bodies.position[b];
+  }
+  e.elastic = engine_->stats().elastic;
+  e.dissipated = ledger.dissipated;
+  e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
+  e.driver_work = ledger.driver_work;
+  e.contacts = engine_->stats().contacts;
+  return e;
+}
+
+long first_non_finite_body(const Bodies& bodies) {
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (!bodies.position[b].allFinite() || !bodies.velocity[b].allFinite() ||
+        !bodies.angular_momentum[b].allFinite() || !bodies.orientation[b].coeffs().allFinite())
+      return long(b);
+  return -1;
+}
+
+}  // namespace polydem

@@ -1,0 +1,67 @@
+#pragma once
+// A running simulation: bodies, drivers, the contact engine and the step that moves them.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "driver/drivers.hpp"
+#include "polydem/bodies.hpp"
+#include "polydem/scene.hpp"
+#include "polydem/shape_library.hpp"
+#include "sim/contact_engine.hpp"
+#include "sim/time_step.hpp"
+
+namespace polydem {
+
+// Energy accumulated over the run (J); the state energies are computed on demand.
+struct EnergyLedger {
+  double dissipated = 0.0;    // by dashpots, friction slip and rolling slip
+  double driver_work = 0.0;   // done by moving drivers on the particles
+  Vec3 initial_mass_moment = Vec3::Zero();  // kg m, sum m x at t = 0: gravity work = m g . dx
+};
+
+struct EnergyRow {
+  double kinetic, rotational, elastic, dissipated, gravity_work, driver_work;
+  std::size_t contacts;
+};
+
+class Simulation {
+ public:
+  Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs);
+
+  void step();  // one velocity-Verlet step of dt
+
+  EnergyRow energy() const;
+  const TimeStepEstimate& time_step() const { return dt_estimate_; }
+  double dt() const { return dt_; }
+  double time() const { return double(step_) * dt_; }
+  std::int64_t step_index() const { return step_; }
+
+  const Scene& scene() const { return scene_; }
+  const std::vector<Shape>& shapes() const { return library_.shapes; }
+  Bodies bodies;
+  Drivers drivers;
+  ContactEngine& engine() { return *engine_; }
+  const ContactEngine& engine() const { return *engine_; }
+  EnergyLedger ledger;
+
+  // Checkpoint support: the step counter is part of the state.
+  void set_step_index(std::int64_t s) { step_ = s; }
+
+ private:
+  void external_forces();
+
+  Scene scene_;
+  ShapeLibrary library_;
+  std::unique_ptr<ContactEngine> engine_;
+  TimeStepEstimate dt_estimate_;
+  double dt_ = 0.0;
+  std::int64_t step_ = 0;
+  Vec3 gravity_ = Vec3::Zero();  // m/s^2
+};
+
+// Index of the first body whose state is not finite, or -1.
+long first_non_finite_body(const Bodies& bodies);
+
+}  // namespace polydem
