@@ -37,6 +37,7 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
 }
 
 int line_of(const YAML::Node& node, int fallback) {
+  if (!node.IsDefined()) return fallback;  // Mark() throws on a missing node
   const int line = node.Mark().line;
   return line >= 0 ? line + 1 : fallback;
 }

@@ -1,0 +1,157 @@
+#pragma once
+// The contact force law (SPEC "Contact force law"): a pure kernel
+// (const LawParams&, const ContactKinematics&, ContactHistory&) -> ContactForce, composed of
+// slots in a fixed order as in LAMMPS GranularModel::calculate_forces: normal, damping,
+// cohesion, tangential, rolling. Inline: it runs once per sub-contact per step.
+//
+// Energy budget, per sub-contact and step: the work of the contact force on the two bodies
+// equals -(change of `elastic`) - `dissipated`, so kinetic + elastic + sum(dissipated) stays
+// constant up to the integrator's O(dt^2) error:
+//  - normal spring and cohesion are conservative: their potentials are in `elastic`
+//    (the cohesion potential is negative: energy is needed to pull the pair apart);
+//  - the dashpot dissipates -f_d vn dt, f_d = (clamped normal force) - (spring force);
+//  - the tangential and rolling springs store |f|^2/(2k); what the Coulomb cap cuts off
+//    (|trial|^2 - |capped|^2)/(2k) is dissipated (slip), as is what they hold when released.
+#include <algorithm>
+#include <cmath>
+
+#include "polydem/contact_params.hpp"
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+// Prepared once per parameter set (config or config_driver) by prepare_law.
+struct LawParams {
+  double kn, kt, kr, mur, mu;  // N/m, N/m, N m/rad, -, -
+  double alpha_n;              // -, damping ratio: from damp_rate, or solved so the clamped law returns en
+  double fc, dncut;            // N, m (fc = 0: no cohesion)
+  bool cohesion, rolling;      // chosen once: skip the branches the scene does not need
+};
+
+// Validates p (InputError naming the key) and solves alpha_n from en when en is given.
+LawParams prepare_law(const ContactParams& p);
+
+// s, the velocity Verlet stability limit of the contact oscillator w0 = sqrt(kn/m_eff):
+// dt < 2/w0 (sqrt(1 + a^2) - a) with a dashpot of ratio a evaluated from the half-step
+// velocity (Belytschko, Liu & Moran, Nonlinear Finite Elements, 2000: central difference
+// with damping; checked in tests/contact/test_law_energy.cpp). For a = 0 this is
+// 2 sqrt(m_eff/kn) = T/pi, T = 2 pi sqrt(m_eff/kn) the undamped period. Use a fraction of it.
+double critical_time_step(double kn, double m_eff, double alpha_n = 0.0);
+
+struct ContactHistory {
+  Vec3 ft = Vec3::Zero();  // N, tangential spring force
+  Vec3 mr = Vec3::Zero();  // N m, rolling spring moment
+};
+
+struct ContactKinematics {
+  Vec3 normal;    // unit, from j to i
+  double dn;      // m, gap (negative: overlap)
+  Vec3 v_rel;     // m/s, velocity of i's contact point minus j's
+  Vec3 w_rel;     // rad/s, w_i - w_j
+  double m_eff;   // kg, m_i m_j/(m_i + m_j) (a driver: m_i)
+  double lever;   // m, from i's centre to the contact point (rolling cap)
+  double weight;  // -, patch share in (0, 1]: scales kn, kt, kr, nu and fc (1 for a lone contact)
+};
+
+struct ContactForce {
+  Vec3 force;         // N, on i (j gets the opposite)
+  Vec3 moment;        // N m, rolling resistance moment on i (j gets the opposite)
+  double fn;          // N, normal force (positive repulsive)
+  double dissipated;  // J, dissipated this step by the dashpot, sliding and rolling slip
+  double elastic;     // J, stored in the normal, cohesion, tangential and rolling springs
+};
+
+namespace law_slot {
+
+// Normal + damping slots for overlap x = -dn > 0: fn = max(kn_w x - nu_w vn, 0) (no pull).
+struct NormalPart {
+  double fn;          // N
+  double elastic;     // J, 1/2 kn_w x^2
+  double dissipated;  // J, -f_d vn dt with f_d = fn - kn_w x the dashpot's actual force
+};
+inline NormalPart normal_damped(double kn_w, double nu_w, double overlap, double vn, double dt) {
+  const double spring = kn_w * overlap;
+  const double fn = std::max(spring - nu_w * vn, 0.0);
+  return {fn, 0.5 * spring * overlap, (spring - fn) * vn * dt};
+}
+
+// Cohesion slot, N (negative: attractive): -fc_w in the overlap, fc_w (dn/dncut - 1) in the band.
+inline double cohesion_force(double fc_w, double dncut, double dn) {
+  return dn < 0.0 ? -fc_w : fc_w * (dn / dncut - 1.0);
+}
+// J, potential of cohesion_force (zero at dncut, -fc_w dncut/2 at touching, slope fc_w inside).
+inline double cohesion_potential(double fc_w, double dncut, double dn) {
+  if (dn < 0.0) return fc_w * (dn - 0.5 * dncut);
+  const double rest = dncut - dn;
+  return -0.5 * fc_w * rest * rest / dncut;
+}
+
+// Adds an increment to a spring (force or moment) and caps its length at `cap`, back-solving
+// the spring to the Coulomb limit (Luding 2008, Granular Matter 10:235, eqs. 17-19).
+// Returns J, the spring energy the cap removed (slip).
+inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+  spring += increment;
+  const double trial = spring.norm();
+  if (trial <= cap) return 0.0;
+  spring *= cap / trial;
+  return (trial * trial - cap * cap) / (2.0 * stiffness);
+}
+
+// Tangential slot: rotate ft into the plane normal to n keeping its length, add -kt_w vt dt,
+// cap |ft| <= mu kn_w (-dn) (LAMMPS granular "linear_history" tangential model). Returns J, slip.
+inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& v_rel, double kt_w,
+                                double ft_max, double dt) {
+  const double length = ft.norm();
+  ft -= ft.dot(n) * n;
+  const double in_plane = ft.norm();
+  if (in_plane > 0.0) ft *= length / in_plane;
+  const Vec3 vt = v_rel - v_rel.dot(n) * n;  // m/s, tangential relative velocity
+  return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max);
+}
+
+// J, energy held by a spring of stiffness k (0 for k = 0: that spring is off).
+inline double spring_energy(const Vec3& f, double k) { return k > 0.0 ? 0.5 * f.squaredNorm() / k : 0.0; }
+
+}  // namespace law_slot
+
+inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k, ContactHistory& h,
+                                  double dt) {
+  const double w = k.weight;
+  const double kt_w = w * law.kt, kr_w = w * law.kr;
+  ContactForce out{Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, 0.0};
+  const double reach = law.cohesion ? law.dncut : 0.0;  // m, beyond it the pair does not interact
+  if (k.dn >= reach) {
+    // Out of reach: the springs let go and their energy is lost (the caller resets history anyway).
+    out.dissipated = law_slot::spring_energy(h.ft, kt_w) + law_slot::spring_energy(h.mr, kr_w);
+    h = ContactHistory{};
+    return out;
+  }
+  const double kn_w = w * law.kn;
+  const double overlap = std::max(-k.dn, 0.0);  // m
+  const double vn = k.v_rel.dot(k.normal);       // m/s, > 0 when separating
+  if (overlap > 0.0) {
+    const double nu_w = w * 2.0 * law.alpha_n * std::sqrt(law.kn * k.m_eff);  // N s/m
+    const law_slot::NormalPart normal = law_slot::normal_damped(kn_w, nu_w, overlap, vn, dt);
+    out.fn = normal.fn;
+    out.elastic = normal.elastic;
+    out.dissipated = normal.dissipated;
+  }
+  if (law.cohesion) {
+    out.fn += law_slot::cohesion_force(w * law.fc, law.dncut, k.dn);
+    out.elastic += law_slot::cohesion_potential(w * law.fc, law.dncut, k.dn);
+  }
+  if (law.mu > 0.0 && kt_w > 0.0) {
+    out.dissipated += law_slot::tangential_spring(h.ft, k.normal, k.v_rel, kt_w, law.mu * kn_w * overlap, dt);
+    out.elastic += law_slot::spring_energy(h.ft, kt_w);
+  }
+  if (law.rolling) {
+    const double mr_max = law.mur * k.lever * std::max(out.fn, 0.0);  // N m
+    out.dissipated += law_slot::capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
+    out.elastic += law_slot::spring_energy(h.mr, kr_w);
+    out.moment = h.mr;
+  }
+  out.force = out.fn * k.normal + h.ft;
+  return out;
+}
+
+}  // namespace polydem

@@ -1,0 +1,164 @@
+// Feature-pair candidates for the Verlet lists, the brute-force reference, and vertex posing.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "geometry/features.hpp"
+#include "geometry/segment.hpp"
+
+namespace polydem {
+namespace {
+
+// Features of one body that come within `cutoff` of the other body's core bounding sphere;
+// only those can come within `cutoff` of the other body's features (an exact, cheap pre-filter).
+struct NearFeatures {
+  std::vector<std::uint16_t> vertices, edges, faces;
+  std::vector<Vec3> face_normals;  // world, outward, one per entry of `faces`
+};
+
+// m, radius of the sphere about the centre of mass holding the core (unrounded) polyhedron.
+double core_bounding_radius(const PosedBody& body) {
+  double r2 = 0.0;
+  for (std::size_t i = 0; i < body.shape->vertices.size(); ++i)
+    r2 = std::max(r2, (body.vertices[i] - body.position).squaredNorm());
+  return std::sqrt(r2);
+}
+
+void collect_near(const PosedBody& body, const Vec3& centre, double reach, NearFeatures& near) {
+  const Shape& s = *body.shape;
+  const double reach2 = reach * reach;
+  near.vertices.clear();
+  near.edges.clear();
+  near.faces.clear();
+  near.face_normals.clear();
+  for (std::size_t i = 0; i < s.vertices.size(); ++i)
+    if ((body.vertices[i] - centre).squaredNorm() < reach2) near.vertices.push_back(static_cast<std::uint16_t>(i));
+  for (std::size_t i = 0; i < s.edges.size(); ++i) {
+    const Vec3& p0 = body.vertices[s.edges[i][0]];
+    if (point_segment_distance_sq(centre, p0, body.vertices[s.edges[i][1]] - p0) < reach2)
+      near.edges.push_back(static_cast<std::uint16_t>(i));
+  }
+  for (std::size_t i = 0; i < s.faces.size(); ++i) {
+    const Vec3 n = body.rotation * s.face_normals[i];
+    if (point_polygon_distance_sq(centre, body.vertices, s.faces[i], n) < reach2) {
+      near.faces.push_back(static_cast<std::uint16_t>(i));
+      near.face_normals.push_back(n);
+    }
+  }
+}
+
+// Squared distance from point p to a face (interior and boundary), skipping the edges when the
+// face plane alone is already farther than the cutoff.
+double face_distance_sq(const Vec3& p, const PosedBody& body, int face, const Vec3& n, double cutoff2) {
+  const std::vector<int>& f = body.shape->faces[face];
+  const double d = (p - body.vertices[f[0]]).dot(n);
+  if (d * d >= cutoff2) return d * d;
+  return point_polygon_distance_sq(p, body.vertices, f, n);
+}
+
+void append_vertex_pairs(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
+                         double cutoff2, std::vector<FeaturePair>& out) {
+  for (std::uint16_t va : na.vertices)
+    for (std::uint16_t vb : nb.vertices)
+      if ((A.vertices[va] - B.vertices[vb]).squaredNorm() < cutoff2)
+        out.push_back({PairType::vertex_vertex, va, vb});
+}
+
+// Vertices of V against edges of E; `type` says which body is A.
+void append_vertex_edge(const PosedBody& V, const PosedBody& E, const NearFeatures& nv, const NearFeatures& ne,
+                        double cutoff2, PairType type, std::vector<FeaturePair>& out) {
+  const bool v_is_a = type == PairType::vertex_edge;
+  const std::vector<std::uint16_t>& outer = v_is_a ? nv.vertices : ne.edges;
+  const std::vector<std::uint16_t>& inner = v_is_a ? ne.edges : nv.vertices;
+  for (std::uint16_t i : outer)
+    for (std::uint16_t j : inner) {
+      const std::uint16_t v = v_is_a ? i : j;
+      const std::uint16_t e = v_is_a ? j : i;
+      const Vec3& p0 = E.vertices[E.shape->edges[e][0]];
+      if (point_segment_distance_sq(V.vertices[v], p0, E.vertices[E.shape->edges[e][1]] - p0) < cutoff2)
+        out.push_back({type, i, j});
+    }
+}
+
+// Vertices of V against faces of F; `type` says which body is A.
+void append_vertex_face(const PosedBody& V, const PosedBody& F, const NearFeatures& nv, const NearFeatures& nf,
+                        double cutoff2, PairType type, std::vector<FeaturePair>& out) {
+  const bool v_is_a = type == PairType::vertex_face;
+  const std::size_t outer_count = v_is_a ? nv.vertices.size() : nf.faces.size();
+  const std::size_t inner_count = v_is_a ? nf.faces.size() : nv.vertices.size();
+  for (std::size_t i = 0; i < outer_count; ++i)
+    for (std::size_t j = 0; j < inner_count; ++j) {
+      const std::size_t iv = v_is_a ? i : j;
+      const std::size_t jf = v_is_a ? j : i;
+      const std::uint16_t v = nv.vertices[iv];
+      const std::uint16_t f = nf.faces[jf];
+      if (face_distance_sq(V.vertices[v], F, f, nf.face_normals[jf], cutoff2) < cutoff2)
+        out.push_back(v_is_a ? FeaturePair{type, v, f} : FeaturePair{type, f, v});
+    }
+}
+
+void append_edge_edge(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
+                      double cutoff2, std::vector<FeaturePair>& out) {
+  for (std::uint16_t ea : na.edges) {
+    const Vec3& pa = A.vertices[A.shape->edges[ea][0]];
+    const Vec3 da = A.vertices[A.shape->edges[ea][1]] - pa;
+    for (std::uint16_t eb : nb.edges) {
+      const Vec3& pb = B.vertices[B.shape->edges[eb][0]];
+      if (segment_segment_distance_sq(pa, da, pb, B.vertices[B.shape->edges[eb][1]] - pb) < cutoff2)
+        out.push_back({PairType::edge_edge, ea, eb});
+    }
+  }
+}
+
+template <typename Visit>
+void for_each_feature_pair(const Shape& a, const Shape& b, Visit visit) {
+  const auto nva = a.vertices.size(), nvb = b.vertices.size();
+  for (std::size_t i = 0; i < nva; ++i)
+    for (std::size_t j = 0; j < nvb; ++j) visit(PairType::vertex_vertex, i, j);
+  for (std::size_t i = 0; i < nva; ++i)
+    for (std::size_t j = 0; j < b.edges.size(); ++j) visit(PairType::vertex_edge, i, j);
+  for (std::size_t i = 0; i < a.edges.size(); ++i)
+    for (std::size_t j = 0; j < nvb; ++j) visit(PairType::edge_vertex, i, j);
+  for (std::size_t i = 0; i < nva; ++i)
+    for (std::size_t j = 0; j < b.faces.size(); ++j) visit(PairType::vertex_face, i, j);
+  for (std::size_t i = 0; i < a.faces.size(); ++i)
+    for (std::size_t j = 0; j < nvb; ++j) visit(PairType::face_vertex, i, j);
+  for (std::size_t i = 0; i < a.edges.size(); ++i)
+    for (std::size_t j = 0; j < b.edges.size(); ++j) visit(PairType::edge_edge, i, j);
+}
+
+}  // namespace
+
+void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Quat& q, Vec3* out) {
+  const Mat3 rs = q.toRotationMatrix() * scale;
+  for (std::size_t i = 0; i < shape.vertices.size(); ++i) out[i] = position + rs * shape.vertices[i];
+}
+
+void candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& out) {
+  const double cutoff = A.radius + B.radius + range;
+  const double cutoff2 = cutoff * cutoff;
+  // Reused per thread: rebuilds visit many body pairs, one allocation each would dominate.
+  thread_local NearFeatures na, nb;
+  collect_near(A, B.position, core_bounding_radius(B) + cutoff, na);
+  if (na.vertices.empty() && na.edges.empty() && na.faces.empty()) return;
+  collect_near(B, A.position, core_bounding_radius(A) + cutoff, nb);
+  append_vertex_pairs(A, B, na, nb, cutoff2, out);
+  append_vertex_edge(A, B, na, nb, cutoff2, PairType::vertex_edge, out);
+  append_vertex_edge(B, A, nb, na, cutoff2, PairType::edge_vertex, out);
+  append_vertex_face(A, B, na, nb, cutoff2, PairType::vertex_face, out);
+  append_vertex_face(B, A, nb, na, cutoff2, PairType::face_vertex, out);
+  append_edge_edge(A, B, na, nb, cutoff2, out);
+}
+
+std::vector<std::pair<FeaturePair, ContactPoint>> brute_force_contacts(const PosedBody& A, const PosedBody& B) {
+  std::vector<std::pair<FeaturePair, ContactPoint>> contacts;
+  for_each_feature_pair(*A.shape, *B.shape, [&](PairType type, std::size_t i, std::size_t j) {
+    const FeaturePair pair{type, static_cast<std::uint16_t>(i), static_cast<std::uint16_t>(j)};
+    ContactPoint c;
+    if (feature_contact(A, B, pair, 0.0, c)) contacts.emplace_back(pair, c);
+  });
+  return contacts;
+}
+
+}  // namespace polydem

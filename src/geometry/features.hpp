@@ -1,0 +1,59 @@
+#pragma once
+// Contact geometry between spheropolyhedra: closest-feature queries (vertex, edge, face) on the
+// core polyhedra, with the Minkowski radii added apart (SPEC "Contact geometry").
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "polydem/math.hpp"
+#include "polydem/shape.hpp"
+
+namespace polydem {
+
+enum class PairType : std::uint8_t { vertex_vertex, vertex_edge, edge_vertex, vertex_face, face_vertex, edge_edge };
+inline constexpr int kPairTypeCount = 6;
+
+// Feature index in body A and in body B (vertex, edge or face index, by type).
+struct FeaturePair {
+  PairType type;
+  std::uint16_t a;
+  std::uint16_t b;
+};
+
+// A body placed in the world for one step; vertices are precomputed once per step by the caller.
+struct PosedBody {
+  const Shape* shape;
+  const Vec3* vertices;  // m, world positions of the scaled vertices: position + R * (scale * v)
+  Mat3 rotation;         // principal -> world
+  Vec3 position;         // m, centre of mass
+  double radius;         // m, scaled Minkowski radius
+};
+
+struct ContactPoint {
+  Vec3 normal;  // unit, from B to A (the force on A is +fn * normal)
+  Vec3 point;   // m, world, middle of the overlap: ((cA - rA n) + (cB + rB n)) / 2
+  double gap;   // m, distance between features - rA - rB; negative = overlap
+};
+
+// World positions of the scaled vertices: out[i] = position + q * (scale * shape.vertices[i]).
+void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Quat& q, Vec3* out);
+
+// Evaluates one feature pair. Returns false when the closest points do not lie strictly inside
+// the features (the lower-dimensional pair covers the boundary), when edges are parallel
+// (edge_edge), or when gap >= max_gap. On true fills `out`.
+// Vertex-face uses the signed distance along the face body's outward normal, so the normal
+// never inverts: a vertex below the face plane (cores interpenetrating) keeps pushing out,
+// down to a depth rA + rB below the plane, past which the pair is rejected (the vertex is then
+// more likely to belong to another face's region; Rockable instead flips the normal).
+bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
+                     ContactPoint& out);
+
+// Verlet candidates: appends every feature pair whose features (as point sets, boundary
+// included, no interior rule) are closer than rA + rB + range, in a deterministic order
+// (by type, then index in A, then index in B). Used at neighbour-list rebuilds.
+void candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& out);
+
+// Reference: every feature pair of the two bodies evaluated with feature_contact(max_gap = 0).
+std::vector<std::pair<FeaturePair, ContactPoint>> brute_force_contacts(const PosedBody& A, const PosedBody& B);
+
+}  // namespace polydem

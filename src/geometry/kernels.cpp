@@ -1,0 +1,142 @@
+// Feature-pair contact kernels and their dispatch table (the hot inner loop of the contact stage).
+// Every kernel works on differences from one vertex of a feature (a local frame there), so its
+// round-off scales with the feature size rather than with the world coordinates.
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "geometry/features.hpp"
+#include "geometry/segment.hpp"
+
+namespace polydem {
+namespace {
+
+using Kernel = bool (*)(const PosedBody&, const PosedBody&, int, int, double, ContactPoint&);
+
+// Distance between core edges, relative to the longer edge, under which the cores count as
+// crossing and the edge-edge normal comes from the centres instead of the closest points.
+constexpr double kCrossingTolerance = 1e-12;
+
+// Fills `out` from the closest core points ca (on A), cb (on B) and the unit normal from B to A.
+inline void fill(const PosedBody& A, const PosedBody& B, const Vec3& ca, const Vec3& cb, const Vec3& n,
+                 double gap, ContactPoint& out) {
+  out.normal = n;
+  out.gap = gap;
+  out.point = 0.5 * ((ca - A.radius * n) + (cb + B.radius * n));
+}
+
+// Unit vector along u with the part along axis removed (zero axis: keep u); a fixed
+// perpendicular of the axis when nothing is left, so the result is always unit and deterministic.
+inline Vec3 perpendicular_direction(Vec3 u, const Vec3& axis) {
+  const double a2 = axis.squaredNorm();
+  if (a2 > 0.0) u -= (u.dot(axis) / a2) * axis;
+  const double n2 = u.squaredNorm();
+  if (n2 > 0.0) return u / std::sqrt(n2);
+  return a2 > 0.0 ? Vec3(axis.unitOrthogonal()) : Vec3::UnitZ();
+}
+
+// True when the core distance d (>= 0) gives gap >= max_gap, decided on squares (no sqrt).
+inline bool too_far_sq(double d2, double radius_sum, double max_gap) {
+  const double limit = radius_sum + max_gap;
+  return limit <= 0.0 || d2 >= limit * limit;
+}
+
+bool vertex_vertex(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
+  const Vec3& ca = A.vertices[a];
+  const Vec3& cb = B.vertices[b];
+  const Vec3 u = ca - cb;
+  const double rsum = A.radius + B.radius;
+  const double d2 = u.squaredNorm();
+  if (too_far_sq(d2, rsum, max_gap)) return false;
+  const double d = std::sqrt(d2);
+  // Coincident cores (a sphere centred on a vertex): fall back on the line of centres.
+  const Vec3 n = d > 0.0 ? Vec3(u / d) : perpendicular_direction(A.position - B.position, Vec3::Zero());
+  fill(A, B, ca, cb, n, d - rsum, out);
+  return true;
+}
+
+bool vertex_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
+  const std::array<int, 2>& edge = B.shape->edges[b];
+  const Vec3& p0 = B.vertices[edge[0]];
+  const Vec3 e = B.vertices[edge[1]] - p0;
+  const Vec3& ca = A.vertices[a];
+  const Vec3 w = ca - p0;
+  const double len2 = e.squaredNorm();
+  const double tl = w.dot(e);  // t * len2, t the parameter of the projection on the edge
+  if (!(tl > 0.0 && tl < len2)) return false;
+  const Vec3 foot = (tl / len2) * e;
+  const Vec3 u = w - foot;
+  const double rsum = A.radius + B.radius;
+  const double d2 = u.squaredNorm();
+  if (too_far_sq(d2, rsum, max_gap)) return false;
+  const double d = std::sqrt(d2);
+  const Vec3 n = d > 0.0 ? Vec3(u / d) : perpendicular_direction(A.position - B.position, e);
+  fill(A, B, ca, p0 + foot, n, d - rsum, out);
+  return true;
+}
+
+bool vertex_face(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
+  const std::vector<int>& face = B.shape->faces[b];
+  const Vec3 n = B.rotation * B.shape->face_normals[b];  // outward normal of B's face, world
+  const Vec3& ca = A.vertices[a];
+  const double d = (ca - B.vertices[face[0]]).dot(n);  // signed: negative below the face plane
+  const double rsum = A.radius + B.radius;
+  if (d <= -rsum || d - rsum >= max_gap) return false;
+  if (!projects_inside_polygon(ca, B.vertices, face, n)) return false;
+  fill(A, B, ca, ca - d * n, n, d - rsum, out);
+  return true;
+}
+
+bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
+  const std::array<int, 2>& edge_a = A.shape->edges[a];
+  const std::array<int, 2>& edge_b = B.shape->edges[b];
+  const Vec3& pa = A.vertices[edge_a[0]];
+  const Vec3& pb = B.vertices[edge_b[0]];
+  const Vec3 da = A.vertices[edge_a[1]] - pa;
+  const Vec3 db = B.vertices[edge_b[1]] - pb;
+  const Vec3 c = da.cross(db);
+  const double c2 = c.squaredNorm();
+  const double aa = da.squaredNorm();
+  const double bb = db.squaredNorm();
+  if (c2 <= kParallelSin2 * aa * bb) return false;
+  const Vec3 r = pa - pb;
+  const double inv_c = 1.0 / std::sqrt(c2);
+  const double signed_d = r.dot(c) * inv_c;  // line-line distance along the common normal
+  const double rsum = A.radius + B.radius;
+  if (std::abs(signed_d) - rsum >= max_gap) return false;
+  const double ab = da.dot(db);
+  const double ra = da.dot(r);
+  const double rb = db.dot(r);
+  const double s = (ab * rb - ra * bb) / c2;
+  const double t = (aa * rb - ab * ra) / c2;
+  if (!(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0)) return false;
+  Vec3 n = c * inv_c;
+  // Crossing cores: the closest-point direction is noise, orient the common normal from B's centre to A's.
+  const bool crossing = std::abs(signed_d) <= kCrossingTolerance * std::sqrt(std::max(aa, bb));
+  const double side = crossing ? n.dot(A.position - B.position) : signed_d;
+  if (side < 0.0) n = -n;
+  fill(A, B, pa + s * da, pb + t * db, n, std::abs(signed_d) - rsum, out);
+  return true;
+}
+
+// Evaluates kernel K with the bodies swapped (edge_vertex from vertex_edge, face_vertex from
+// vertex_face) and turns the normal back to point from B to A; gap and point are symmetric.
+template <Kernel K>
+bool swapped(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
+  if (!K(B, A, b, a, max_gap, out)) return false;
+  out.normal = -out.normal;
+  return true;
+}
+
+// Indexed by PairType; filled once at compile time, no virtual call per contact.
+constexpr std::array<Kernel, kPairTypeCount> kKernels = {
+    vertex_vertex, vertex_edge, swapped<vertex_edge>, vertex_face, swapped<vertex_face>, edge_edge};
+
+}  // namespace
+
+bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
+                     ContactPoint& out) {
+  return kKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);
+}
+
+}  // namespace polydem

@@ -1,0 +1,56 @@
+#pragma once
+// Geometry for body generators: where a sphere fits in a box or cylinder region, and a
+// uniform grid that answers "does this sphere overlap a placed one?" in O(1).
+#include <random>
+#include <variant>
+#include <vector>
+
+#include "polydem/scene.hpp"
+
+namespace polydem {
+
+class Region {
+ public:
+  explicit Region(const std::variant<BoxRegion, CylinderRegion>& region);
+
+  // True when a sphere of this radius fits somewhere inside.
+  bool fits(double radius) const;
+  // A centre uniform over the positions where a sphere of this radius lies fully inside.
+  Vec3 sample(double radius, std::mt19937_64& rng) const;
+  // Centres of a cubic lattice of this spacing whose spheres of diameter `spacing` lie fully
+  // inside: x (or the cylinder's first radial direction) fastest, then y, then z (the axis).
+  std::vector<Vec3> lattice(double spacing) const;
+
+  Vec3 lower() const { return lower_; }  // m, bounding box
+  Vec3 upper() const { return upper_; }
+
+ private:
+  bool is_box_;
+  BoxRegion box_;
+  CylinderRegion cylinder_;
+  Vec3 e1_ = Vec3::UnitX(), e2_ = Vec3::UnitY();  // cylinder: radial directions
+  Vec3 lower_, upper_;
+};
+
+// Placed spheres binned in cells at least one largest diameter wide.
+class SphereGrid {
+ public:
+  SphereGrid(const Vec3& lower, const Vec3& upper, double max_radius, std::size_t expected);
+
+  bool overlaps(const Vec3& center, double radius) const;
+  void insert(const Vec3& center, double radius);
+
+ private:
+  int cell_coord(double x, int axis) const;
+  std::size_t cell_of(int i, int j, int k) const;
+
+  Vec3 lower_;
+  double cell_size_;
+  int dims_[3];
+  std::vector<int> head_;  // first sphere in each cell, -1 when empty
+  std::vector<int> next_;  // next sphere in the same cell
+  std::vector<Vec3> centers_;
+  std::vector<double> radii_;
+};
+
+}  // namespace polydem

@@ -1,0 +1,58 @@
+#pragma once
+// Broad phase: every pair of bodies whose bounding spheres are within `skin` of touching.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "neighbor/body_pair.hpp"
+#include "neighbor/cell_table.hpp"
+#include "neighbor/rebuild_trigger.hpp"  // the trigger goes with the lists it guards
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+// Cell-list search, O(N) for a bounded ratio of largest to mean bounding radius.
+// Cells have side 2 max(R) + skin, so a pair within reach lies in the same or adjacent cells;
+// only occupied cells are stored (hash table) and the memory is reused across calls.
+class CellList {
+ public:
+  // Writes all pairs with |x_i - x_j| < R_i + R_j + skin into `out`, sorted by (i, j), the same
+  // for any thread count. Throws std::invalid_argument on mismatched sizes, negative or
+  // non-finite radii or skin, and RunError on a non-finite centre.
+  void build_pairs(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin,
+                   std::vector<BodyPair>& out);
+  // Sphere-sphere distance tests done by the last build_pairs (the cost that must stay O(N)).
+  std::size_t candidate_tests() const { return candidate_count; }
+  // Occupied cells in the last build_pairs.
+  std::size_t occupied_cells() const { return table.size(); }
+
+ private:
+  struct Sphere {
+    double x, y, z, r;  // m, a body's centre and bounding radius, stored in cell order
+  };
+  static constexpr int kForward = 13;  // half of the 26 neighbour cells: each cell pair once
+
+  void bin_bodies(const std::vector<Vec3>& centers, const std::vector<double>& radii, double cell);
+  void link_forward_cells();
+  void collect_pairs(double skin);
+  void merge_pairs(std::size_t n, std::vector<BodyPair>& out);
+
+  CellTable table;
+  std::vector<CellCoord> body_cell;       // cell of each body
+  std::vector<std::uint32_t> body_cell_id;
+  std::vector<CellCoord> cell_coord;      // coordinates of each occupied cell
+  std::vector<std::uint32_t> cell_start;  // CSR: bodies of cell c are [cell_start[c], cell_start[c+1])
+  std::vector<Sphere> spheres;            // sorted by cell
+  std::vector<std::uint32_t> sorted_id;   // body index of spheres[k]
+  std::vector<std::uint32_t> forward;     // kForward neighbour cell ids per cell, or kNoCell
+  std::vector<std::vector<BodyPair>> thread_pairs;
+  std::vector<std::uint32_t> row_start;   // CSR of the output by first body
+  std::vector<std::uint32_t> row_fill;
+  std::size_t candidate_count = 0;
+};
+
+// Reference: the O(N^2) double loop, same test and same order as CellList::build_pairs.
+void brute_force_pairs(const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                       double skin, std::vector<BodyPair>& out);
+
+}  // namespace polydem

@@ -1,0 +1,35 @@
+#pragma once
+// Decides when the Verlet lists must be rebuilt: as soon as some surface point may have moved
+// more than skin/2 since the last build, not on a fixed period.
+#include <cstddef>
+#include <vector>
+
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+// m, upper bound on how far any point within `bounding_radius` (m) of the centre moved when the
+// centre moved by `dx` and the orientation went from q_built to q_now: |dx| + 2 R sin(theta/2),
+// theta the angle of q_now q_built^-1. The chord 2 R sin(theta/2) is the exact largest rotational
+// displacement, tighter than the arc R theta and free of trigonometry.
+double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
+                          double bounding_radius);
+
+class RebuildTrigger {
+ public:
+  // Remembers the state the lists were built at; counts one rebuild.
+  void mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q);
+  // True when some body's displacement_bound exceeds skin/2 (or is not finite), or when no build
+  // was marked for this many bodies. Parallel reduction, cheap enough for every step.
+  bool needs_rebuild(const std::vector<Vec3>& x, const std::vector<Quat>& q,
+                     const std::vector<double>& bounding_radius, double skin) const;
+  // Calls to mark_built so far.
+  std::size_t rebuilds() const { return rebuild_count; }
+
+ private:
+  std::vector<Vec3> x_built;  // m
+  std::vector<Quat> q_built;
+  std::size_t rebuild_count = 0;
+};
+
+}  // namespace polydem

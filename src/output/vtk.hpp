@@ -1,0 +1,61 @@
+#pragma once
+// Result files ParaView opens directly: VTK XML with binary appended raw data, and a .pvd series.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "polydem/bodies.hpp"
+#include "polydem/math.hpp"
+#include "polydem/shape.hpp"
+
+namespace polydem {
+
+// bodies_NNNNNN.vtu: one VTK_POLYGON per face of each body's core polyhedron in world coordinates.
+// Shapes without faces (sphere, segment) are drawn as a subdivided icosahedron swept over their
+// vertices (sphere / capsule of the rounded radius). Cell data, repeated on each cell of a body:
+// id (Int64), group (Int32), radius (Float64, m, rounded radius x scale), velocity (m/s),
+// angular_velocity (rad/s).
+void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes);
+
+// A driver surface as polygons, in world coordinates.
+struct DriverMesh {
+  std::string name;
+  std::vector<Vec3> points;                // m
+  std::vector<std::vector<int>> polygons;  // indices into points
+};
+
+// drivers_NNNNNN.vtp: driver polygons with cell data `driver` (Int32 index into the list) and
+// the driver names as the String array `driver_names` in FieldData.
+void write_drivers_vtp(const std::string& path, const std::vector<DriverMesh>& drivers);
+
+// One contact line of the force network.
+struct ContactOut {
+  Vec3 from, to;   // m, body i's centre -> body j's centre (or the contact point for a driver)
+  Vec3 point;      // m, contact point
+  Vec3 force;      // N, on body i
+  double fn, ft;   // N, normal force and tangential force magnitude
+  double overlap;  // m
+  std::int64_t i, j;
+  int type;
+};
+
+// contacts_NNNNNN.vtp: one line per contact with cell data force, point (3 x Float64), fn, ft,
+// overlap (Float64), i, j (Int64), type (Int32).
+void write_contacts_vtp(const std::string& path, const std::vector<ContactOut>& contacts);
+
+// scene.pvd: the time series, rewritten (atomically) each time a frame is added so a crashed
+// run still has a valid .pvd. Files sharing a stem ("bodies" in bodies_000012.vtu) share a part.
+class PvdSeries {
+ public:
+  explicit PvdSeries(std::string path);
+  // files: relative to the .pvd's folder.
+  void add(double time, const std::vector<std::string>& files);
+
+ private:
+  int part_of(const std::string& file);
+  std::string path_;
+  std::string entries_;             // <DataSet .../> lines so far
+  std::vector<std::string> stems_;  // part index -> file stem
+};
+
+}  // namespace polydem

@@ -1,0 +1,121 @@
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "output/appended.hpp"
+#include "output/vtk.hpp"
+
+namespace polydem {
+
+namespace {
+
+constexpr std::uint8_t kVtkPolygon = 7;
+
+struct UnitMesh {
+  std::vector<Vec3> points;
+  std::vector<std::vector<int>> faces;  // counter-clockwise seen from outside
+};
+
+// Icosahedron subdivided once: 42 unit vectors, 80 triangles. It holds the six +-axis points,
+// so a sphere's bounds are exact when the body is not rotated.
+UnitMesh make_icosphere() {
+  const double t = 0.5 * (1.0 + std::sqrt(5.0));
+  UnitMesh m;
+  m.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  const std::array<std::array<int, 3>, 20> ico = {{{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11},
+                                                   {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                                   {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
+                                                   {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}}};
+  std::map<std::pair<int, int>, int> midpoint;
+  auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    auto [it, fresh] = midpoint.try_emplace(key, int(m.points.size()));
+    if (fresh) m.points.push_back(0.5 * (m.points[a] + m.points[b]));
+    return it->second;
+  };
+  for (const auto& f : ico) {
+    const int ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+    m.faces.insert(m.faces.end(), {{f[0], ab, ca}, {f[1], bc, ab}, {f[2], ca, bc}, {ab, bc, ca}});
+  }
+  for (Vec3& p : m.points) p.normalize();
+  return m;
+}
+
+// The faceless shape as the sphere swept over its vertices: each icosphere direction d maps to
+// the support point of the rounded body, argmax_v(v.d) + radius d. Triangles stay planar, so
+// the result is a closed surface (a sphere for 1 vertex, a capsule for 2).
+UnitMesh swept_sphere(const Shape& s) {
+  static const UnitMesh sphere = make_icosphere();
+  UnitMesh m = sphere;
+  for (Vec3& d : m.points) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < s.vertices.size(); ++k)
+      if (s.vertices[k].dot(d) > s.vertices[best].dot(d)) best = k;
+    d = s.vertices[best] + s.radius * d;
+  }
+  return m;
+}
+
+// Per shape, the polygons to draw in the principal frame at scale 1.
+std::vector<UnitMesh> shape_meshes(const std::vector<Shape>& shapes) {
+  std::vector<UnitMesh> out;
+  out.reserve(shapes.size());
+  for (const Shape& s : shapes) out.push_back(s.faces.empty() ? swept_sphere(s) : UnitMesh{s.vertices, s.faces});
+  return out;
+}
+
+template <class T>
+void repeat(std::vector<T>& out, const T& value, std::size_t times) {
+  out.insert(out.end(), times, value);
+}
+
+}  // namespace
+
+void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes) {
+  const std::vector<UnitMesh> meshes = shape_meshes(shapes);
+  std::vector<Vec3> points, velocity, angular_velocity;
+  CellTopology cells;
+  std::vector<std::int64_t> id;
+  std::vector<std::int32_t> group;
+  std::vector<double> radius;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const int s = bodies.shape[b];
+    if (s < 0 || std::size_t(s) >= shapes.size())
+      throw std::out_of_range("write_bodies_vtu: body " + std::to_string(b) + " has shape index " +
+                              std::to_string(s) + " of " + std::to_string(shapes.size()));
+    const UnitMesh& m = meshes[s];
+    const double scale = bodies.scale[b];
+    const Mat3 rotation = bodies.orientation[b].toRotationMatrix();
+    const std::int64_t base = std::int64_t(points.size());
+    for (const Vec3& p : m.points) points.push_back(bodies.position[b] + rotation * (scale * p));
+    for (const std::vector<int>& f : m.faces) cells.add_cell(f, base);
+    const std::size_t n = m.faces.size();
+    repeat(id, std::int64_t(b), n);
+    repeat(group, std::int32_t(bodies.group[b]), n);
+    repeat(radius, shapes[s].radius * scale, n);
+    repeat(velocity, bodies.velocity[b], n);
+    repeat(angular_velocity, bodies.angular_velocity[b], n);
+  }
+  const std::size_t n_points = points.size(), n_cells = id.size();
+  // One array per statement: offsets then ascend in file order.
+  AppendedData data;
+  std::string xml = "<Piece NumberOfPoints=\"" + std::to_string(n_points) + "\" NumberOfCells=\"" +
+                    std::to_string(n_cells) + "\">\n<Points>\n";
+  xml += data.array("Points", std::move(points));
+  xml += "</Points>\n<Cells>\n";
+  xml += topology_xml(data, std::move(cells));
+  xml += data.array("types", std::vector<std::uint8_t>(n_cells, kVtkPolygon));
+  xml += "</Cells>\n<CellData Scalars=\"id\" Vectors=\"velocity\">\n";
+  xml += data.array("id", std::move(id));
+  xml += data.array("group", std::move(group));
+  xml += data.array("radius", std::move(radius));
+  xml += data.array("velocity", std::move(velocity));
+  xml += data.array("angular_velocity", std::move(angular_velocity));
+  xml += "</CellData>\n</Piece>\n";
+  data.write_file(path, "UnstructuredGrid", xml);
+}
+
+}  // namespace polydem

@@ -1,0 +1,151 @@
+#include "shape/topology.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "polydem/error.hpp"
+
+namespace polydem {
+namespace {
+
+using EdgeKey = std::pair<int, int>;
+
+EdgeKey key_of(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+
+[[noreturn]] void fail(const Shape& s, const std::string& what) {
+  throw InputError("shape '" + s.name + "': " + what);
+}
+
+void check_indices(const Shape& s) {
+  const int nv = static_cast<int>(s.vertices.size());
+  if (nv == 0) fail(s, "has no vertex");
+  auto check = [&](int i) {
+    if (i < 0 || i >= nv)
+      fail(s, "vertex index " + std::to_string(i) + " out of range 0.." + std::to_string(nv - 1));
+  };
+  for (const auto& e : s.edges) {
+    check(e[0]);
+    check(e[1]);
+    if (e[0] == e[1]) fail(s, "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) + " joins a vertex to itself");
+  }
+  for (const auto& f : s.faces) {
+    if (f.size() < 3) fail(s, "a face has fewer than 3 vertices");
+    for (int i : f) check(i);
+  }
+}
+
+// Faces bordering each edge key, from consecutive polygon vertices.
+std::map<EdgeKey, std::vector<int>> faces_by_edge(const Shape& s) {
+  std::map<EdgeKey, std::vector<int>> out;
+  for (int f = 0; f < static_cast<int>(s.faces.size()); ++f) {
+    const auto& poly = s.faces[f];
+    for (size_t i = 0; i < poly.size(); ++i) out[key_of(poly[i], poly[(i + 1) % poly.size()])].push_back(f);
+  }
+  return out;
+}
+
+Vec3 vertex_centroid(const Shape& s) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& v : s.vertices) c += v;
+  return c / static_cast<double>(s.vertices.size());
+}
+
+// Largest distance of a vertex to the plane of face 0: zero for a plate.
+double thickness(const Shape& s) {
+  const Vec3 n = polygon_normal(s.vertices, s.faces[0]);
+  const Vec3& p = s.vertices[s.faces[0][0]];
+  double t = 0.0;
+  for (const Vec3& v : s.vertices) t = std::max(t, std::abs(n.dot(v - p)));
+  return t;
+}
+
+double extent(const Shape& s) {
+  const Vec3 c = vertex_centroid(s);
+  double e = 0.0;
+  for (const Vec3& v : s.vertices) e = std::max(e, (v - c).norm());
+  return e;
+}
+
+// A solid's faces must point away from the vertex centroid (inside a convex body).
+void orient_solid_faces(Shape& s) {
+  const Vec3 c = vertex_centroid(s);
+  for (auto& f : s.faces) {
+    Vec3 fc = Vec3::Zero();
+    for (int i : f) fc += s.vertices[i];
+    fc /= static_cast<double>(f.size());
+    if (polygon_normal(s.vertices, f).dot(fc - c) < 0.0) std::reverse(f.begin(), f.end());
+  }
+}
+
+void check_edges_match(const Shape& s, const std::map<EdgeKey, std::vector<int>>& by_edge) {
+  std::set<EdgeKey> listed;
+  for (const auto& e : s.edges) {
+    if (!listed.insert(key_of(e[0], e[1])).second)
+      fail(s, "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) + " is listed twice");
+    if (!by_edge.count(key_of(e[0], e[1])))
+      fail(s, "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) + " is on no face");
+  }
+  if (listed.size() != by_edge.size())
+    fail(s, "the edge list misses " + std::to_string(by_edge.size() - listed.size()) +
+                " face edge(s) (leave edges out to have them derived from the faces)");
+}
+
+void prepare_faceless(Shape& s) {
+  const size_t nv = s.vertices.size();
+  if (nv == 1 && s.edges.empty()) return;
+  if (nv == 2 && s.edges.empty()) s.edges.push_back({0, 1});
+  if (nv == 2 && s.edges.size() == 1) return;
+  fail(s, "has " + std::to_string(nv) + " vertices and no face: only a sphere (1 vertex) or a "
+          "segment (2 vertices, 1 edge) may have no face (give faces, or hull the points)");
+}
+
+}  // namespace
+
+Vec3 polygon_normal(const std::vector<Vec3>& vertices, const std::vector<int>& face) {
+  Vec3 n = Vec3::Zero();
+  for (size_t i = 0; i < face.size(); ++i) {
+    const Vec3& a = vertices[face[i]];
+    const Vec3& b = vertices[face[(i + 1) % face.size()]];
+    n += Vec3((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()),
+              (a.x() - b.x()) * (a.y() + b.y()));
+  }
+  return n.normalized();
+}
+
+void prepare_topology(Shape& s) {
+  check_indices(s);
+  if (s.faces.empty()) {
+    prepare_faceless(s);
+    s.face_normals.clear();
+    return;
+  }
+  // A plate (two faces in one plane) keeps its two opposite orders as given.
+  const bool plate = s.faces.size() == 2 && thickness(s) <= 1e-9 * extent(s);
+  if (!plate) orient_solid_faces(s);
+  const auto by_edge = faces_by_edge(s);
+  for (const auto& [key, faces] : by_edge)
+    if (faces.size() != 2)
+      fail(s, "edge " + std::to_string(key.first) + "-" + std::to_string(key.second) + " borders " +
+                  std::to_string(faces.size()) + " face(s); a closed convex polyhedron needs 2");
+  if (s.edges.empty()) {
+    for (const auto& entry : by_edge) s.edges.push_back({entry.first.first, entry.first.second});
+  } else {
+    check_edges_match(s, by_edge);
+  }
+  s.face_normals.clear();
+  for (const auto& f : s.faces) s.face_normals.push_back(polygon_normal(s.vertices, f));
+}
+
+std::vector<EdgeFaces> edge_faces(const Shape& s) {
+  const auto by_edge = faces_by_edge(s);
+  std::vector<EdgeFaces> out(s.edges.size());
+  for (size_t e = 0; e < s.edges.size(); ++e) {
+    auto it = by_edge.find(key_of(s.edges[e][0], s.edges[e][1]));
+    if (it == by_edge.end()) continue;
+    out[e] = {it->second[0], it->second[1]};
+  }
+  return out;
+}
+
+}  // namespace polydem

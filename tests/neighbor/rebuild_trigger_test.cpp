@@ -1,0 +1,126 @@
+// The rebuild trigger must never let a contact escape the Verlet list, and not rebuild needlessly.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "neighbor/broad_phase.hpp"
+#include "neighbor/rebuild_trigger.hpp"
+#include "scenes.hpp"
+
+namespace polydem {
+namespace {
+
+Quat rotation(double angle, const Vec3& axis) { return Quat(Eigen::AngleAxisd(angle, axis.normalized())); }
+
+TEST_CASE("a trigger with no build asks for one", "[rebuild]") {
+  RebuildTrigger trigger;
+  REQUIRE(trigger.needs_rebuild({Vec3::Zero()}, {Quat::Identity()}, {1.0}, 0.1));
+  trigger.mark_built({Vec3::Zero()}, {Quat::Identity()});
+  REQUIRE(trigger.rebuilds() == 1);
+  REQUIRE_FALSE(trigger.needs_rebuild({Vec3::Zero()}, {Quat::Identity()}, {1.0}, 0.1));
+  // A different body count means the lists are stale.
+  REQUIRE(trigger.needs_rebuild({Vec3::Zero(), Vec3::Ones()}, {Quat::Identity(), Quat::Identity()},
+                                {1.0, 1.0}, 0.1));
+}
+
+TEST_CASE("translation just below and just above skin/2", "[rebuild]") {
+  const double skin = 0.2;
+  const std::vector<Vec3> x0{Vec3(1, 2, 3), Vec3(-4, 0, 1)};
+  const std::vector<Quat> q0{Quat::Identity(), Quat::Identity()};
+  const std::vector<double> radius{0.5, 0.5};
+  RebuildTrigger trigger;
+  trigger.mark_built(x0, q0);
+  const Vec3 direction = Vec3(1, -2, 2) / 3.0;  // unit
+  std::vector<Vec3> x = x0;
+  x[1] += 0.5 * skin * (1 - 1e-9) * direction;
+  REQUIRE_FALSE(trigger.needs_rebuild(x, q0, radius, skin));
+  x[1] = x0[1] + 0.5 * skin * (1 + 1e-9) * direction;
+  REQUIRE(trigger.needs_rebuild(x, q0, radius, skin));
+}
+
+TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]") {
+  // A point at distance R turned by theta moves along the chord 2 R sin(theta/2).
+  const double skin = 0.2;
+  const double big = 10.0;
+  const double theta_limit = 2 * std::asin(0.5 * skin / (2 * big));
+  const Vec3 axis(0.3, -1.0, 0.4);
+  const std::vector<Vec3> x{Vec3::Zero()};
+  RebuildTrigger trigger;
+  trigger.mark_built(x, {rotation(0.7, Vec3::UnitX())});
+  const auto turned = [&](double theta) { return rotation(theta, axis) * rotation(0.7, Vec3::UnitX()); };
+  REQUIRE_FALSE(trigger.needs_rebuild(x, {turned(theta_limit * (1 - 1e-6))}, {big}, skin));
+  REQUIRE(trigger.needs_rebuild(x, {turned(theta_limit * (1 + 1e-6))}, {big}, skin));
+  // The same turn of a small body is harmless; the sign of a quaternion is not a rotation.
+  REQUIRE_FALSE(trigger.needs_rebuild(x, {turned(20 * theta_limit)}, {0.01}, skin));
+  const Quat flipped(-turned(theta_limit * 0.5).coeffs());
+  REQUIRE_FALSE(trigger.needs_rebuild(x, {flipped}, {big}, skin));
+}
+
+TEST_CASE("the displacement bound covers every surface point and is reached", "[rebuild]") {
+  // Brute force: sample points of the bounding sphere, move them with the body, take the largest move.
+  std::mt19937_64 rng(21);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_real_distribution<double> angle(0.0, 2 * kPi);
+  for (int trial = 0; trial < 50; ++trial) {
+    const double radius = 2.0;
+    const Vec3 dx(0.1 * gauss(rng), 0.1 * gauss(rng), 0.1 * gauss(rng));
+    const Quat q0 = rotation(angle(rng), Vec3(gauss(rng), gauss(rng), gauss(rng)));
+    const Quat q1 = rotation(angle(rng), Vec3(gauss(rng), gauss(rng), gauss(rng))) * q0;
+    const double bound = displacement_bound(dx, q1, q0, radius);
+    double largest = 0.0;
+    for (int k = 0; k < 2000; ++k) {
+      const Vec3 p = radius * Vec3(gauss(rng), gauss(rng), gauss(rng)).normalized();  // body frame
+      largest = std::max(largest, (dx + q1 * p - q0 * p).norm());
+    }
+    REQUIRE(largest <= bound * (1 + 1e-12));
+    // Sampled maximum within 5 % of the bound: the bound is not loose (|dx| small vs the chord).
+    REQUIRE(largest > 0.95 * bound - dx.norm());
+  }
+}
+
+// Random walk of bodies and orientations; the list is rebuilt only when the trigger asks.
+TEST_CASE("no contact escapes the Verlet list between rebuilds", "[rebuild][safety]") {
+  const double skin = 0.15;
+  test::Scene s = test::uniform_scene(500, 9.0, 0.1, 0.6, 22);
+  const std::size_t n = s.centers.size();
+  std::vector<Quat> q(n, Quat::Identity());
+  std::mt19937_64 rng(23);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<Vec3> velocity(n);
+  for (auto& v : velocity) v = Vec3(gauss(rng), gauss(rng), gauss(rng));
+  const double dt = 0.004;  // s, about 0.01 skin of travel per step at unit speed
+  RebuildTrigger trigger;
+  CellList cells;
+  std::vector<BodyPair> verlet;
+  std::vector<BodyPair> touching;
+  const int steps = 300;
+  std::size_t checked = 0;
+  for (int step = 0; step < steps; ++step) {
+    if (trigger.needs_rebuild(s.centers, q, s.radii, skin)) {
+      cells.build_pairs(s.centers, s.radii, skin, verlet);
+      trigger.mark_built(s.centers, q);
+    }
+    brute_force_pairs(s.centers, s.radii, 0.0, touching);
+    for (const BodyPair& p : touching) {
+      const bool listed = std::binary_search(
+          verlet.begin(), verlet.end(), p,
+          [](const BodyPair& a, const BodyPair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+      REQUIRE(listed);
+    }
+    checked += touching.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      velocity[i] += 0.3 * Vec3(gauss(rng), gauss(rng), gauss(rng));  // m/s, random kicks
+      s.centers[i] += dt * velocity[i];
+      q[i] = (rotation(dt * gauss(rng), Vec3(gauss(rng), gauss(rng), gauss(rng))) * q[i]).normalized();
+    }
+  }
+  INFO("rebuilds " << trigger.rebuilds() << " in " << steps << " steps, " << checked << " contacts checked");
+  // The check is only meaningful if the list was reused for many steps and contacts existed.
+  REQUIRE(trigger.rebuilds() > 5);
+  REQUIRE(trigger.rebuilds() < steps / 3);
+  REQUIRE(checked > 1000);
+}
+
+}  // namespace
+}  // namespace polydem

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Fixed-state benchmark: settles each scene once (cached in build/bench/), then times STEPS
+# steps from the settled checkpoint at 1 and 2 threads. Appends to tools/bench/results.csv:
+# machine, commit, scene, threads, bodies, steps, seconds, us per particle-step, contacts, rebuilds.
+# usage: tools/bench/run_bench.sh [STEPS]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+steps=${1:-2000}
+bin=build/polydem
+[ -x "$bin" ] || bash tools/build.sh
+results=tools/bench/results.csv
+[ -f "$results" ] || echo "machine,commit,scene,threads,bodies,steps,seconds,us_per_particle_step,contacts,rebuilds" > "$results"
+machine=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//; s/,//g')
+commit=$(git rev-parse --short HEAD)
+for scene in cubes spheres; do
+  settled=build/bench/$scene
+  if [ ! -f "$settled/settled.bin" ]; then
+    echo "settling $scene (once)..."
+    "$bin" run tools/bench/$scene.yaml --out "$settled" --threads 2
+    cp "$(ls "$settled"/checkpoint_*.bin | sort | tail -1)" "$settled/settled.bin"
+  fi
+  for threads in 1 2; do
+    log=$(mktemp)
+    dt_line=$("$bin" check tools/bench/$scene.yaml | grep 'chosen time step' | awk '{print $4}')
+    t_settled=$(python3 - "$settled/energy.csv" <<'PY'
+import sys
+rows=[l.split(',') for l in open(sys.argv[1]).read().split('\n')[1:] if l]
+print(rows[-1][0])
+PY
+)
+    until=$(python3 -c "print($t_settled + $steps * $dt_line)")
+    "$bin" run tools/bench/$scene.yaml --out "$settled/run$threads" --threads $threads \
+        --resume "$settled/settled.bin" --until "$until" 2> "$log"
+    line=$(grep 'steps in' "$log")
+    bodies=$(grep -m1 'bodies,' "$log" | sed 's/polydem: \([0-9]*\) bodies.*/\1/')
+    nsteps=$(echo "$line" | sed 's/polydem: \([0-9]*\) steps.*/\1/')
+    secs=$(echo "$line" | sed 's/.* steps in \([0-9.]*\) s.*/\1/')
+    us=$(echo "$line" | sed 's/.*(\([0-9.e+-]*\) us per body-step).*/\1/')
+    rebuilds=$(echo "$line" | sed 's/.*, \([0-9]*\) rebuilds.*/\1/')
+    contacts=$(tail -1 "$settled/run$threads/energy.csv" | awk -F, '{print $8}')
+    echo "\"$machine\",$commit,$scene,$threads,$bodies,$nsteps,$secs,$us,$contacts,$rebuilds" | tee -a "$results"
+    rm -f "$log"
+  done
+done
