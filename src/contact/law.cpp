@@ -44,9 +44,11 @@ LawParams prepare_law(const ContactParams& p) {
   require_non_negative("mu", p.mu);
   require_non_negative("fc", p.fc);
   require_non_negative("dncut", p.dncut);
-  if (p.mu > 0.0 && p.kt == 0.0) reject("kt", "must be > 0 when mu > 0, or friction is lost (kt = kn is common)");
+  if (p.mu > 0.0 && p.kt == 0.0)
+    reject("kt", "must be > 0 when mu > 0, or friction is lost (kt = kn is common)");
   if (p.mur > 0.0 && p.kr == 0.0) reject("kr", "must be > 0 when mur > 0 (rolling stiffness, N m/rad)");
-  if (p.fc > 0.0 && p.dncut == 0.0) reject("dncut", "must be > 0 when fc > 0 (width of the cohesion band, m)");
+  if (p.fc > 0.0 && p.dncut == 0.0)
+    reject("dncut", "must be > 0 when fc > 0 (width of the cohesion band, m)");
   LawParams law{};
   law.kn = p.kn;
   law.kt = p.kt;

@@ -10,8 +10,14 @@
 //  - normal spring and cohesion are conservative: their potentials are in `elastic`
 //    (the cohesion potential is negative: energy is needed to pull the pair apart);
 //  - the dashpot dissipates -f_d vn dt, f_d = (clamped normal force) - (spring force);
-//  - the tangential and rolling springs store |f|^2/(2k); what the Coulomb cap cuts off
-//    (|trial|^2 - |capped|^2)/(2k) is dissipated (slip), as is what they hold when released.
+//  - the tangential and rolling springs store |f|^2/(2k); slip under the Coulomb cap
+//    dissipates (see capped_spring), and what they hold when released is lost too.
+//
+// Coulomb and rolling caps use the compressive force fp = max(kn_w x - nu_w vn, 0) (cohesion
+// excluded), not SPEC's elastic part kn_w x: with the no-pull clamp the contact releases
+// while x > 0, and kn_w x keeps a friction force with no normal force on the tail, so the
+// tangential impulse is mu (J_n - nu x_c/2) and the oblique sliding law is off by
+// 2 alpha^2 e/(1+e) (11% of the spin at e = 0.3); with fp it is exact (test_law_oblique.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -88,17 +94,22 @@ inline double cohesion_potential(double fc_w, double dncut, double dn) {
 
 // Adds an increment to a spring (force or moment) and caps its length at `cap`, back-solving
 // the spring to the Coulomb limit (Luding 2008, Granular Matter 10:235, eqs. 17-19).
-// Returns J, the spring energy the cap removed (slip).
+// Returns J, the slip work: the work of the relative motion on the spring over the step (the
+// trapezoid rule velocity Verlet applies) minus the change of its energy, which reduces to
+// (|trial| - cap)(old . trial/|trial| + cap)/(2k): cap times the slip when sliding steadily,
+// the stored energy when the cap drops to 0, and 0 while sticking.
 inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+  const Vec3 old = spring;
   spring += increment;
   const double trial = spring.norm();
   if (trial <= cap) return 0.0;
+  const double along = old.dot(spring) / trial;  // old spring along the trial direction
   spring *= cap / trial;
-  return (trial * trial - cap * cap) / (2.0 * stiffness);
+  return (trial - cap) * (along + cap) / (2.0 * stiffness);
 }
 
 // Tangential slot: rotate ft into the plane normal to n keeping its length, add -kt_w vt dt,
-// cap |ft| <= mu kn_w (-dn) (LAMMPS granular "linear_history" tangential model). Returns J, slip.
+// cap |ft| <= ft_max = mu fp (LAMMPS granular "linear_history" tangential model). Returns J, slip.
 inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& v_rel, double kt_w,
                                 double ft_max, double dt) {
   const double length = ft.norm();
@@ -129,23 +140,24 @@ inline ContactForce contact_force(const LawParams& law, const ContactKinematics&
   const double kn_w = w * law.kn;
   const double overlap = std::max(-k.dn, 0.0);  // m
   const double vn = k.v_rel.dot(k.normal);       // m/s, > 0 when separating
+  law_slot::NormalPart normal{0.0, 0.0, 0.0};  // normal.fn is fp, the force the caps scale with
   if (overlap > 0.0) {
     const double nu_w = w * 2.0 * law.alpha_n * std::sqrt(law.kn * k.m_eff);  // N s/m
-    const law_slot::NormalPart normal = law_slot::normal_damped(kn_w, nu_w, overlap, vn, dt);
-    out.fn = normal.fn;
-    out.elastic = normal.elastic;
-    out.dissipated = normal.dissipated;
+    normal = law_slot::normal_damped(kn_w, nu_w, overlap, vn, dt);
   }
+  out.fn = normal.fn;
+  out.elastic = normal.elastic;
+  out.dissipated = normal.dissipated;
   if (law.cohesion) {
     out.fn += law_slot::cohesion_force(w * law.fc, law.dncut, k.dn);
     out.elastic += law_slot::cohesion_potential(w * law.fc, law.dncut, k.dn);
   }
   if (law.mu > 0.0 && kt_w > 0.0) {
-    out.dissipated += law_slot::tangential_spring(h.ft, k.normal, k.v_rel, kt_w, law.mu * kn_w * overlap, dt);
+    out.dissipated += law_slot::tangential_spring(h.ft, k.normal, k.v_rel, kt_w, law.mu * normal.fn, dt);
     out.elastic += law_slot::spring_energy(h.ft, kt_w);
   }
   if (law.rolling) {
-    const double mr_max = law.mur * k.lever * std::max(out.fn, 0.0);  // N m
+    const double mr_max = law.mur * k.lever * normal.fn;  // N m
     out.dissipated += law_slot::capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
     out.elastic += law_slot::spring_energy(h.mr, kr_w);
     out.moment = h.mr;

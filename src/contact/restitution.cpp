@@ -18,7 +18,8 @@ double restitution_for_damping_ratio(double alpha) {
 }
 
 double damping_ratio_for_restitution(double en) {
-  if (!(en > 0.0 && en <= 1.0)) throw std::invalid_argument("damping_ratio_for_restitution: en not in (0, 1]");
+  if (!(en > 0.0 && en <= 1.0))
+    throw std::invalid_argument("damping_ratio_for_restitution: en not in (0, 1]");
   if (en == 1.0) return 0.0;
   // en(alpha) falls from 1 (alpha = 0) to 0 (en ~ 1/(4 alpha^2) for large alpha): bracket, then bisect.
   double lo = 0.0, hi = 1.0;

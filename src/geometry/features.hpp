@@ -41,10 +41,12 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
 // Evaluates one feature pair. Returns false when the closest points do not lie strictly inside
 // the features (the lower-dimensional pair covers the boundary), when edges are parallel
 // (edge_edge), or when gap >= max_gap. On true fills `out`.
+// Both bodies must be convex with their centre inside the core: pairs whose normal points into a
+// body as seen from its centre (cores passed through each other) are rejected, never inverted.
 // Vertex-face uses the signed distance along the face body's outward normal, so the normal
-// never inverts: a vertex below the face plane (cores interpenetrating) keeps pushing out,
-// down to a depth rA + rB below the plane, past which the pair is rejected (the vertex is then
-// more likely to belong to another face's region; Rockable instead flips the normal).
+// never inverts: a vertex below the face plane (cores interpenetrating) keeps pushing out
+// through the face it is least deep under, down to a depth rA + rB, past which the pair is
+// rejected (Rockable instead takes |distance| and flips the normal, pushing the vertex deeper).
 bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
                      ContactPoint& out);
 

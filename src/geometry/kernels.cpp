@@ -41,6 +41,34 @@ inline bool too_far_sq(double d2, double radius_sum, double max_gap) {
   return limit <= 0.0 || d2 >= limit * limit;
 }
 
+// True when u.w < 0 beyond round-off (relative to |w|): flat cores hold their centre in a face.
+inline bool clearly_negative(double uw, const Vec3& w) {
+  return uw < 0.0 && uw * uw > kInteriorMargin * kInteriorMargin * w.squaredNorm();
+}
+
+// True when the normal n (from B to A) points into A or into B as seen from their centres, so
+// that it cannot be a normal of either core at its closest point: the closest-point direction
+// turned over because the cores pass through each other. A closest pair of separated convex
+// cores always passes: n.(cb - xB) >= 0 and n.(ca - xA) <= 0.
+inline bool points_into(const Vec3& n, const Vec3& ca, const Vec3& cb, const PosedBody& A, const PosedBody& B) {
+  const Vec3 wb = cb - B.position;
+  const Vec3 wa = A.position - ca;
+  return clearly_negative(n.dot(wb), wb) || clearly_negative(n.dot(wa), wa);
+}
+
+// For a vertex p inside B's core at signed depth d < 0 below face f: true when f is the face it
+// is least deep under (ties to the lowest index), the face it will leave through. Other faces
+// would give a sideways push; only called for interpenetrating cores, O(faces).
+bool is_exit_face(const PosedBody& B, int f, const Vec3& p, double d) {
+  const Shape& s = *B.shape;
+  for (int g = 0; g < static_cast<int>(s.faces.size()); ++g) {
+    if (g == f) continue;
+    const double dg = (p - B.vertices[s.faces[g][0]]).dot(B.rotation * s.face_normals[g]);
+    if (dg > d || (dg == d && g < f)) return false;
+  }
+  return true;
+}
+
 bool vertex_vertex(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
   const Vec3& ca = A.vertices[a];
   const Vec3& cb = B.vertices[b];
@@ -51,6 +79,7 @@ bool vertex_vertex(const PosedBody& A, const PosedBody& B, int a, int b, double 
   const double d = std::sqrt(d2);
   // Coincident cores (a sphere centred on a vertex): fall back on the line of centres.
   const Vec3 n = d > 0.0 ? Vec3(u / d) : perpendicular_direction(A.position - B.position, Vec3::Zero());
+  if (points_into(n, ca, cb, A, B)) return false;
   fill(A, B, ca, cb, n, d - rsum, out);
   return true;
 }
@@ -63,7 +92,7 @@ bool vertex_edge(const PosedBody& A, const PosedBody& B, int a, int b, double ma
   const Vec3 w = ca - p0;
   const double len2 = e.squaredNorm();
   const double tl = w.dot(e);  // t * len2, t the parameter of the projection on the edge
-  if (!(tl > 0.0 && tl < len2)) return false;
+  if (!inside_segment(tl, len2)) return false;
   const Vec3 foot = (tl / len2) * e;
   const Vec3 u = w - foot;
   const double rsum = A.radius + B.radius;
@@ -71,7 +100,9 @@ bool vertex_edge(const PosedBody& A, const PosedBody& B, int a, int b, double ma
   if (too_far_sq(d2, rsum, max_gap)) return false;
   const double d = std::sqrt(d2);
   const Vec3 n = d > 0.0 ? Vec3(u / d) : perpendicular_direction(A.position - B.position, e);
-  fill(A, B, ca, p0 + foot, n, d - rsum, out);
+  const Vec3 cb = p0 + foot;
+  if (points_into(n, ca, cb, A, B)) return false;
+  fill(A, B, ca, cb, n, d - rsum, out);
   return true;
 }
 
@@ -83,6 +114,7 @@ bool vertex_face(const PosedBody& A, const PosedBody& B, int a, int b, double ma
   const double rsum = A.radius + B.radius;
   if (d <= -rsum || d - rsum >= max_gap) return false;
   if (!projects_inside_polygon(ca, B.vertices, face, n)) return false;
+  if (d < 0.0 && !is_exit_face(B, b, ca, d)) return false;
   fill(A, B, ca, ca - d * n, n, d - rsum, out);
   return true;
 }
@@ -109,13 +141,16 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
   const double rb = db.dot(r);
   const double s = (ab * rb - ra * bb) / c2;
   const double t = (aa * rb - ab * ra) / c2;
-  if (!(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0)) return false;
+  if (!inside_segment(s, 1.0) || !inside_segment(t, 1.0)) return false;
   Vec3 n = c * inv_c;
   // Crossing cores: the closest-point direction is noise, orient the common normal from B's centre to A's.
   const bool crossing = std::abs(signed_d) <= kCrossingTolerance * std::sqrt(std::max(aa, bb));
   const double side = crossing ? n.dot(A.position - B.position) : signed_d;
   if (side < 0.0) n = -n;
-  fill(A, B, pa + s * da, pb + t * db, n, std::abs(signed_d) - rsum, out);
+  const Vec3 ca = pa + s * da;
+  const Vec3 cb = pb + t * db;
+  if (points_into(n, ca, cb, A, B)) return false;
+  fill(A, B, ca, cb, n, std::abs(signed_d) - rsum, out);
   return true;
 }
 

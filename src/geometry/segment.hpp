@@ -14,6 +14,16 @@ namespace polydem {
 // line-line parameters are then ill-conditioned and the vertex-edge pairs carry the contact.
 inline constexpr double kParallelSin2 = 1e-12;
 
+// Relative margin of the "strictly inside" tests: features that meet exactly (stacked cubes,
+// a vertex right above an edge) differ by round-off alone, and the lower-dimensional pair must
+// win every time rather than by a coin flip of the last bit (one contact, never two).
+inline constexpr double kInteriorMargin = 1e-9;
+
+// True when the parameter tl / len2 of a point on a segment lies inside (margin, 1 - margin).
+inline bool inside_segment(double tl, double len2) {
+  return tl > kInteriorMargin * len2 && tl < (1.0 - kInteriorMargin) * len2;
+}
+
 // Parameter t in [0, 1] of the point of segment [a, a + ab] closest to p.
 inline double clamped_segment_param(const Vec3& p, const Vec3& a, const Vec3& ab) {
   const double len2 = ab.squaredNorm();
@@ -63,14 +73,16 @@ inline double segment_segment_distance_sq(const Vec3& p1, const Vec3& d1, const 
 }
 
 // True when p projects strictly inside the convex polygon `face` (indices into `vertices`,
-// counter-clockwise around the outward normal n): p is strictly left of every edge.
+// counter-clockwise around the outward normal n): p is left of every edge by more than
+// kInteriorMargin times the edge length.
 inline bool projects_inside_polygon(const Vec3& p, const Vec3* vertices, const std::vector<int>& face,
                                     const Vec3& n) {
   const std::size_t count = face.size();
   for (std::size_t k = 0; k < count; ++k) {
     const Vec3& v0 = vertices[face[k]];
     const Vec3& v1 = vertices[face[k + 1 == count ? 0 : k + 1]];
-    if ((v1 - v0).cross(p - v0).dot(n) <= 0.0) return false;
+    const Vec3 e = v1 - v0;
+    if (e.cross(p - v0).dot(n) <= kInteriorMargin * e.squaredNorm()) return false;
   }
   return true;
 }

@@ -13,8 +13,11 @@ inline void rotate_about_axis(Quat& q, Vec3& l_body, double inertia_k, int k, do
   const double half = 0.5 * l_body[k] / inertia_k * tau;  // rad, phi / 2
   const double c2 = std::cos(half);
   const double s2 = std::sin(half);
-  const double c = c2 * c2 - s2 * s2;  // cos(phi) from the half angle: one sin/cos pair only
-  const double s = 2.0 * s2 * c2;
+  // cos(phi), sin(phi) from the half angle (one sin/cos pair only), scaled by a Newton step
+  // towards c^2 + s^2 = 1, else rounding in c2^2 + s2^2 biases |L| by ~1e-17 per rotation.
+  const double unit = 1.5 - 0.5 * (c2 * c2 + s2 * s2);
+  const double c = (c2 * c2 - s2 * s2) * unit;
+  const double s = 2.0 * s2 * c2 * unit;
   const int a = (k + 1) % 3;  // (a, b, k) is a right-handed cyclic triple
   const int b = (k + 2) % 3;
   const double la = l_body[a];

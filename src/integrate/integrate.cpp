@@ -49,6 +49,8 @@ void kick(Bodies& b, double h) {
     b.velocity[i] += b.force[i] * (h / b.mass[i]);
     // Torque is summed in the world frame; L lives in the principal frame: apply R^T.
     b.angular_momentum[i] += b.orientation[i].conjugate() * (b.torque[i] * h);
+    // Keep the derived field in step with L, for output and the next force evaluation.
+    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
   }
 }
 

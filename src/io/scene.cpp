@@ -44,9 +44,19 @@ void require_sequence(const YAML::Node& node, const std::string& file, int line,
 
 namespace {
 
+// yaml-cpp's message for a tab in the indentation does not say so.
+std::string tab_hint(const std::string& text, int line) {
+  std::istringstream lines(text);
+  std::string l;
+  for (int i = 0; i < line && std::getline(lines, l); ++i) {}
+  return l.find('\t') != std::string::npos ? " (YAML does not allow tabs: indent with spaces)" : "";
+}
+
 YAML::Node load_yaml(const std::string& path) {
-  if (!fs::is_regular_file(path))
+  if (!fs::exists(path))
     throw InputError(input_message(path, 0, "", "cannot open the scene file (no such file)"));
+  if (!fs::is_regular_file(path))
+    throw InputError(input_message(path, 0, "", "cannot open the scene file (not a file)"));
   std::ifstream in(path);
   if (!in) throw InputError(input_message(path, 0, "", "cannot open the scene file"));
   std::stringstream text;
@@ -54,7 +64,8 @@ YAML::Node load_yaml(const std::string& path) {
   try {
     return YAML::Load(text.str());
   } catch (const YAML::ParserException& e) {
-    throw InputError(input_message(path, e.mark.line + 1, "", "YAML syntax error: " + e.msg));
+    throw InputError(input_message(path, e.mark.line + 1, "",
+                                   "YAML syntax error: " + e.msg + tab_hint(text.str(), e.mark.line + 1)));
   }
 }
 

@@ -30,6 +30,7 @@ constexpr std::array kUnits = {
     Unit{"s", 1.0, {0, 0, 1, 0}, true},      Unit{"min", 60.0, {0, 0, 1, 0}, false},
     Unit{"h", 3600.0, {0, 0, 1, 0}, false},  Unit{"rad", 1.0, {0, 0, 0, 1}, true},
     Unit{"deg", kPi / 180.0, {0, 0, 0, 1}, false},
+    Unit{"\u00b0", kPi / 180.0, {0, 0, 0, 1}, false},  // the degree sign
     Unit{"rpm", 2.0 * kPi / 60.0, {0, 0, -1, 1}, false},
     Unit{"N", 1.0, kForce, true},            Unit{"J", 1.0, {2, 1, -2, 0}, true},
     Unit{"Pa", 1.0, {-1, 1, -2, 0}, true},   Unit{"bar", 1e5, {-1, 1, -2, 0}, false},
@@ -106,6 +107,7 @@ struct UnitParse {
   Scaled value;
   std::string bad_token;  // unknown unit name
   bool syntax_error = false;
+  bool bare = true;  // no unit at all: the number is SI
 };
 
 // Parses the unit part "kg/m^3", "N m/rad": factors joined by spaces or '*', '/' divides
@@ -120,10 +122,13 @@ UnitParse parse_units(const std::string& s) {
     if (s.compare(i, 2, "\u00b7") == 0) { i += 2; continue; }  // middle dot, as in "N\u00b7m"
 
     if (c == '/') { divide = true; ++i; continue; }
+    if (c == '1' && (i + 1 == s.size() || s[i + 1] == '/')) { out.bare = false; ++i; continue; }  // "1/s"
+
     if (!is_unit_char(c)) { out.syntax_error = true; return out; }
     const std::size_t start = i;
     while (i < s.size() && is_unit_char(static_cast<unsigned char>(s[i]))) ++i;
     const std::string token = s.substr(start, i - start);
+    out.bare = false;
     const std::optional<int> power = read_power(s, i);
     const std::optional<Scaled> unit = lookup_unit(token);
     if (!power) { out.syntax_error = true; return out; }
@@ -221,6 +226,7 @@ double parse_quantity(const std::string& text, Dimension dim, const SourceLoc& l
     fail("cannot read the unit in \"" + text + "\"; expected " + expected);
   if (!units.bad_token.empty())
     fail("unknown unit '" + units.bad_token + "' in \"" + text + "\"; expected " + expected);
+  if (units.bare) return number;
   if (!compatible(units.value.dims, dims_of(dim)))
     fail("\"" + text + "\" is " + describe(units.value.dims) + ", expected " + expected);
   return number * units.value.factor;

@@ -44,7 +44,7 @@ int line_of(const YAML::Node& node, int fallback) {
 
 YamlMap::YamlMap(const YAML::Node& node, std::string block, std::string file, int line,
                  std::vector<std::string> allowed)
-    : node_(node), block_(std::move(block)), file_(std::move(file)), line_(line_of(node, line)) {
+    : node_(node), block_(std::move(block)), file_(std::move(file)), line_(line > 0 ? line : line_of(node)) {
   if (!node.IsDefined() || node.IsNull()) return;
   if (!node.IsMap())
     throw InputError(input_message(file_, line_, block_, "expected a mapping of keys, like {key: value}"));

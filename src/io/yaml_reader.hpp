@@ -25,7 +25,8 @@ int line_of(const YAML::Node& node, int fallback = 0);
 // One mapping of the scene (`simulation`, `config`, a driver ...) and the keys it accepts.
 class YamlMap {
  public:
-  // A null node is an empty mapping; any other non-mapping is an InputError at `line`.
+  // `line`: of the key holding the mapping (0: the node's own). A null node is an empty
+  // mapping; any other non-mapping is an InputError.
   YamlMap(const YAML::Node& node, std::string block, std::string file, int line,
           std::vector<std::string> allowed);
 

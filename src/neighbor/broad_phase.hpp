@@ -12,8 +12,10 @@
 namespace polydem {
 
 // Cell-list search, O(N) for a bounded ratio of largest to mean bounding radius.
-// Cells have side 2 max(R) + skin, so a pair within reach lies in the same or adjacent cells;
-// only occupied cells are stored (hash table) and the memory is reused across calls.
+// Cells have side 2 max(R) + skin, so a pair within reach lies in the same or adjacent cells.
+// A dense grid over the bodies' bounding box when it has at most a few cells per body; else
+// (sparse or huge domains, a body far away) only occupied cells, in a hash table. Memory is
+// O(bodies) either way and is reused across calls.
 class CellList {
  public:
   // Writes all pairs with |x_i - x_j| < R_i + R_j + skin into `out`, sorted by (i, j), the same
@@ -23,8 +25,10 @@ class CellList {
                    std::vector<BodyPair>& out);
   // Sphere-sphere distance tests done by the last build_pairs (the cost that must stay O(N)).
   std::size_t candidate_tests() const { return candidate_count; }
-  // Occupied cells in the last build_pairs.
-  std::size_t occupied_cells() const { return table.size(); }
+  // Cells stored by the last build_pairs: the dense grid size, or the occupied cells when hashed.
+  std::size_t stored_cells() const { return cell_count; }
+  // Whether the last build_pairs fell back to hashed cells.
+  bool hashed() const { return !dense; }
 
  private:
   struct Sphere {
@@ -33,20 +37,29 @@ class CellList {
   static constexpr int kForward = 13;  // half of the 26 neighbour cells: each cell pair once
 
   void bin_bodies(const std::vector<Vec3>& centers, const std::vector<double>& radii, double cell);
-  void link_forward_cells();
+  void number_dense_cells(const std::vector<Vec3>& centers, const Vec3& lo, double cell);
+  void number_hashed_cells(const std::vector<Vec3>& centers, const Vec3& lo, double cell);
+  void sort_into_cells(const std::vector<Vec3>& centers, const std::vector<double>& radii);
+  void link_hashed_cells();
+  void forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) const;
   void collect_pairs(double skin);
   void merge_pairs(std::size_t n, std::vector<BodyPair>& out);
 
-  CellTable table;
-  std::vector<CellCoord> body_cell;       // cell of each body
+  bool dense = true;
+  std::int64_t dims[3] = {0, 0, 0};        // cells per axis of the dense grid
+  std::size_t cell_count = 0;
   std::vector<std::uint32_t> body_cell_id;
-  std::vector<CellCoord> cell_coord;      // coordinates of each occupied cell
-  std::vector<std::uint32_t> cell_start;  // CSR: bodies of cell c are [cell_start[c], cell_start[c+1])
-  std::vector<Sphere> spheres;            // sorted by cell
-  std::vector<std::uint32_t> sorted_id;   // body index of spheres[k]
-  std::vector<std::uint32_t> forward;     // kForward neighbour cell ids per cell, or kNoCell
+  std::vector<std::uint32_t> cell_start;   // CSR: bodies of cell c are [cell_start[c], cell_start[c+1])
+  std::vector<Sphere> spheres;             // sorted by cell
+  std::vector<std::uint32_t> sorted_id;    // body index of spheres[k]
+  // Hashed mode only.
+  CellTable table;
+  std::vector<CellCoord> body_cell;        // cell of each body
+  std::vector<CellCoord> cell_coord;       // coordinates of each occupied cell
+  std::vector<std::uint32_t> forward;      // kForward neighbour cell ids per cell, or kNoCell
+  // Output assembly.
   std::vector<std::vector<BodyPair>> thread_pairs;
-  std::vector<std::uint32_t> row_start;   // CSR of the output by first body
+  std::vector<std::uint32_t> row_start;    // CSR of the output by first body
   std::vector<std::uint32_t> row_fill;
   std::size_t candidate_count = 0;
 };

@@ -1,3 +1,4 @@
+// The pair search over cells and the deterministic assembly of its output.
 #include <omp.h>
 
 #include <algorithm>
@@ -7,19 +8,12 @@
 #include <string>
 
 #include "neighbor/broad_phase.hpp"
-#include "polydem/error.hpp"
+#include "neighbor/cell_common.hpp"
 
 namespace polydem {
 namespace {
 
-// Cell coordinates are clamped here: clamping is monotone and never moves two cells apart, so
-// far-away bodies only share cells (still correct) instead of overflowing the integers.
-constexpr double kMaxCoord = 1099511627776.0;  // 2^40 cells per axis
-
-// Forward half of the 26 neighbour offsets: exactly one of each (+d, -d) couple.
-constexpr int kOffsets[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},   {-1, -1, 1},
-                                 {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},   {1, 0, 1},
-                                 {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
+using cells::kMinParallel;
 
 // m, side of a cell: two bodies within reach are at most 2 max(R) + skin apart.
 double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin) {
@@ -31,8 +25,8 @@ double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& ra
     throw std::invalid_argument("build_pairs: skin must be finite and >= 0, got " +
                                 std::to_string(skin));
   }
-  if (centers.size() > std::numeric_limits<std::uint32_t>::max()) {
-    throw std::invalid_argument("build_pairs: more than 2^32 - 1 bodies");
+  if (centers.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("build_pairs: 2^32 - 1 bodies or more");
   }
   double max_r = 0.0;
   for (std::size_t i = 0; i < radii.size(); ++i) {
@@ -45,22 +39,6 @@ double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& ra
   return 2.0 * max_r + skin;
 }
 
-// m, lowest corner of the bodies' bounding box; throws on a non-finite centre (blown-up run).
-Vec3 lower_corner(const std::vector<Vec3>& centers) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < centers.size(); ++i) {
-    if (!centers[i].allFinite()) {
-      throw RunError("broad phase: body " + std::to_string(i) + " has a non-finite position");
-    }
-    lo = lo.cwiseMin(centers[i]);
-  }
-  return lo;
-}
-
-std::int64_t cell_index(double x, double lo, double cell) {
-  return static_cast<std::int64_t>(std::min((x - lo) / cell, kMaxCoord));
-}
-
 }  // namespace
 
 void CellList::build_pairs(const std::vector<Vec3>& centers, const std::vector<double>& radii,
@@ -68,70 +46,20 @@ void CellList::build_pairs(const std::vector<Vec3>& centers, const std::vector<d
   const double cell = cell_side(centers, radii, skin);
   out.clear();
   candidate_count = 0;
-  table.reset(0);
+  cell_count = 0;
+  dense = true;
   // With a zero cell side every reach is 0 and no distance is < 0: there is nothing to find.
   if (centers.size() < 2 || !(cell > 0.0)) return;
   bin_bodies(centers, radii, cell);
-  link_forward_cells();
   collect_pairs(skin);
   merge_pairs(centers.size(), out);
 }
 
-// Counting sort of the bodies into occupied cells, numbered in order of first body.
-void CellList::bin_bodies(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                          double cell) {
-  const std::size_t n = centers.size();
-  const Vec3 lo = lower_corner(centers);
-  body_cell.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& x = centers[i];
-    body_cell[i] = {cell_index(x.x(), lo.x(), cell), cell_index(x.y(), lo.y(), cell),
-                    cell_index(x.z(), lo.z(), cell)};
-  }
-  table.reset(n);
-  body_cell_id.resize(n);
-  cell_coord.clear();
-  cell_start.assign(n + 2, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t c = table.insert(body_cell[i]);
-    if (c == cell_coord.size()) cell_coord.push_back(body_cell[i]);
-    body_cell_id[i] = c;
-    ++cell_start[c + 2];
-  }
-  const std::size_t cells = table.size();
-  cell_start.resize(cells + 2);
-  for (std::size_t c = 2; c < cells + 2; ++c) cell_start[c] += cell_start[c - 1];
-  spheres.resize(n);
-  sorted_id.resize(n);
-  // Stable scatter: cell_start[c + 1] walks from the start of cell c to its end.
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t k = cell_start[body_cell_id[i] + 1]++;
-    spheres[k] = {centers[i].x(), centers[i].y(), centers[i].z(), radii[i]};
-    sorted_id[k] = static_cast<std::uint32_t>(i);
-  }
-  cell_start.resize(cells + 1);
-}
-
-void CellList::link_forward_cells() {
-  const std::size_t cells = table.size();
-  forward.resize(cells * kForward);
-#pragma omp parallel for schedule(static)
-  for (std::size_t c = 0; c < cells; ++c) {
-    const CellCoord& a = cell_coord[c];
-    for (int k = 0; k < kForward; ++k) {
-      const CellCoord b = {a.x + kOffsets[k][0], a.y + kOffsets[k][1], a.z + kOffsets[k][2]};
-      forward[c * kForward + k] = table.find(b);
-    }
-  }
-}
-
 void CellList::collect_pairs(double skin) {
-  const std::size_t cells = table.size();
   thread_pairs.resize(static_cast<std::size_t>(omp_get_max_threads()));
   for (auto& buffer : thread_pairs) buffer.clear();
   std::size_t tests = 0;
-#pragma omp parallel reduction(+ : tests)
+#pragma omp parallel reduction(+ : tests) if (spheres.size() >= kMinParallel)
   {
     std::vector<BodyPair>& buffer = thread_pairs[static_cast<std::size_t>(omp_get_thread_num())];
     const auto test = [&](std::uint32_t a, std::uint32_t b) {
@@ -139,22 +67,27 @@ void CellList::collect_pairs(double skin) {
       const Sphere& q = spheres[b];
       ++tests;
       if (within_reach(p.x, p.y, p.z, p.r, q.x, q.y, q.z, q.r, skin)) {
-        buffer.push_back({std::min(sorted_id[a], sorted_id[b]), std::max(sorted_id[a], sorted_id[b])});
+        const std::uint32_t i = sorted_id[a];
+        const std::uint32_t j = sorted_id[b];
+        buffer.push_back({std::min(i, j), std::max(i, j)});
       }
     };
-    // Dynamic: clustered scenes put very unequal work in each cell; order is restored by the merge.
-#pragma omp for schedule(dynamic, 64)
-    for (std::size_t c = 0; c < cells; ++c) {
+    // Dynamic: clustered scenes put very unequal work in each cell; the merge restores order.
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t c = 0; c < cell_count; ++c) {
       const std::uint32_t begin = cell_start[c];
       const std::uint32_t end = cell_start[c + 1];
+      if (begin == end) continue;
       for (std::uint32_t a = begin; a < end; ++a) {
         for (std::uint32_t b = a + 1; b < end; ++b) test(a, b);
       }
-      for (int k = 0; k < kForward; ++k) {
-        const std::uint32_t other = forward[c * kForward + k];
+      std::uint32_t others[kForward];
+      forward_cells(c, others);
+      for (const std::uint32_t other : others) {
         if (other == CellTable::kNoCell) continue;
+        const std::uint32_t other_end = cell_start[other + 1];
         for (std::uint32_t a = begin; a < end; ++a) {
-          for (std::uint32_t b = cell_start[other]; b < cell_start[other + 1]; ++b) test(a, b);
+          for (std::uint32_t b = cell_start[other]; b < other_end; ++b) test(a, b);
         }
       }
     }
@@ -176,7 +109,7 @@ void CellList::merge_pairs(std::size_t n, std::vector<BodyPair>& out) {
   for (const auto& buffer : thread_pairs) {
     for (const BodyPair& p : buffer) out[row_fill[p.i]++] = p;
   }
-#pragma omp parallel for schedule(dynamic, 1024)
+#pragma omp parallel for schedule(dynamic, 1024) if (n >= kMinParallel)
   for (std::size_t i = 0; i < n; ++i) {
     std::sort(out.begin() + row_start[i], out.begin() + row_start[i + 1],
               [](const BodyPair& a, const BodyPair& b) { return a.j < b.j; });

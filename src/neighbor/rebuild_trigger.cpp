@@ -4,6 +4,12 @@
 #include <string>
 
 namespace polydem {
+namespace {
+
+// Bodies below which the check runs on one thread: forking costs more than the loop.
+constexpr std::size_t kMinParallel = 4096;
+
+}  // namespace
 
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius) {
@@ -33,7 +39,7 @@ bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector
   if (rebuild_count == 0 || x_built.size() != n) return true;
   const double limit = 0.5 * skin;  // m, each body may use half the skin
   int exceeded = 0;
-#pragma omp parallel for schedule(static) reduction(max : exceeded)
+#pragma omp parallel for schedule(static) reduction(max : exceeded) if (n >= kMinParallel)
   for (std::size_t i = 0; i < n; ++i) {
     const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
     // Written as !(d <= limit) so a NaN state also asks for a rebuild.

@@ -29,14 +29,17 @@ struct DriverMesh {
 void write_drivers_vtp(const std::string& path, const std::vector<DriverMesh>& drivers);
 
 // One contact line of the force network.
+// Zero by default: Eigen leaves vectors uninitialized, and callers accumulate into ContactOut{}.
 struct ContactOut {
-  Vec3 from, to;   // m, body i's centre -> body j's centre (or the contact point for a driver)
-  Vec3 point;      // m, contact point
-  Vec3 force;      // N, on body i
-  double fn, ft;   // N, normal force and tangential force magnitude
-  double overlap;  // m
-  std::int64_t i, j;
-  int type;
+  Vec3 from = Vec3::Zero();   // m, body i's centre
+  Vec3 to = Vec3::Zero();     // m, body j's centre (or the contact point for a driver)
+  Vec3 point = Vec3::Zero();  // m, contact point
+  Vec3 force = Vec3::Zero();  // N, on body i
+  double fn = 0.0;            // N, normal force
+  double ft = 0.0;            // N, tangential force magnitude
+  double overlap = 0.0;       // m
+  std::int64_t i = 0, j = 0;
+  int type = 0;
 };
 
 // contacts_NNNNNN.vtp: one line per contact with cell data force, point (3 x Float64), fn, ft,

@@ -88,14 +88,15 @@ TEST_CASE("no contact escapes the Verlet list between rebuilds", "[rebuild][safe
   std::mt19937_64 rng(23);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::vector<Vec3> velocity(n);
-  for (auto& v : velocity) v = Vec3(gauss(rng), gauss(rng), gauss(rng));
-  const double dt = 0.004;  // s, about 0.01 skin of travel per step at unit speed
+  for (auto& v : velocity) v = 0.5 * Vec3(gauss(rng), gauss(rng), gauss(rng));  // m/s
+  const double dt = 0.004;  // s, a body at 1 m/s crosses skin/2 in about 19 steps
   RebuildTrigger trigger;
   CellList cells;
   std::vector<BodyPair> verlet;
   std::vector<BodyPair> touching;
   const int steps = 300;
   std::size_t checked = 0;
+  std::size_t missing = 0;  // contacts absent from the list: must stay 0
   for (int step = 0; step < steps; ++step) {
     if (trigger.needs_rebuild(s.centers, q, s.radii, skin)) {
       cells.build_pairs(s.centers, s.radii, skin, verlet);
@@ -106,16 +107,18 @@ TEST_CASE("no contact escapes the Verlet list between rebuilds", "[rebuild][safe
       const bool listed = std::binary_search(
           verlet.begin(), verlet.end(), p,
           [](const BodyPair& a, const BodyPair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
-      REQUIRE(listed);
+      if (!listed) ++missing;
     }
     checked += touching.size();
     for (std::size_t i = 0; i < n; ++i) {
-      velocity[i] += 0.3 * Vec3(gauss(rng), gauss(rng), gauss(rng));  // m/s, random kicks
+      // m/s, random kicks with damping keep the speeds steady
+      velocity[i] = 0.95 * velocity[i] + 0.15 * Vec3(gauss(rng), gauss(rng), gauss(rng));
       s.centers[i] += dt * velocity[i];
       q[i] = (rotation(dt * gauss(rng), Vec3(gauss(rng), gauss(rng), gauss(rng))) * q[i]).normalized();
     }
   }
   INFO("rebuilds " << trigger.rebuilds() << " in " << steps << " steps, " << checked << " contacts checked");
+  REQUIRE(missing == 0);
   // The check is only meaningful if the list was reused for many steps and contacts existed.
   REQUIRE(trigger.rebuilds() > 5);
   REQUIRE(trigger.rebuilds() < steps / 3);
