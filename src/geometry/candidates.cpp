@@ -25,6 +25,16 @@ double core_bounding_radius(const PosedBody& body) {
   return std::sqrt(r2);
 }
 
+// Squared distance from point p to a face (interior and boundary), skipping the edges when the
+// face plane alone is already farther than the cutoff.
+double face_distance_sq(const Vec3& p, const PosedBody& body, int face, const Vec3& n, double cutoff2) {
+  const std::vector<int>& f = body.shape->faces[face];
+  const double d = (p - body.vertices[f[0]]).dot(n);
+  if (d * d >= cutoff2) return d * d;
+  return point_polygon_distance_sq(p, body.vertices, f, n);
+}
+
+// Fills `near` with the features of `body` closer than `reach` to `centre`, in index order.
 void collect_near(const PosedBody& body, const Vec3& centre, double reach, NearFeatures& near) {
   const Shape& s = *body.shape;
   const double reach2 = reach * reach;
@@ -41,20 +51,11 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, NearF
   }
   for (std::size_t i = 0; i < s.faces.size(); ++i) {
     const Vec3 n = body.rotation * s.face_normals[i];
-    if (point_polygon_distance_sq(centre, body.vertices, s.faces[i], n) < reach2) {
+    if (face_distance_sq(centre, body, static_cast<int>(i), n, reach2) < reach2) {
       near.faces.push_back(static_cast<std::uint16_t>(i));
       near.face_normals.push_back(n);
     }
   }
-}
-
-// Squared distance from point p to a face (interior and boundary), skipping the edges when the
-// face plane alone is already farther than the cutoff.
-double face_distance_sq(const Vec3& p, const PosedBody& body, int face, const Vec3& n, double cutoff2) {
-  const std::vector<int>& f = body.shape->faces[face];
-  const double d = (p - body.vertices[f[0]]).dot(n);
-  if (d * d >= cutoff2) return d * d;
-  return point_polygon_distance_sq(p, body.vertices, f, n);
 }
 
 void append_vertex_pairs(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,

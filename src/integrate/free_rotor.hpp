@@ -13,11 +13,8 @@ inline void rotate_about_axis(Quat& q, Vec3& l_body, double inertia_k, int k, do
   const double half = 0.5 * l_body[k] / inertia_k * tau;  // rad, phi / 2
   const double c2 = std::cos(half);
   const double s2 = std::sin(half);
-  // cos(phi), sin(phi) from the half angle (one sin/cos pair only), scaled by a Newton step
-  // towards c^2 + s^2 = 1, else rounding in c2^2 + s2^2 biases |L| by ~1e-17 per rotation.
-  const double unit = 1.5 - 0.5 * (c2 * c2 + s2 * s2);
-  const double c = (c2 * c2 - s2 * s2) * unit;
-  const double s = 2.0 * s2 * c2 * unit;
+  const double c = c2 * c2 - s2 * s2;  // cos(phi) from the half angle: one sin/cos pair only
+  const double s = 2.0 * s2 * c2;
   const int a = (k + 1) % 3;  // (a, b, k) is a right-handed cyclic triple
   const int b = (k + 2) % 3;
   const double la = l_body[a];
@@ -30,7 +27,7 @@ inline void rotate_about_axis(Quat& q, Vec3& l_body, double inertia_k, int k, do
 }
 
 // Second-order symmetric splitting 3(dt/2) 2(dt/2) 1(dt) 2(dt/2) 3(dt/2) (NO_SQUISH, Miller
-// et al. 2002): symplectic and time-reversible; |L| and R L_body are kept exactly.
+// et al. 2002): symplectic, time-reversible; keeps |L| and R L_body up to round-off.
 inline void rotate_asymmetric(Quat& q, Vec3& l_body, const Vec3& inertia, double dt) {
   const double h = 0.5 * dt;
   rotate_about_axis(q, l_body, inertia[2], 2, h);

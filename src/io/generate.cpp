@@ -1,8 +1,8 @@
 #include "io/generate.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <cmath>
+#include <numeric>
 
 #include "io/placement.hpp"
 #include "io/random.hpp"
@@ -22,9 +22,10 @@ int shape_index(const ShapeLibrary& lib, const std::string& name, const SourceLo
   std::vector<std::string> names;
   for (const Shape& s : lib.shapes) names.push_back(s.name);
   const std::string hint = did_you_mean(name, names);
-  throw InputError(input_message(loc.file, loc.line, key,
-                                 "unknown shape '" + name + "'" +
-                                     (hint.empty() ? " (not in the loaded shape libraries)" : hint)));
+  throw InputError(
+      input_message(loc.file, loc.line, key,
+                    "unknown shape '" + name + "'" +
+                        (hint.empty() ? " (not in the loaded shape libraries)" : hint)));
 }
 
 // Library index of every body: exact counts from the fractions (largest remainder), shuffled,
@@ -41,9 +42,11 @@ std::vector<int> shape_sequence(const GeneratorSpec& g, const std::vector<int>& 
     remainders.emplace_back(-(exact - counts[s]), static_cast<int>(s));
   }
   std::stable_sort(remainders.begin(), remainders.end());
-  for (int k = 0; assigned < g.count; ++k, ++assigned) ++counts[remainders[k % remainders.size()].second];
+  for (int k = 0; assigned < g.count; ++k, ++assigned)
+    ++counts[remainders[k % remainders.size()].second];
   std::vector<int> sequence;
-  for (std::size_t s = 0; s < indices.size(); ++s) sequence.insert(sequence.end(), counts[s], indices[s]);
+  for (std::size_t s = 0; s < indices.size(); ++s)
+    sequence.insert(sequence.end(), counts[s], indices[s]);
   for (std::size_t i = sequence.size(); i > 1; --i) {  // Fisher-Yates
     const auto j = static_cast<std::size_t>(uniform01(rng) * static_cast<double>(i));
     std::swap(sequence[i - 1], sequence[j]);
@@ -52,9 +55,11 @@ std::vector<int> shape_sequence(const GeneratorSpec& g, const std::vector<int>& 
 }
 
 // Shape, scale and orientation of every body, positions still unset.
-std::vector<BodySpec> draw_bodies(const GeneratorSpec& g, const ShapeLibrary& lib, std::mt19937_64& rng) {
+std::vector<BodySpec> draw_bodies(const GeneratorSpec& g, const ShapeLibrary& lib,
+                                  std::mt19937_64& rng) {
   std::vector<int> indices;
-  for (const auto& [name, fraction] : g.shapes) indices.push_back(shape_index(lib, name, g.loc, "shapes"));
+  for (const auto& [name, fraction] : g.shapes)
+    indices.push_back(shape_index(lib, name, g.loc, "shapes"));
   std::vector<BodySpec> bodies;
   for (int s : shape_sequence(g, indices, rng)) {
     BodySpec b;
@@ -85,8 +90,10 @@ void place_random(const GeneratorSpec& g, const Region& region, const ShapeLibra
   // Largest first: a big body rarely finds a hole among many small ones.
   std::vector<std::size_t> order(bodies.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return radii[a] > radii[b]; });
-  SphereGrid grid(region.lower(), region.upper(), radii.empty() ? 0.0 : radii[order[0]], bodies.size());
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return radii[a] > radii[b]; });
+  SphereGrid grid(region.lower(), region.upper(), radii.empty() ? 0.0 : radii[order[0]],
+                  bodies.size());
   for (std::size_t placed = 0; placed < order.size(); ++placed) {
     const double radius = radii[order[placed]];
     if (!region.fits(radius))
@@ -94,7 +101,8 @@ void place_random(const GeneratorSpec& g, const Region& region, const ShapeLibra
                         " m does not fit in the region: use a bigger region or a smaller scale");
     int attempt = 0;
     Vec3 center = region.sample(radius, rng);
-    while (grid.overlaps(center, radius) && ++attempt < kMaxAttempts) center = region.sample(radius, rng);
+    while (grid.overlaps(center, radius) && ++attempt < kMaxAttempts)
+      center = region.sample(radius, rng);
     if (attempt == kMaxAttempts)
       fail_count(g, "placed " + std::to_string(placed) + " of " + std::to_string(g.count) +
                         " bodies without overlap (no free spot in " + std::to_string(kMaxAttempts) +
@@ -112,8 +120,9 @@ void place_lattice(const GeneratorSpec& g, const Region& region, const ShapeLibr
   if (!(spacing > 0.0)) fail_count(g, "the shapes have no size (bounding radius 0)");
   const std::vector<Vec3> sites = region.lattice(spacing);
   if (sites.size() < bodies.size())
-    fail_count(g, "the region holds " + std::to_string(sites.size()) + " lattice sites of spacing " +
-                      std::to_string(spacing) + " m, fewer than count = " + std::to_string(g.count) +
+    fail_count(g, "the region holds " + std::to_string(sites.size()) +
+                      " lattice sites of spacing " + std::to_string(spacing) +
+                      " m, fewer than count = " + std::to_string(g.count) +
                       ": use a bigger region or a smaller count");
   for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].position = sites[i];
 }
@@ -131,8 +140,10 @@ std::vector<BodySpec> expand_bodies(const Scene& scene, const ShapeLibrary& lib)
     std::mt19937_64 rng = generator_rng(scene.simulation.seed, k);
     std::vector<BodySpec> bodies = draw_bodies(g, lib, rng);
     const Region region(g.region);
-    if (g.kind == GeneratorSpec::Kind::random) place_random(g, region, lib, bodies, rng);
-    else place_lattice(g, region, lib, bodies);
+    if (g.kind == GeneratorSpec::Kind::random)
+      place_random(g, region, lib, bodies, rng);
+    else
+      place_lattice(g, region, lib, bodies);
     out.insert(out.end(), bodies.begin(), bodies.end());
   }
   return out;

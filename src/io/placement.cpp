@@ -38,7 +38,8 @@ Region::Region(const std::variant<BoxRegion, CylinderRegion>& region)
   radial_frame(cylinder_.axis, e1_, e2_);
   const Vec3 top = cylinder_.center + cylinder_.length * cylinder_.axis;
   // A disc of radius r normal to a reaches r sqrt(1 - a_k^2) along axis k.
-  const Vec3 reach = cylinder_.radius * (Vec3::Ones() - cylinder_.axis.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
+  const Vec3 reach =
+      cylinder_.radius * (Vec3::Ones() - cylinder_.axis.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
   lower_ = cylinder_.center.cwiseMin(top) - reach;
   upper_ = cylinder_.center.cwiseMax(top) + reach;
 }
@@ -60,7 +61,8 @@ Vec3 Region::sample(double radius, std::mt19937_64& rng) const {
   const double along = radius + (cylinder_.length - 2.0 * radius) * uniform01(rng);
   const double rho = (cylinder_.radius - radius) * std::sqrt(uniform01(rng));  // uniform in area
   const double phi = 2.0 * kPi * uniform01(rng);
-  return cylinder_.center + along * cylinder_.axis + rho * (std::cos(phi) * e1_ + std::sin(phi) * e2_);
+  return cylinder_.center + along * cylinder_.axis +
+         rho * (std::cos(phi) * e1_ + std::sin(phi) * e2_);
 }
 
 std::vector<Vec3> Region::lattice(double spacing) const {
@@ -74,7 +76,8 @@ std::vector<Vec3> Region::lattice(double spacing) const {
         for (double x : xs) sites.push_back(box_.min + Vec3(x, y, z));
     return sites;
   }
-  const double reach = cylinder_.radius - 0.5 * spacing;  // m, largest centre distance from the axis
+  const double reach =
+      cylinder_.radius - 0.5 * spacing;  // m, largest centre distance from the axis
   if (reach < 0.0) return sites;
   const int n = static_cast<int>(std::floor(reach / spacing * (1.0 + 1e-12)));
   for (double w : centred_sites(cylinder_.length, spacing))
@@ -87,14 +90,16 @@ std::vector<Vec3> Region::lattice(double spacing) const {
   return sites;
 }
 
-SphereGrid::SphereGrid(const Vec3& lower, const Vec3& upper, double max_radius, std::size_t expected)
+SphereGrid::SphereGrid(const Vec3& lower, const Vec3& upper, double max_radius,
+                       std::size_t expected)
     : lower_(lower) {
   const Vec3 extent = (upper - lower).cwiseMax(1e-300);
   // Cells at least one diameter wide, and not many more cells than spheres in a huge region.
   const double max_cells = std::max(64.0, 4.0 * static_cast<double>(expected));
   cell_size_ = std::max(2.0 * max_radius, std::cbrt(extent.prod() / max_cells));
   for (int k = 0; k < 3; ++k)
-    dims_[k] = std::max(1, static_cast<int>(std::min(std::ceil(extent[k] / cell_size_), max_cells)));
+    dims_[k] =
+        std::max(1, static_cast<int>(std::min(std::ceil(extent[k] / cell_size_), max_cells)));
   head_.assign(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2], -1);
 }
 
@@ -108,7 +113,8 @@ std::size_t SphereGrid::cell_of(int i, int j, int k) const {
 }
 
 bool SphereGrid::overlaps(const Vec3& center, double radius) const {
-  const int ci = cell_coord(center.x(), 0), cj = cell_coord(center.y(), 1), ck = cell_coord(center.z(), 2);
+  const int ci = cell_coord(center.x(), 0), cj = cell_coord(center.y(), 1),
+            ck = cell_coord(center.z(), 2);
   for (int k = std::max(0, ck - 1); k <= std::min(dims_[2] - 1, ck + 1); ++k)
     for (int j = std::max(0, cj - 1); j <= std::min(dims_[1] - 1, cj + 1); ++j)
       for (int i = std::max(0, ci - 1); i <= std::min(dims_[0] - 1, ci + 1); ++i)

@@ -11,7 +11,8 @@ namespace polydem {
 namespace fs = std::filesystem;
 
 std::string resolve_input_path(const std::string& name, const std::string& folder,
-                               const SourceLoc& loc, const std::string& key, const std::string& what) {
+                               const SourceLoc& loc, const std::string& key,
+                               const std::string& what) {
   const fs::path p(name);
   const fs::path resolved = p.is_absolute() ? p : (fs::path(folder) / p).lexically_normal();
   std::ifstream in(resolved);
@@ -22,24 +23,25 @@ std::string resolve_input_path(const std::string& name, const std::string& folde
   return resolved.string();
 }
 
-std::string resolve_input_file(const YamlMap& map, const std::string& key, const std::string& folder,
-                               const std::string& what) {
+std::string resolve_input_file(const YamlMap& map, const std::string& key,
+                               const std::string& folder, const std::string& what) {
   map.require(key, key + ": file.ext");
   return resolve_input_path(map.scalar(key), folder, map.loc(key), key, what);
 }
 
 double check_positive(const YamlMap& map, const std::string& key, double value, bool zero_ok) {
   if (zero_ok ? value < 0.0 : !(value > 0.0))
-    map.fail(key, std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + ", got " + map.scalar(key));
+    map.fail(key,
+             std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + ", got " + map.scalar(key));
   return value;
 }
 
 void require_sequence(const YAML::Node& node, const std::string& file, int line,
                       const std::string& key, const std::string& example) {
   if (!node.IsNull() && !node.IsSequence())
-    throw InputError(input_message(file, line_of(node, line), key,
-                                   "expected a list of items, each starting with '- ' (e.g. " +
-                                       example + ")"));
+    throw InputError(
+        input_message(file, line_of(node, line), key,
+                      "expected a list of items, each starting with '- ' (e.g. " + example + ")"));
 }
 
 namespace {
@@ -48,7 +50,8 @@ namespace {
 std::string tab_hint(const std::string& text, int line) {
   std::istringstream lines(text);
   std::string l;
-  for (int i = 0; i < line && std::getline(lines, l); ++i) {}
+  for (int i = 0; i < line && std::getline(lines, l); ++i) {
+  }
   return l.find('\t') != std::string::npos ? " (YAML does not allow tabs: indent with spaces)" : "";
 }
 
@@ -64,14 +67,16 @@ YAML::Node load_yaml(const std::string& path) {
   try {
     return YAML::Load(text.str());
   } catch (const YAML::ParserException& e) {
-    throw InputError(input_message(path, e.mark.line + 1, "",
-                                   "YAML syntax error: " + e.msg + tab_hint(text.str(), e.mark.line + 1)));
+    throw InputError(
+        input_message(path, e.mark.line + 1, "",
+                      "YAML syntax error: " + e.msg + tab_hint(text.str(), e.mark.line + 1)));
   }
 }
 
 SimulationSettings read_simulation(const YamlMap& root) {
   root.require("simulation", "simulation: {duration: \"1 s\", dt: auto}");
-  const YamlMap m = root.map("simulation", "simulation", {"duration", "dt", "threads", "skin", "seed"});
+  const YamlMap m =
+      root.map("simulation", "simulation", {"duration", "dt", "threads", "skin", "seed"});
   SimulationSettings s;
   s.duration = check_positive(m, "duration", m.quantity("duration", Dimension::time));
   if (m.has("dt") && m.scalar("dt") != "auto")
@@ -103,7 +108,8 @@ OutputSettings read_output(const YamlMap& root, const std::string& folder) {
   OutputSettings o;
   const fs::path dir(m.text("dir", "out"));
   o.dir = (dir.is_absolute() ? dir : (fs::path(folder) / dir).lexically_normal()).string();
-  for (auto [key, field] : {std::pair{"vtk_every", &o.vtk_every}, {"csv_every", &o.csv_every},
+  for (auto [key, field] : {std::pair{"vtk_every", &o.vtk_every},
+                            {"csv_every", &o.csv_every},
                             {"checkpoint_every", &o.checkpoint_every}})
     if (m.has(key)) *field = check_positive(m, key, m.quantity(key, Dimension::time));
   o.contacts = m.boolean("contacts", true);

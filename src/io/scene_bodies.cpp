@@ -7,16 +7,19 @@
 namespace polydem {
 namespace {
 
-const std::vector<std::string> kBodyKeys = {"shape", "position", "orientation", "velocity",
-                                            "angular_velocity", "density", "scale", "group"};
-const std::vector<std::string> kGeneratorKeys = {"generate", "shapes", "count", "region", "scale",
-                                                 "orientation", "velocity", "density", "group"};
+const std::vector<std::string> kBodyKeys = {
+    "shape",   "position", "orientation", "velocity", "angular_velocity",
+    "density", "scale",    "group"};
+const std::vector<std::string> kGeneratorKeys = {"generate", "shapes",  "count",
+                                                 "region",   "scale",   "orientation",
+                                                 "velocity", "density", "group"};
 
 BodySpec read_body(const YAML::Node& item, const std::string& file, int line) {
   for (const char* key : {"shapes", "count", "region"})
     if (item[key])
-      throw InputError(input_message(file, line_of(item[key], line), key,
-                                     "belongs to a generator: add `generate: random` (or lattice)"));
+      throw InputError(
+          input_message(file, line_of(item[key], line), key,
+                        "belongs to a generator: add `generate: random` (or lattice)"));
   const YamlMap m(item, "body", file, line, kBodyKeys);
   BodySpec b;
   m.require("shape", "shape: cube");
@@ -37,7 +40,8 @@ std::vector<std::pair<std::string, double>> read_mix(const YamlMap& m) {
   const YAML::Node node = m.node("shapes");
   if (node.IsScalar()) return {{node.Scalar(), 1.0}};
   if (!node.IsMap())
-    m.fail("shapes", "expected a shape name or a mix by number fraction {cube: 0.7, octahedron: 0.3}");
+    m.fail("shapes",
+           "expected a shape name or a mix by number fraction {cube: 0.7, octahedron: 0.3}");
   std::vector<std::string> names;
   for (auto it = node.begin(); it != node.end(); ++it) names.push_back(it->first.Scalar());
   const YamlMap mix(node, "shapes", m.file(), m.line("shapes"), names);
@@ -77,7 +81,8 @@ std::variant<BoxRegion, CylinderRegion> read_region(const YamlMap& g) {
   g.require("region", "region: {box: {min: [0, 0, 0], max: [0.1, 0.1, 0.1]}}");
   const YamlMap m = g.map("region", "region", {"box", "cylinder"});
   if (m.has("box") == m.has("cylinder"))
-    g.fail("region", "give exactly one of box: {min, max} or cylinder: {center, axis, radius, length}");
+    g.fail("region",
+           "give exactly one of box: {min, max} or cylinder: {center, axis, radius, length}");
   if (m.has("box")) return read_box(m);
   return read_cylinder(m);
 }
@@ -99,7 +104,8 @@ GeneratorSpec read_generator(const YAML::Node& item, const std::string& file, in
   const YamlMap m(item, "generator", file, line, kGeneratorKeys);
   GeneratorSpec g;
   const std::string kind = m.scalar("generate");
-  if (kind == "lattice") g.kind = GeneratorSpec::Kind::lattice;
+  if (kind == "lattice")
+    g.kind = GeneratorSpec::Kind::lattice;
   else if (kind != "random")
     m.fail("generate", "unknown generator '" + kind + "', expected random or lattice" +
                            did_you_mean(kind, {"random", "lattice"}));
@@ -110,7 +116,8 @@ GeneratorSpec read_generator(const YAML::Node& item, const std::string& file, in
   read_scale(m, g);
   const std::string orientation = m.text("orientation", "random");
   if (orientation != "random" && orientation != "fixed")
-    m.fail("orientation", "expected random or fixed" + did_you_mean(orientation, {"random", "fixed"}));
+    m.fail("orientation",
+           "expected random or fixed" + did_you_mean(orientation, {"random", "fixed"}));
   g.random_orientation = orientation == "random";
   g.velocity = m.vec3("velocity", Dimension::velocity, Vec3::Zero());
   g.density = check_positive(m, "density", m.quantity("density", Dimension::density, g.density));
@@ -126,10 +133,13 @@ void read_bodies(const YAML::Node& list, int line, Scene& scene) {
   for (const YAML::Node& item : list) {
     const int item_line = line_of(item, line);
     if (!item.IsMap())
-      throw InputError(input_message(scene.path, item_line, "bodies",
-                                     "each body is a mapping like `- shape: cube` or `- generate: random`"));
-    if (item["generate"]) scene.generators.push_back(read_generator(item, scene.path, item_line));
-    else scene.bodies.push_back(read_body(item, scene.path, item_line));
+      throw InputError(
+          input_message(scene.path, item_line, "bodies",
+                        "each body is a mapping like `- shape: cube` or `- generate: random`"));
+    if (item["generate"])
+      scene.generators.push_back(read_generator(item, scene.path, item_line));
+    else
+      scene.bodies.push_back(read_body(item, scene.path, item_line));
   }
 }
 

@@ -13,8 +13,9 @@ const std::vector<std::string> kDriverKinds = {"wall", "cylinder", "ball", "stl"
 Motion read_motion(const YamlMap& driver) {
   Motion motion;
   if (!driver.has("motion")) return motion;
-  const YamlMap m = driver.map("motion", "motion", {"velocity", "rotate", "force", "pressure",
-                                                    "remove_at", "start", "stop"});
+  const YamlMap m =
+      driver.map("motion", "motion",
+                 {"velocity", "rotate", "force", "pressure", "remove_at", "start", "stop"});
   motion.velocity = m.vec3("velocity", Dimension::velocity, Vec3::Zero());
   if (m.has("rotate")) {
     const YamlMap r = m.map("rotate", "rotate", {"axis", "center", "omega"});
@@ -29,7 +30,8 @@ Motion read_motion(const YamlMap& driver) {
   motion.force = m.optional_quantity("force", Dimension::force);
   motion.pressure = m.optional_quantity("pressure", Dimension::pressure);
   if (m.has("remove_at"))
-    motion.remove_at = check_positive(m, "remove_at", m.quantity("remove_at", Dimension::time), true);
+    motion.remove_at =
+        check_positive(m, "remove_at", m.quantity("remove_at", Dimension::time), true);
   motion.start = check_positive(m, "start", m.quantity("start", Dimension::time, 0.0), true);
   motion.stop = m.optional_quantity("stop", Dimension::time);
   if (motion.stop && *motion.stop <= motion.start) m.fail("stop", "must be later than start");
@@ -46,7 +48,8 @@ void read_cylinder(const YamlMap& m, DriverSpec& d) {
   d.center = m.vec3("center", Dimension::length);
   d.axis = m.direction("axis", Vec3::UnitZ());
   d.radius = check_positive(m, "radius", m.quantity("radius", Dimension::length));
-  if (m.has("length")) d.length = check_positive(m, "length", m.quantity("length", Dimension::length));
+  if (m.has("length"))
+    d.length = check_positive(m, "length", m.quantity("length", Dimension::length));
   d.inside = m.boolean("inside", true);
 }
 
@@ -64,11 +67,14 @@ void read_stl(const YamlMap& m, DriverSpec& d, const std::string& folder) {
 
 std::vector<std::string> keys_of(DriverSpec::Kind kind) {
   switch (kind) {
-    case DriverSpec::Kind::wall: return {"name", "point", "normal", "motion"};
+    case DriverSpec::Kind::wall:
+      return {"name", "point", "normal", "motion"};
     case DriverSpec::Kind::cylinder:
       return {"name", "center", "axis", "radius", "length", "inside", "motion"};
-    case DriverSpec::Kind::ball: return {"name", "center", "radius", "motion"};
-    case DriverSpec::Kind::stl: return {"name", "file", "scale", "translation", "rotation", "motion"};
+    case DriverSpec::Kind::ball:
+      return {"name", "center", "radius", "motion"};
+    case DriverSpec::Kind::stl:
+      return {"name", "file", "scale", "translation", "rotation", "motion"};
   }
   return {};
 }
@@ -81,10 +87,18 @@ DriverSpec read_driver(const YAML::Node& item, std::size_t index, const Scene& s
   const YamlMap m(body, kind_name, scene.path, line_of(item, line), keys_of(d.kind));
   d.name = m.text("name", kind_name + "_" + std::to_string(index + 1));
   switch (d.kind) {
-    case DriverSpec::Kind::wall: read_wall(m, d); break;
-    case DriverSpec::Kind::cylinder: read_cylinder(m, d); break;
-    case DriverSpec::Kind::ball: read_ball(m, d); break;
-    case DriverSpec::Kind::stl: read_stl(m, d, scene.folder); break;
+    case DriverSpec::Kind::wall:
+      read_wall(m, d);
+      break;
+    case DriverSpec::Kind::cylinder:
+      read_cylinder(m, d);
+      break;
+    case DriverSpec::Kind::ball:
+      read_ball(m, d);
+      break;
+    case DriverSpec::Kind::stl:
+      read_stl(m, d, scene.folder);
+      break;
   }
   d.motion = read_motion(m);
   d.loc = {scene.path, m.line()};
@@ -94,7 +108,8 @@ DriverSpec read_driver(const YAML::Node& item, std::size_t index, const Scene& s
 }  // namespace
 
 void read_drivers(const YAML::Node& list, int line, Scene& scene) {
-  require_sequence(list, scene.path, line, "drivers", "- wall: {point: [0, 0, 0], normal: [0, 0, 1]}");
+  require_sequence(list, scene.path, line, "drivers",
+                   "- wall: {point: [0, 0, 0], normal: [0, 0, 1]}");
   std::map<std::string, int> name_lines;
   for (const YAML::Node& item : list) {
     DriverSpec d = read_driver(item, scene.drivers.size(), scene, line);

@@ -7,10 +7,14 @@
 namespace polydem {
 namespace {
 
-const std::vector<std::string> kForceNames = {
-    "gravity_force", "contact_sphere", "contact_polyhedron", "contact_sphere_with_cohesion",
-    "contact_polyhedron_with_cohesion", "quadratic_force", "sphere_fluid_friction"};
-const std::vector<std::string> kConfigKeys = {"kn", "kt", "kr", "mur", "mu",
+const std::vector<std::string> kForceNames = {"gravity_force",
+                                              "contact_sphere",
+                                              "contact_polyhedron",
+                                              "contact_sphere_with_cohesion",
+                                              "contact_polyhedron_with_cohesion",
+                                              "quadratic_force",
+                                              "sphere_fluid_friction"};
+const std::vector<std::string> kConfigKeys = {"kn", "kt",        "kr", "mur",  "mu",
                                               "en", "damp_rate", "fc", "dncut"};
 
 void read_damping(const YamlMap& m, ContactParams& p) {
@@ -36,7 +40,8 @@ void read_cohesion(const YamlMap& m, ContactParams& p, const std::string& op, bo
            "cohesion needs the operator " + op + "_with_cohesion instead of " + op);
   if (cohesion) m.require("fc", "fc: 0.05");
   if (p.fc > 0.0 && !(p.dncut > 0.0))
-    m.fail(m.has("dncut") ? "dncut" : "fc", "fc > 0 needs a cohesion band dncut > 0 (e.g. dncut: \"0.1 mm\")");
+    m.fail(m.has("dncut") ? "dncut" : "fc",
+           "fc > 0 needs a cohesion band dncut > 0 (e.g. dncut: \"0.1 mm\")");
 }
 
 ContactParams read_params(const YamlMap& op_map, const std::string& key, const std::string& op,
@@ -63,7 +68,8 @@ ContactOperator read_contact(const YamlMap& m, const std::string& name) {
   m.require("config", "config: {kn: 1.0e5, kt: 1.0e5, mu: 0.5, en: 0.5}");
   c.config = read_params(m, "config", base, c.cohesion);
   c.has_config_driver = m.has("config_driver");
-  c.config_driver = c.has_config_driver ? read_params(m, "config_driver", base, c.cohesion) : c.config;
+  c.config_driver =
+      c.has_config_driver ? read_params(m, "config_driver", base, c.cohesion) : c.config;
   c.loc = {m.file(), m.line()};
   return c;
 }

@@ -11,15 +11,17 @@ namespace polydem {
 
 // A relative path in the scene, resolved against the scene's folder; InputError at the key
 // when the file cannot be opened.
-std::string resolve_input_file(const YamlMap& map, const std::string& key, const std::string& folder,
-                               const std::string& what);
+std::string resolve_input_file(const YamlMap& map, const std::string& key,
+                               const std::string& folder, const std::string& what);
 
 // Resolves `name` the same way for a value that is not a key of a mapping (a list item).
 std::string resolve_input_path(const std::string& name, const std::string& folder,
-                               const SourceLoc& loc, const std::string& key, const std::string& what);
+                               const SourceLoc& loc, const std::string& key,
+                               const std::string& what);
 
 // InputError at `key` unless value > 0 (or >= 0 when `zero_ok`); returns the value.
-double check_positive(const YamlMap& map, const std::string& key, double value, bool zero_ok = false);
+double check_positive(const YamlMap& map, const std::string& key, double value,
+                      bool zero_ok = false);
 
 void read_bodies(const YAML::Node& list, int line, Scene& scene);
 void read_drivers(const YAML::Node& list, int line, Scene& scene);

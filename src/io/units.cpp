@@ -26,14 +26,19 @@ struct Unit {
 
 constexpr Dims kForce{1, 1, -2, 0};
 constexpr std::array kUnits = {
-    Unit{"m", 1.0, {1, 0, 0, 0}, true},      Unit{"g", 1e-3, {0, 1, 0, 0}, true},
-    Unit{"s", 1.0, {0, 0, 1, 0}, true},      Unit{"min", 60.0, {0, 0, 1, 0}, false},
-    Unit{"h", 3600.0, {0, 0, 1, 0}, false},  Unit{"rad", 1.0, {0, 0, 0, 1}, true},
+    Unit{"m", 1.0, {1, 0, 0, 0}, true},
+    Unit{"g", 1e-3, {0, 1, 0, 0}, true},
+    Unit{"s", 1.0, {0, 0, 1, 0}, true},
+    Unit{"min", 60.0, {0, 0, 1, 0}, false},
+    Unit{"h", 3600.0, {0, 0, 1, 0}, false},
+    Unit{"rad", 1.0, {0, 0, 0, 1}, true},
     Unit{"deg", kPi / 180.0, {0, 0, 0, 1}, false},
     Unit{"\u00b0", kPi / 180.0, {0, 0, 0, 1}, false},  // the degree sign
     Unit{"rpm", 2.0 * kPi / 60.0, {0, 0, -1, 1}, false},
-    Unit{"N", 1.0, kForce, true},            Unit{"J", 1.0, {2, 1, -2, 0}, true},
-    Unit{"Pa", 1.0, {-1, 1, -2, 0}, true},   Unit{"bar", 1e5, {-1, 1, -2, 0}, false},
+    Unit{"N", 1.0, kForce, true},
+    Unit{"J", 1.0, {2, 1, -2, 0}, true},
+    Unit{"Pa", 1.0, {-1, 1, -2, 0}, true},
+    Unit{"bar", 1e5, {-1, 1, -2, 0}, false},
     Unit{"%", 0.01, {0, 0, 0, 0}, false},
 };
 
@@ -46,30 +51,35 @@ constexpr std::array kPrefixes = {
     Prefix{"c", 1e-2}, Prefix{"k", 1e3},  Prefix{"M", 1e6},       Prefix{"G", 1e9},
 };
 
-Dims dims_of(Dimension dim) {
-  switch (dim) {
-    case Dimension::dimensionless: return {0, 0, 0, 0};
-    case Dimension::length: return {1, 0, 0, 0};
-    case Dimension::time: return {0, 0, 1, 0};
-    case Dimension::velocity: return {1, 0, -1, 0};
-    case Dimension::acceleration: return {1, 0, -2, 0};
-    case Dimension::angle: return {0, 0, 0, 1};
-    case Dimension::angular_velocity: return {0, 0, -1, 1};
-    case Dimension::density: return {-3, 1, 0, 0};
-    case Dimension::mass: return {0, 1, 0, 0};
-    case Dimension::force: return kForce;
-    case Dimension::stiffness: return {0, 1, -2, 0};
-    case Dimension::pressure: return {-1, 1, -2, 0};
-    case Dimension::rolling_stiffness: return {2, 1, -2, -1};
-  }
-  return {};
-}
+struct DimensionInfo {
+  Dimension dim;
+  Dims dims;
+  const char* name;     // for messages: "expected a length"
+  const char* example;  // a quantity string of this dimension
+};
 
-constexpr std::array kAllDimensions = {
-    Dimension::dimensionless, Dimension::length, Dimension::time, Dimension::velocity,
-    Dimension::acceleration, Dimension::angle, Dimension::angular_velocity,
-    Dimension::density, Dimension::mass, Dimension::force, Dimension::stiffness,
-    Dimension::pressure, Dimension::rolling_stiffness};
+constexpr std::array kDimensions = {
+    DimensionInfo{Dimension::dimensionless, {0, 0, 0, 0}, "a plain number", "0.5"},
+    DimensionInfo{Dimension::length, {1, 0, 0, 0}, "a length", "5 mm"},
+    DimensionInfo{Dimension::time, {0, 0, 1, 0}, "a time", "2 ms"},
+    DimensionInfo{Dimension::velocity, {1, 0, -1, 0}, "a velocity", "2 m/s"},
+    DimensionInfo{Dimension::acceleration, {1, 0, -2, 0}, "an acceleration", "9.807 m/s^2"},
+    DimensionInfo{Dimension::angle, {0, 0, 0, 1}, "an angle", "30 deg"},
+    DimensionInfo{Dimension::angular_velocity, {0, 0, -1, 1}, "an angular velocity", "30 rpm"},
+    DimensionInfo{Dimension::density, {-3, 1, 0, 0}, "a density", "2700 kg/m^3"},
+    DimensionInfo{Dimension::mass, {0, 1, 0, 0}, "a mass", "0.1 kg"},
+    DimensionInfo{Dimension::force, kForce, "a force", "50 N"},
+    DimensionInfo{Dimension::stiffness, {0, 1, -2, 0}, "a stiffness", "1e5 N/m"},
+    DimensionInfo{Dimension::pressure, {-1, 1, -2, 0}, "a pressure", "10 kPa"},
+    DimensionInfo{
+        Dimension::rolling_stiffness, {2, 1, -2, -1}, "a rolling stiffness", "0.01 N m/rad"},
+};
+
+const DimensionInfo& info(Dimension dim) {
+  for (const DimensionInfo& d : kDimensions)
+    if (d.dim == dim) return d;
+  return kDimensions[0];
+}
 
 struct Scaled {
   double factor = 1.0;
@@ -110,36 +120,52 @@ struct UnitParse {
   bool bare = true;  // no unit at all: the number is SI
 };
 
-// Parses the unit part "kg/m^3", "N m/rad": factors joined by spaces or '*', '/' divides
-// the next factor only.
+// Length of the separator at s[i]: a space, '*' or the middle dot of "N\u00b7m"; 0 if none.
+std::size_t separator_length(const std::string& s, std::size_t i) {
+  if (std::isspace(static_cast<unsigned char>(s[i])) || s[i] == '*') return 1;
+  return s.compare(i, 2, "\u00b7") == 0 ? 2 : 0;
+}
+
+void multiply(Scaled& total, const Scaled& unit, int power) {
+  total.factor *= std::pow(unit.factor, power);
+  total.dims.m += power * unit.dims.m;
+  total.dims.kg += power * unit.dims.kg;
+  total.dims.s += power * unit.dims.s;
+  total.dims.rad += power * unit.dims.rad;
+}
+
+// Parses the unit part "kg/m^3", "N m/rad", "1/s": factors joined by separators; '/'
+// divides the next factor only.
 UnitParse parse_units(const std::string& s) {
   UnitParse out;
   std::size_t i = 0;
-  bool divide = false;
+  int sign = 1;  // -1 after '/'
   while (i < s.size()) {
     const unsigned char c = static_cast<unsigned char>(s[i]);
-    if (std::isspace(c) || c == '*') { ++i; continue; }
-    if (s.compare(i, 2, "\u00b7") == 0) { i += 2; continue; }  // middle dot, as in "N\u00b7m"
-
-    if (c == '/') { divide = true; ++i; continue; }
-    if (c == '1' && (i + 1 == s.size() || s[i + 1] == '/')) { out.bare = false; ++i; continue; }  // "1/s"
-
-    if (!is_unit_char(c)) { out.syntax_error = true; return out; }
-    const std::size_t start = i;
-    while (i < s.size() && is_unit_char(static_cast<unsigned char>(s[i]))) ++i;
-    const std::string token = s.substr(start, i - start);
-    out.bare = false;
-    const std::optional<int> power = read_power(s, i);
-    const std::optional<Scaled> unit = lookup_unit(token);
-    if (!power) { out.syntax_error = true; return out; }
-    if (!unit) { out.bad_token = token; return out; }
-    const int p = divide ? -*power : *power;
-    out.value.factor *= std::pow(unit->factor, p);
-    out.value.dims.m += p * unit->dims.m;
-    out.value.dims.kg += p * unit->dims.kg;
-    out.value.dims.s += p * unit->dims.s;
-    out.value.dims.rad += p * unit->dims.rad;
-    divide = false;
+    if (const std::size_t n = separator_length(s, i)) {
+      i += n;
+    } else if (c == '/') {
+      sign = -1;
+      ++i;
+    } else if (c == '1' && (i + 1 == s.size() || s[i + 1] == '/')) {
+      out.bare = false;  // the "1" of "1/s"
+      ++i;
+    } else if (!is_unit_char(c)) {
+      out.syntax_error = true;
+      return out;
+    } else {
+      const std::size_t start = i;
+      while (i < s.size() && is_unit_char(static_cast<unsigned char>(s[i]))) ++i;
+      const std::string token = s.substr(start, i - start);
+      out.bare = false;
+      const std::optional<int> power = read_power(s, i);
+      const std::optional<Scaled> unit = lookup_unit(token);
+      out.syntax_error = !power;
+      if (!unit) out.bad_token = token;
+      if (!power || !unit) return out;
+      multiply(out.value, *unit, sign * *power);
+      sign = 1;
+    }
   }
   return out;
 }
@@ -153,10 +179,11 @@ bool compatible(const Dims& given, const Dims& expected) {
 }
 
 std::string describe(const Dims& d) {
-  for (Dimension dim : kAllDimensions)
-    if (dims_of(dim) == d) return dimension_name(dim);
+  for (const DimensionInfo& known : kDimensions)
+    if (known.dims == d) return known.name;
   std::string s;
-  const std::pair<const char*, int> parts[] = {{"m", d.m}, {"kg", d.kg}, {"s", d.s}, {"rad", d.rad}};
+  const std::pair<const char*, int> parts[] = {
+      {"m", d.m}, {"kg", d.kg}, {"s", d.s}, {"rad", d.rad}};
   for (const auto& [name, power] : parts) {
     if (power == 0) continue;
     if (!s.empty()) s += " ";
@@ -168,43 +195,9 @@ std::string describe(const Dims& d) {
 
 }  // namespace
 
-std::string dimension_name(Dimension dim) {
-  switch (dim) {
-    case Dimension::dimensionless: return "a plain number";
-    case Dimension::length: return "a length";
-    case Dimension::time: return "a time";
-    case Dimension::velocity: return "a velocity";
-    case Dimension::acceleration: return "an acceleration";
-    case Dimension::angle: return "an angle";
-    case Dimension::angular_velocity: return "an angular velocity";
-    case Dimension::density: return "a density";
-    case Dimension::mass: return "a mass";
-    case Dimension::force: return "a force";
-    case Dimension::stiffness: return "a stiffness";
-    case Dimension::pressure: return "a pressure";
-    case Dimension::rolling_stiffness: return "a rolling stiffness";
-  }
-  return "a quantity";
-}
+std::string dimension_name(Dimension dim) { return info(dim).name; }
 
-std::string dimension_example(Dimension dim) {
-  switch (dim) {
-    case Dimension::dimensionless: return "0.5";
-    case Dimension::length: return "5 mm";
-    case Dimension::time: return "2 ms";
-    case Dimension::velocity: return "2 m/s";
-    case Dimension::acceleration: return "9.807 m/s^2";
-    case Dimension::angle: return "30 deg";
-    case Dimension::angular_velocity: return "30 rpm";
-    case Dimension::density: return "2700 kg/m^3";
-    case Dimension::mass: return "0.1 kg";
-    case Dimension::force: return "50 N";
-    case Dimension::stiffness: return "1e5 N/m";
-    case Dimension::pressure: return "10 kPa";
-    case Dimension::rolling_stiffness: return "0.01 N m/rad";
-  }
-  return "1";
-}
+std::string dimension_example(Dimension dim) { return info(dim).example; }
 
 double parse_quantity(const std::string& text, Dimension dim, const SourceLoc& loc,
                       const std::string& key) {
@@ -222,12 +215,11 @@ double parse_quantity(const std::string& text, Dimension dim, const SourceLoc& l
     fail("expected a number or a quantity string like \"" + dimension_example(dim) + "\" (" +
          dimension_name(dim) + "), got \"" + text + "\"");
   const UnitParse units = parse_units(std::string(ptr, text.data() + text.size()));
-  if (units.syntax_error)
-    fail("cannot read the unit in \"" + text + "\"; expected " + expected);
+  if (units.syntax_error) fail("cannot read the unit in \"" + text + "\"; expected " + expected);
   if (!units.bad_token.empty())
     fail("unknown unit '" + units.bad_token + "' in \"" + text + "\"; expected " + expected);
   if (units.bare) return number;
-  if (!compatible(units.value.dims, dims_of(dim)))
+  if (!compatible(units.value.dims, info(dim).dims))
     fail("\"" + text + "\" is " + describe(units.value.dims) + ", expected " + expected);
   return number * units.value.factor;
 }

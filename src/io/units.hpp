@@ -7,8 +7,19 @@
 namespace polydem {
 
 enum class Dimension {
-  dimensionless, length, time, velocity, acceleration, angle, angular_velocity,
-  density, mass, force, stiffness, pressure, rolling_stiffness
+  dimensionless,
+  length,
+  time,
+  velocity,
+  acceleration,
+  angle,
+  angular_velocity,
+  density,
+  mass,
+  force,
+  stiffness,
+  pressure,
+  rolling_stiffness
 };
 
 // "a length", "an angular velocity", ... for error messages.

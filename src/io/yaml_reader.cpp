@@ -28,7 +28,10 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   int best_distance = 0;
   for (const std::string& name : names) {
     const int d = edit_distance(word, name);
-    if (best.empty() || d < best_distance) { best = name; best_distance = d; }
+    if (best.empty() || d < best_distance) {
+      best = name;
+      best_distance = d;
+    }
   }
   // A third of the word may be wrong (typos, a swapped pair), else the hint misleads.
   const int limit = std::max(2, static_cast<int>(word.size()) / 3);
@@ -44,16 +47,20 @@ int line_of(const YAML::Node& node, int fallback) {
 
 YamlMap::YamlMap(const YAML::Node& node, std::string block, std::string file, int line,
                  std::vector<std::string> allowed)
-    : node_(node), block_(std::move(block)), file_(std::move(file)), line_(line > 0 ? line : line_of(node)) {
+    : node_(node),
+      block_(std::move(block)),
+      file_(std::move(file)),
+      line_(line > 0 ? line : line_of(node)) {
   if (!node.IsDefined() || node.IsNull()) return;
   if (!node.IsMap())
-    throw InputError(input_message(file_, line_, block_, "expected a mapping of keys, like {key: value}"));
+    throw InputError(
+        input_message(file_, line_, block_, "expected a mapping of keys, like {key: value}"));
   for (auto it = node.begin(); it != node.end(); ++it) {
     const std::string key = it->first.Scalar();
     const int key_line = line_of(it->first, line_);
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw InputError(input_message(file_, key_line, key,
-                                     "unknown key in '" + block_ + "'" + did_you_mean(key, allowed)));
+      throw InputError(input_message(
+          file_, key_line, key, "unknown key in '" + block_ + "'" + did_you_mean(key, allowed)));
     if (!key_lines_.emplace(key, key_line).second)
       throw InputError(input_message(file_, key_line, key, "given twice in '" + block_ + "'"));
   }
@@ -188,8 +195,8 @@ std::pair<std::string, YAML::Node> single_entry(const YAML::Node& item, const st
                                                 const std::vector<std::string>& names) {
   const int line = line_of(item);
   if (!item.IsMap() || item.size() != 1)
-    throw InputError(input_message(file, line, what,
-                                   "each item must be one `name: {...}`, like `- " + names[0] + ": {...}`"));
+    throw InputError(input_message(
+        file, line, what, "each item must be one `name: {...}`, like `- " + names[0] + ": {...}`"));
   const auto it = item.begin();
   const std::string name = it->first.Scalar();
   if (std::find(names.begin(), names.end(), name) == names.end())

@@ -45,7 +45,7 @@ class YamlMap {
   double quantity(const std::string& key, Dimension dim, double fallback) const;
   std::optional<double> optional_quantity(const std::string& key, Dimension dim) const;
   Vec3 vec3(const std::string& key, Dimension dim, const Vec3& fallback) const;
-  Vec3 vec3(const std::string& key, Dimension dim) const;  // required
+  Vec3 vec3(const std::string& key, Dimension dim) const;              // required
   Vec3 direction(const std::string& key, const Vec3& fallback) const;  // normalized, non-zero
   long long integer(const std::string& key, long long fallback, long long min) const;
   std::uint64_t unsigned64(const std::string& key, std::uint64_t fallback) const;

@@ -11,8 +11,8 @@ struct BodyPair {
 
 // True when two bounding spheres are within `skin` (m) of touching: |xa - xb| < ra + rb + skin.
 // Symmetric bit for bit in (a, b), so the cell search and the brute-force reference agree exactly.
-inline bool within_reach(double ax, double ay, double az, double ra, double bx, double by, double bz,
-                         double rb, double skin) {
+inline bool within_reach(double ax, double ay, double az, double ra, double bx, double by,
+                         double bz, double rb, double skin) {
   const double dx = ax - bx;
   const double dy = ay - by;
   const double dz = az - bz;

@@ -46,20 +46,21 @@ class CellList {
   void merge_pairs(std::size_t n, std::vector<BodyPair>& out);
 
   bool dense = true;
-  std::int64_t dims[3] = {0, 0, 0};        // cells per axis of the dense grid
+  std::int64_t dims[3] = {0, 0, 0};  // cells per axis of the dense grid
   std::size_t cell_count = 0;
   std::vector<std::uint32_t> body_cell_id;
-  std::vector<std::uint32_t> cell_start;   // CSR: bodies of cell c are [cell_start[c], cell_start[c+1])
-  std::vector<Sphere> spheres;             // sorted by cell
-  std::vector<std::uint32_t> sorted_id;    // body index of spheres[k]
+  // CSR: the bodies of cell c are spheres[cell_start[c] .. cell_start[c + 1]).
+  std::vector<std::uint32_t> cell_start;
+  std::vector<Sphere> spheres;           // sorted by cell
+  std::vector<std::uint32_t> sorted_id;  // body index of spheres[k]
   // Hashed mode only.
   CellTable table;
-  std::vector<CellCoord> body_cell;        // cell of each body
-  std::vector<CellCoord> cell_coord;       // coordinates of each occupied cell
-  std::vector<std::uint32_t> forward;      // kForward neighbour cell ids per cell, or kNoCell
+  std::vector<CellCoord> body_cell;    // cell of each body
+  std::vector<CellCoord> cell_coord;   // coordinates of each occupied cell
+  std::vector<std::uint32_t> forward;  // kForward neighbour cell ids per cell, or kNoCell
   // Output assembly.
   std::vector<std::vector<BodyPair>> thread_pairs;
-  std::vector<std::uint32_t> row_start;    // CSR of the output by first body
+  std::vector<std::uint32_t> row_start;  // CSR of the output by first body
   std::vector<std::uint32_t> row_fill;
   std::size_t candidate_count = 0;
 };

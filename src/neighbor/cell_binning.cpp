@@ -1,6 +1,4 @@
 // Sorting bodies into cells: a dense grid when the bounding box is compact, hashed cells when not.
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -136,7 +134,8 @@ void CellList::forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) cons
     return;
   }
   const auto cell = static_cast<std::int64_t>(c);
-  const std::int64_t at[3] = {cell % dims[0], (cell / dims[0]) % dims[1], cell / (dims[0] * dims[1])};
+  const std::int64_t at[3] = {cell % dims[0], (cell / dims[0]) % dims[1],
+                              cell / (dims[0] * dims[1])};
   for (int k = 0; k < kForward; ++k) {
     std::int64_t b[3];
     bool inside = true;

@@ -15,7 +15,11 @@ namespace {
 
 using cells::kMinParallel;
 
-// m, side of a cell: two bodies within reach are at most 2 max(R) + skin apart.
+// Cells are this much wider than the reach: cell coordinates (up to the 2^40 clamp) are rounded
+// by at most 2^-12 cells each, so a pair within reach can never land two cells apart.
+constexpr double kCellMargin = 1.0 + 1.0 / 1024.0;
+
+// m, side of a cell: two bodies within reach are less than 2 max(R) + skin apart.
 double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin) {
   if (centers.size() != radii.size()) {
     throw std::invalid_argument("build_pairs: " + std::to_string(centers.size()) + " centres but " +
@@ -36,7 +40,7 @@ double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& ra
     }
     max_r = std::max(max_r, radii[i]);
   }
-  return 2.0 * max_r + skin;
+  return (2.0 * max_r + skin) * kCellMargin;
 }
 
 }  // namespace
@@ -95,7 +99,8 @@ void CellList::collect_pairs(double skin) {
   candidate_count = tests;
 }
 
-// Counting sort by first body, then each row by second body: independent of which thread found what.
+// Counting sort by first body, then each row by second body: independent of which thread found
+// what.
 void CellList::merge_pairs(std::size_t n, std::vector<BodyPair>& out) {
   row_start.assign(n + 1, 0);
   std::size_t total = 0;

@@ -46,7 +46,7 @@ void AppendedData::write_file(const std::string& path, std::string_view type, st
   f.close();
 }
 
-void CellTopology::add_cell(const std::vector<int>& indices, std::int64_t base) {
+void CellTopology::add_cell(std::span<const int> indices, std::int64_t base) {
   for (int k : indices) connectivity.push_back(base + k);
   offsets.push_back(std::int64_t(connectivity.size()));
 }

@@ -3,6 +3,7 @@
 // block (header_type UInt64, machine byte order), each prefixed by its byte count.
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,7 +52,7 @@ class AppendedData {
 struct CellTopology {
   std::vector<std::int64_t> connectivity;
   std::vector<std::int64_t> offsets;
-  void add_cell(const std::vector<int>& indices, std::int64_t base);
+  void add_cell(std::span<const int> indices, std::int64_t base);
 };
 
 // The <connectivity/> and <offsets/> DataArray elements of `cells`, consumed.

@@ -66,9 +66,15 @@ void write_contacts_vtp(const std::string& path, const std::vector<ContactOut>& 
   std::vector<std::int64_t> i, j;
   std::vector<std::int32_t> type;
   CellTopology cells;
+  constexpr int kLine[] = {0, 1};
   points.reserve(2 * n);
+  for (auto* v : {&force, &point}) v->reserve(n);
+  for (auto* v : {&fn, &ft, &overlap}) v->reserve(n);
+  for (auto* v : {&i, &j, &cells.offsets}) v->reserve(n);
+  cells.connectivity.reserve(2 * n);
+  type.reserve(n);
   for (const ContactOut& c : contacts) {
-    cells.add_cell({0, 1}, std::int64_t(points.size()));
+    cells.add_cell(kLine, std::int64_t(points.size()));
     points.push_back(c.from);
     points.push_back(c.to);
     force.push_back(c.force);

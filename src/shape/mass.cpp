@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "polydem/error.hpp"
@@ -11,11 +12,12 @@
 // along its normal), one cylindrical wedge per edge (angle = exterior dihedral angle) and one
 // spherical sector per vertex (its normal cone). Polyhedral pieces are summed tetrahedra; wedges
 // and sectors have closed forms. Sector moments over a spherical polygon P bounded by great-circle
-// arcs use Green's theorem on the sphere (n_j and n_j n_k - d_jk/3 are spherical harmonics):
+// arcs use Green's theorem on the sphere (n_j is a spherical harmonic of degree 1):
 //   solid angle      W = 2 pi - sum of face angles at the vertex (angular defect),
 //   int_P n dW       = -1/2 sum_arcs theta mu,
-//   int_P n n^T dW   = W/3 I - 1/6 sum_arcs (mu A^T + A mu^T),  A = int_arc n ds,
 // with mu the outward conormal of the arc (the unit edge direction leaving the vertex).
+// The cones tile the unit sphere, so the sectors' own r^5/5 int n n^T dW terms add up to
+// 4 pi/3 r^5/5 I whichever vertex they belong to (each cone's share need not be computed).
 // So the result is exact up to round-off (relative error ~1e-14, see tests/shape/mass_test.cpp).
 
 namespace polydem {
@@ -91,7 +93,6 @@ struct Wedge {
   Vec3 t, u, w;        // unit edge direction; first face normal; rotation direction
   double theta = 0.0;  // rad, exterior dihedral angle (2 pi for a lone segment)
   double length = 0.0; // m
-  Vec3 arc() const { return std::sin(theta) * u + (1.0 - std::cos(theta)) * w; }  // int n ds
 };
 
 Vec3 any_perpendicular(const Vec3& t) {
@@ -131,7 +132,7 @@ Moments wedge_moments(const Wedge& w, double r) {
   const double area = 0.5 * w.theta * r * r;  // m^2, cross-section
   const double L = w.length;
   const double c = std::cos(w.theta), sn = std::sin(w.theta);
-  const Vec3 e1 = w.arc();  // int_0^theta e(phi) dphi
+  const Vec3 e1 = sn * w.u + (1.0 - c) * w.w;  // int_0^theta e(phi) dphi
   const Mat3 e2 = (0.5 * w.theta + 0.25 * sn * 2.0 * c) * w.u * w.u.transpose() +
                   (0.5 * w.theta - 0.25 * sn * 2.0 * c) * w.w * w.w.transpose() +
                   0.5 * sn * sn * (w.u * w.w.transpose() + w.w * w.u.transpose());
@@ -162,18 +163,11 @@ std::vector<double> normal_cone_angles(const Shape& s) {
 Moments vertex_sectors(const Shape& s, const std::vector<Wedge>& wedges) {
   const size_t nv = s.vertices.size();
   const std::vector<double> omega = normal_cone_angles(s);
-  std::vector<Vec3> mean(nv, Vec3::Zero());      // int n dW over the cone
-  std::vector<Mat3> second(nv, Mat3::Zero());    // int n n^T dW over the cone
-  for (size_t v = 0; v < nv; ++v) second[v] = omega[v] / 3.0 * Mat3::Identity();
+  std::vector<Vec3> mean(nv, Vec3::Zero());  // int n dW over each cone
   for (size_t e = 0; e < s.edges.size(); ++e) {
-    const Wedge& w = wedges[e];
-    const Vec3 arc = w.arc();
-    for (int end = 0; end < 2; ++end) {
-      const int v = s.edges[e][end];
-      const Vec3 mu = end == 0 ? w.t : Vec3(-w.t);  // outward conormal: along the edge, leaving v
-      mean[v] -= 0.5 * w.theta * mu;
-      second[v] -= (mu * arc.transpose() + arc * mu.transpose()) / 6.0;
-    }
+    const Vec3 mu = wedges[e].t;  // outward conormal at the first end; reversed at the second
+    mean[s.edges[e][0]] -= 0.5 * wedges[e].theta * mu;
+    mean[s.edges[e][1]] += 0.5 * wedges[e].theta * mu;
   }
   const double r = s.radius;
   Moments m;
@@ -181,9 +175,9 @@ Moments vertex_sectors(const Shape& s, const std::vector<Wedge>& wedges) {
     Moments local;
     local.volume = omega[v] * r * r * r / 3.0;
     local.first = std::pow(r, 4) / 4.0 * mean[v];
-    local.second = std::pow(r, 5) / 5.0 * second[v];
     m.add(shifted(local, s.vertices[v]));
   }
+  m.second += std::pow(r, 5) / 5.0 * (4.0 * kPi / 3.0) * Mat3::Identity();
   return m;
 }
 
@@ -213,6 +207,27 @@ void check_radius(const Shape& s) {
                      " must be >= 0 (the Minkowski radius, m)");
 }
 
+// Columns: principal axes, moments ascending, right-handed. A tensor already diagonal to
+// round-off keeps the input axes (a cube or box stays aligned with the frame it was given in).
+Mat3 principal_axes(const Mat3& inertia, Vec3& moments) {
+  const Mat3 off = inertia - Mat3(inertia.diagonal().asDiagonal());
+  Mat3 axes;
+  if (off.norm() <= 1e-12 * inertia.trace()) {
+    std::array<int, 3> order{0, 1, 2};
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return inertia(a, a) < inertia(b, b); });
+    for (int k = 0; k < 3; ++k) {
+      axes.col(k) = Vec3::Unit(order[k]);
+      moments[k] = inertia(order[k], order[k]);
+    }
+  } else {
+    Eigen::SelfAdjointEigenSolver<Mat3> solver(inertia);
+    axes = solver.eigenvectors();
+    moments = solver.eigenvalues();
+  }
+  if (axes.determinant() < 0.0) axes.col(2) = -axes.col(2);
+  return axes;
+}
+
 }  // namespace
 
 void compute_mass_properties(Shape& s) {
@@ -229,13 +244,12 @@ void compute_mass_properties(Shape& s) {
   const Vec3 center = m.first / m.volume;
   const Mat3 spread = m.second / m.volume - center * center.transpose();  // m^2, about the centre
   const Mat3 inertia = spread.trace() * Mat3::Identity() - spread;       // m^2, I / mass
-  Eigen::SelfAdjointEigenSolver<Mat3> solver(inertia);
-  Mat3 axes = solver.eigenvectors();  // columns: principal axes, moments ascending
-  if (axes.determinant() < 0.0) axes.col(2) = -axes.col(2);
+  Vec3 moments;
+  const Mat3 axes = principal_axes(inertia, moments);
   for (Vec3& v : s.vertices) v = axes.transpose() * (v - center);
   for (Vec3& n : s.face_normals) n = axes.transpose() * n;
   s.volume = m.volume;
-  s.inertia_per_mass = solver.eigenvalues();
+  s.inertia_per_mass = moments;
   s.input_center = origin + center;
   s.input_rotation = Quat(axes).normalized();
   s.bounding_radius = max_vertex_norm(s) + s.radius;

@@ -18,8 +18,8 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
   TimeStepEstimate e;
   e.m_eff = m_rot;
   double limit = std::numeric_limits<double>::infinity();
-  if (bodies.size() > 1 && particle.kn > 0) limit = 2.0 * std::sqrt(0.5 * m_rot / particle.kn);
-  if (driver && driver->kn > 0) limit = std::min(limit, 2.0 * std::sqrt(m_rot / driver->kn));
+  if (bodies.size() > 1 && particle.kn > 0) limit = critical_time_step(particle.kn, 0.5 * m_rot, particle.alpha_n);
+  if (driver && driver->kn > 0) limit = std::min(limit, critical_time_step(driver->kn, m_rot, driver->alpha_n));
   e.critical = limit;
   e.chosen = given_dt ? *given_dt : kAutoFraction * limit;
   return e;

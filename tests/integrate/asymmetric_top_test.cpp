@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "integrate/integrate.hpp"
@@ -90,15 +91,18 @@ TEST_CASE("free asymmetric top: conservation over 1e6 steps and flip period", "[
   CHECK(max_de_first / e0 < 1e-5);
   // ... and does not grow: the last 10% of the run deviates no more than the first.
   CHECK(max_de_last <= 1.01 * max_de_first);
-  // Every sub-step is an exact rotation, so |L| and R L_body move by round-off only.
+  // Every sub-step is an exact rotation, so |L| and R L_body move by round-off only. The angles
+  // vary slowly, so rounding repeats its sign step after step: bound it by one ulp per step.
   INFO("max ||L| - |L0|| " << max_dl_norm << ", max |L_world - L0| " << max_dl_world);
-  CHECK(max_dl_norm < 1e-11);
-  CHECK(max_dl_world < 1e-10);
+  const double round_off = steps * std::numeric_limits<double>::epsilon() * l_world0.norm();
+  CHECK(max_dl_norm < round_off);
+  CHECK(max_dl_world < round_off);
 
   // w_2 changes sign twice per period.
   REQUIRE(crossings.size() >= 40);
   const double period = 2.0 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
   INFO("simulated period " << period << " s, analytic " << period_exact << " s");
-  // Near the separatrix T ~ ln(1/k'): an O(dt^2) = 1e-6 energy error shifts it by ~1e-3 relative.
-  CHECK(period == Approx(period_exact).epsilon(1e-3));
+  // Near the separatrix T ~ ln(1/k') with k'^2 ~ 1e-4: a 1e-6 relative energy error would move
+  // T by ~1e-3 relative; the splitting's 1e-7 bounded error keeps it far below 1e-5.
+  CHECK(period == Approx(period_exact).epsilon(1e-5));
 }

@@ -1,11 +1,13 @@
 // The cell list must find exactly the brute-force pairs, at O(N) cost, whatever the thread count.
+#include "neighbor/broad_phase.hpp"
+
 #include <omp.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
-#include "neighbor/broad_phase.hpp"
 #include "polydem/error.hpp"
 #include "scenes.hpp"
 
@@ -37,8 +39,7 @@ TEST_CASE("cell list equals brute force on clustered scenes", "[broad_phase]") {
   require_same_as_brute_force(s, 0.1);
 }
 
-TEST_CASE("a body far away neither breaks the search nor allocates a giant grid",
-          "[broad_phase]") {
+TEST_CASE("a body far away neither breaks the search nor allocates a giant grid", "[broad_phase]") {
   Scene s = test::uniform_scene(2000, 12.0, 0.2, 0.4, 13);
   s.centers.emplace_back(1e12, -3e11, 7e12);
   s.radii.push_back(0.3);
@@ -54,6 +55,33 @@ TEST_CASE("a body far away neither breaks the search nor allocates a giant grid"
   s.centers.emplace_back(-1e308, 1e308, 0.0);
   s.radii.push_back(0.3);
   require_same_as_brute_force(s, 0.1);
+}
+
+TEST_CASE("rounding of large cell coordinates loses no pair", "[broad_phase]") {
+  // A body 1e12 m away makes the cell coordinates about 1e12, rounded to ~1e-4 cells. Couples
+  // of unit spheres just inside the reach (2 + skin) along y, at random offsets in the cells,
+  // far from each other: exactly the couples are pairs, whatever the rounding.
+  const double skin = 0.1;
+  const double gap = (2.0 + skin) * (1.0 - 1e-9);  // m, centre distance, within reach
+  const std::uint32_t couples = 200000;
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> offset(0.0, 2.1);
+  Scene s;
+  std::vector<BodyPair> expected;
+  for (std::uint32_t k = 0; k < couples; ++k) {
+    const Vec3 a(10.0 * (k % 500), offset(rng), 10.0 * (k / 500));
+    s.centers.push_back(a);
+    s.centers.push_back(a + Vec3(0.0, gap, 0.0));
+    s.radii.insert(s.radii.end(), {1.0, 1.0});
+    expected.push_back({2 * k, 2 * k + 1});
+  }
+  s.centers.emplace_back(0.0, -1e12, 0.0);
+  s.radii.push_back(1.0);
+  CellList cells;
+  std::vector<BodyPair> out;
+  cells.build_pairs(s.centers, s.radii, skin, out);
+  REQUIRE(out.size() == expected.size());
+  REQUIRE(out == expected);
 }
 
 TEST_CASE("cell list handles 0, 1 and 2 bodies", "[broad_phase]") {
@@ -108,8 +136,7 @@ TEST_CASE("a reused cell list stays correct when the scene shrinks", "[broad_pha
   REQUIRE(out == slow);
 }
 
-TEST_CASE("candidate tests per body stay bounded as N grows at fixed density",
-          "[broad_phase]") {
+TEST_CASE("candidate tests per body stay bounded as N grows at fixed density", "[broad_phase]") {
   // Monodisperse R = 0.5, skin 0.1: cell side h = 1.1. Number density rho = 0.3 / (4/3 pi R^3).
   // A cell holds m = rho h^3 bodies on average; each body is tested against half of its own
   // cell and all of 13 neighbour cells, so tests / N -> 13.5 m in the bulk, less at the walls.
@@ -135,20 +162,28 @@ TEST_CASE("candidate tests per body stay bounded as N grows at fixed density",
 }
 
 TEST_CASE("output is identical with 1 and 2 threads", "[broad_phase][determinism]") {
-  const Scene s = test::clustered_scene(20000, 8, 60.0, 3.0, 0.1, 1.0, 18);
+  // A compact scene (dense grid) and a sparse clustered one (hashed cells): both code paths.
+  const Scene compact = test::uniform_scene(20000, 35.0, 0.1, 1.0, 18);
+  const Scene sparse = test::clustered_scene(20000, 8, 200.0, 3.0, 0.1, 1.0, 18);
   const int threads = omp_get_max_threads();
   CellList cells;
-  std::vector<BodyPair> one;
-  std::vector<BodyPair> two;
-  omp_set_num_threads(1);
-  cells.build_pairs(s.centers, s.radii, 0.1, one);
-  const std::size_t tests_one = cells.candidate_tests();
-  omp_set_num_threads(2);
-  cells.build_pairs(s.centers, s.radii, 0.1, two);
-  omp_set_num_threads(threads);
-  REQUIRE(!one.empty());
-  REQUIRE(one == two);
-  REQUIRE(tests_one == cells.candidate_tests());
+  bool used_hash[2] = {true, false};
+  for (const Scene* s : {&compact, &sparse}) {
+    std::vector<BodyPair> one;
+    std::vector<BodyPair> two;
+    omp_set_num_threads(1);
+    cells.build_pairs(s->centers, s->radii, 0.1, one);
+    const std::size_t tests_one = cells.candidate_tests();
+    omp_set_num_threads(2);
+    cells.build_pairs(s->centers, s->radii, 0.1, two);
+    omp_set_num_threads(threads);
+    used_hash[s == &sparse] = cells.hashed();
+    REQUIRE(!one.empty());
+    REQUIRE(one == two);
+    REQUIRE(tests_one == cells.candidate_tests());
+  }
+  REQUIRE_FALSE(used_hash[0]);
+  REQUIRE(used_hash[1]);
 }
 
 TEST_CASE("bad arguments and a blown-up state are reported", "[broad_phase]") {

@@ -1,17 +1,20 @@
 // The rebuild trigger must never let a contact escape the Verlet list, and not rebuild needlessly.
+#include "neighbor/rebuild_trigger.hpp"
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
 #include "neighbor/broad_phase.hpp"
-#include "neighbor/rebuild_trigger.hpp"
 #include "scenes.hpp"
 
 namespace polydem {
 namespace {
 
-Quat rotation(double angle, const Vec3& axis) { return Quat(Eigen::AngleAxisd(angle, axis.normalized())); }
+Quat rotation(double angle, const Vec3& axis) {
+  return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
+}
 
 TEST_CASE("a trigger with no build asks for one", "[rebuild]") {
   RebuildTrigger trigger;
@@ -39,6 +42,22 @@ TEST_CASE("translation just below and just above skin/2", "[rebuild]") {
   REQUIRE(trigger.needs_rebuild(x, q0, radius, skin));
 }
 
+TEST_CASE("one moving body among many is seen by the parallel check", "[rebuild]") {
+  // 10^4 bodies (above the threshold for threads); only body k moves, by 0.4 then 0.6 skin.
+  const double skin = 0.1;
+  const test::Scene s = test::uniform_scene(10000, 30.0, 0.2, 0.5, 24);
+  const std::vector<Quat> q(s.centers.size(), Quat::Identity());
+  RebuildTrigger trigger;
+  trigger.mark_built(s.centers, q);
+  for (std::size_t k : {std::size_t{0}, std::size_t{5003}, s.centers.size() - 1}) {
+    std::vector<Vec3> x = s.centers;
+    x[k].z() += 0.4 * skin;
+    REQUIRE_FALSE(trigger.needs_rebuild(x, q, s.radii, skin));
+    x[k].z() += 0.2 * skin;
+    REQUIRE(trigger.needs_rebuild(x, q, s.radii, skin));
+  }
+}
+
 TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]") {
   // A point at distance R turned by theta moves along the chord 2 R sin(theta/2).
   const double skin = 0.2;
@@ -48,7 +67,9 @@ TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]
   const std::vector<Vec3> x{Vec3::Zero()};
   RebuildTrigger trigger;
   trigger.mark_built(x, {rotation(0.7, Vec3::UnitX())});
-  const auto turned = [&](double theta) { return rotation(theta, axis) * rotation(0.7, Vec3::UnitX()); };
+  const auto turned = [&](double theta) {
+    return rotation(theta, axis) * rotation(0.7, Vec3::UnitX());
+  };
   REQUIRE_FALSE(trigger.needs_rebuild(x, {turned(theta_limit * (1 - 1e-6))}, {big}, skin));
   REQUIRE(trigger.needs_rebuild(x, {turned(theta_limit * (1 + 1e-6))}, {big}, skin));
   // The same turn of a small body is harmless; the sign of a quaternion is not a rotation.
@@ -58,7 +79,8 @@ TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]
 }
 
 TEST_CASE("the displacement bound covers every surface point and is reached", "[rebuild]") {
-  // Brute force: sample points of the bounding sphere, move them with the body, take the largest move.
+  // Brute force: sample points of the bounding sphere, move them with the body, take the largest
+  // move.
   std::mt19937_64 rng(21);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> angle(0.0, 2 * kPi);
@@ -114,10 +136,12 @@ TEST_CASE("no contact escapes the Verlet list between rebuilds", "[rebuild][safe
       // m/s, random kicks with damping keep the speeds steady
       velocity[i] = 0.95 * velocity[i] + 0.15 * Vec3(gauss(rng), gauss(rng), gauss(rng));
       s.centers[i] += dt * velocity[i];
-      q[i] = (rotation(dt * gauss(rng), Vec3(gauss(rng), gauss(rng), gauss(rng))) * q[i]).normalized();
+      q[i] =
+          (rotation(dt * gauss(rng), Vec3(gauss(rng), gauss(rng), gauss(rng))) * q[i]).normalized();
     }
   }
-  INFO("rebuilds " << trigger.rebuilds() << " in " << steps << " steps, " << checked << " contacts checked");
+  INFO("rebuilds " << trigger.rebuilds() << " in " << steps << " steps, " << checked
+                   << " contacts checked");
   REQUIRE(missing == 0);
   // The check is only meaningful if the list was reused for many steps and contacts existed.
   REQUIRE(trigger.rebuilds() > 5);

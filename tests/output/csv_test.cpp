@@ -35,7 +35,8 @@ const std::vector<std::string> kColumns{"time", "kinetic", "contacts"};
 }  // namespace
 
 TEST_CASE("csv: rows parse back bit for bit", "[output][csv]") {
-  const std::string path = temp_dir("csv_exact") + "/energy.csv";
+  const TempDir tmp("csv_exact");
+  const std::string path = tmp.path + "/energy.csv";
   const std::vector<std::vector<double>> rows{
       {0.1, 1.0 / 3.0, 12},
       {std::nextafter(1.0, 2.0), -0.0, 4.9406564584124654e-324},  // one ulp, signed zero, smallest subnormal
@@ -56,7 +57,8 @@ TEST_CASE("csv: rows parse back bit for bit", "[output][csv]") {
 }
 
 TEST_CASE("csv: each row is on disk as soon as it is written", "[output][csv]") {
-  const std::string path = temp_dir("csv_flush") + "/energy.csv";
+  const TempDir tmp("csv_flush");
+  const std::string path = tmp.path + "/energy.csv";
   CsvSeries csv(path, kColumns);
   CHECK(lines_of(path).size() == 1);
   csv.row({1, 2, 3});
@@ -64,7 +66,8 @@ TEST_CASE("csv: each row is on disk as soon as it is written", "[output][csv]") 
 }
 
 TEST_CASE("csv: append continues the file with one header", "[output][csv]") {
-  const std::string path = temp_dir("csv_append") + "/energy.csv";
+  const TempDir tmp("csv_append");
+  const std::string path = tmp.path + "/energy.csv";
   {
     CsvSeries csv(path, kColumns, true);  // missing file: append still writes the header
     csv.row({0, 1, 2});
@@ -84,7 +87,8 @@ TEST_CASE("csv: append continues the file with one header", "[output][csv]") {
 }
 
 TEST_CASE("csv: wrong use is reported", "[output][csv]") {
-  const std::string dir = temp_dir("csv_errors");
+  const TempDir tmp("csv_errors");
+  const std::string dir = tmp.path;
   { CsvSeries csv(dir + "/energy.csv", kColumns); }
   CHECK_THROWS_WITH(CsvSeries(dir + "/energy.csv", {"time", "elastic"}, true),
                     Catch::Contains("energy.csv") && Catch::Contains("time,kinetic,contacts"));

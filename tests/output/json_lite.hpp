@@ -38,7 +38,9 @@ class JsonParser {
   }
 
  private:
-  [[noreturn]] void fail(const char* what) { throw std::runtime_error("JSON " + std::string(what) + " at " + std::to_string(p_)); }
+  [[noreturn]] void fail(const char* what) {
+    throw std::runtime_error("JSON " + std::string(what) + " at " + std::to_string(p_));
+  }
   void skip() { while (p_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[p_]))) ++p_; }
   bool eat(char c) { skip(); if (p_ < s_.size() && s_[p_] == c) { ++p_; return true; } return false; }
   bool word(const char* w) {

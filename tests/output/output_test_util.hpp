@@ -14,14 +14,22 @@
 
 namespace polydem::test {
 
-// A new empty folder under the system temp dir, unique per process and name.
-inline std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("polydem_output_" + std::to_string(::getpid()) + "_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
-}
+// A new empty folder under the system temp dir, unique per process and name, removed at scope end.
+struct TempDir {
+  std::string path;
+  explicit TempDir(const std::string& name)
+      : path((std::filesystem::temp_directory_path() / ("polydem_output_" + std::to_string(::getpid()) + "_" + name))
+                 .string()) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ignored;  // cleanup only: a leftover folder must not fail the test
+    std::filesystem::remove_all(path, ignored);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+};
 
 inline std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

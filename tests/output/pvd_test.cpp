@@ -7,7 +7,8 @@ using namespace polydem;
 using namespace polydem::test;
 
 TEST_CASE("pvd: VTK-readable after every frame, each frame with its time and parts", "[output][vtk]") {
-  const std::string dir = temp_dir("pvd");
+  const TempDir tmp("pvd");
+  const std::string dir = tmp.path;
   const std::vector<Shape> shapes{cube_shape(0.01, 0.001)};
   Bodies bodies;
   add_body(bodies, 0, Vec3::Zero(), Quat::Identity(), 1.0, Vec3::Zero(), Vec3::Zero(), 0);
@@ -38,8 +39,10 @@ TEST_CASE("pvd: VTK-readable after every frame, each frame with its time and par
 }
 
 TEST_CASE("pvd: a stem that appears later gets its own part, kept for later frames", "[output][vtk]") {
-  const std::string dir = temp_dir("pvd_parts");
-  for (const char* f : {"bodies_000000.vtu", "bodies_000001.vtu", "bodies_000002.vtu"}) write_bodies_vtu(dir + "/" + f, {}, {});
+  const TempDir tmp("pvd_parts");
+  const std::string dir = tmp.path;
+  for (const char* f : {"bodies_000000.vtu", "bodies_000001.vtu", "bodies_000002.vtu"})
+    write_bodies_vtu(dir + "/" + f, {}, {});
   for (const char* f : {"drivers_000001.vtp", "drivers_000002.vtp"}) write_drivers_vtp(dir + "/" + f, {});
   PvdSeries pvd(dir + "/scene.pvd");
   pvd.add(0.0, {"bodies_000000.vtu"});

@@ -9,9 +9,10 @@ import os
 import sys
 import xml.etree.ElementTree as ET
 
-try:
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
+try:  # the three modules needed, not all of `vtk`: the tests start this script often
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkStringArray
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
 except ImportError as e:
     print(f"cannot import vtk in {sys.executable} ({e}): apt-get install python3-vtk9", file=sys.stderr)
     sys.exit(3)
@@ -28,7 +29,7 @@ class ErrorCatcher:
 
 
 def read_dataset(path):
-    reader = vtk.vtkXMLUnstructuredGridReader() if path.endswith(".vtu") else vtk.vtkXMLPolyDataReader()
+    reader = vtkXMLUnstructuredGridReader() if path.endswith(".vtu") else vtkXMLPolyDataReader()
     catcher = ErrorCatcher()
     reader.AddObserver("ErrorEvent", catcher)
     reader.GetExecutive().AddObserver("ErrorEvent", catcher)
@@ -41,7 +42,7 @@ def read_dataset(path):
 
 
 def array_json(array):
-    if isinstance(array, vtk.vtkStringArray):
+    if isinstance(array, vtkStringArray):
         return {"type": "String", "values": [array.GetValue(k) for k in range(array.GetNumberOfValues())]}
     values = vtk_to_numpy(array).reshape(-1).tolist()
     return {"type": array.GetDataTypeAsString(), "components": array.GetNumberOfComponents(), "values": values}

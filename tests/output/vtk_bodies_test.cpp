@@ -66,7 +66,8 @@ constexpr std::size_t kIcoFaces = 80, kIcoPoints = 42;  // icosahedron subdivide
 
 TEST_CASE("bodies vtu: VTK reads one polygon per face at the posed vertices", "[output][vtk]") {
   const Scene s;
-  const std::string path = temp_dir("bodies") + "/bodies_000000.vtu";
+  const TempDir tmp("bodies");
+  const std::string path = tmp.path + "/bodies_000000.vtu";
   write_bodies_vtu(path, s.bodies, s.shapes);
   const Json data = read_with_vtk(path);
 
@@ -77,7 +78,8 @@ TEST_CASE("bodies vtu: VTK reads one polygon per face at the posed vertices", "[
   // x = position + R (scale v): the first 16 points are the two cubes' vertices in shape order.
   for (std::size_t b = 0; b < 2; ++b)
     for (std::size_t k = 0; k < 8; ++k) {
-      const Vec3 expected = s.bodies.position[b] + s.bodies.orientation[b] * (s.bodies.scale[b] * s.shapes[0].vertices[k]);
+      const Vec3 local = s.bodies.scale[b] * s.shapes[0].vertices[k];
+      const Vec3 expected = s.bodies.position[b] + s.bodies.orientation[b] * local;
       CHECK((point_of(data, 8 * b + k) - expected).norm() < 1e-12);
     }
   // Faces keep the shape's vertex order, offset by the body's first point.
@@ -87,7 +89,8 @@ TEST_CASE("bodies vtu: VTK reads one polygon per face at the posed vertices", "[
 
 TEST_CASE("bodies vtu: per-cell id, group, radius, velocities repeat each body's values", "[output][vtk]") {
   const Scene s;
-  const std::string path = temp_dir("body_fields") + "/bodies.vtu";
+  const TempDir tmp("body_fields");
+  const std::string path = tmp.path + "/bodies.vtu";
   write_bodies_vtu(path, s.bodies, s.shapes);
   const Json cd = read_with_vtk(path)["cell_data"];
   CHECK(cd["id"]["type"].text == "long long");
@@ -108,7 +111,8 @@ TEST_CASE("bodies vtu: per-cell id, group, radius, velocities repeat each body's
 
 TEST_CASE("bodies vtu: closed surfaces, outward faces, cube volume exact", "[output][vtk]") {
   const Scene s;
-  const std::string path = temp_dir("volume") + "/bodies.vtu";
+  const TempDir tmp("volume");
+  const std::string path = tmp.path + "/bodies.vtu";
   write_bodies_vtu(path, s.bodies, s.shapes);
   const Json data = read_with_vtk(path);
   const std::size_t first[] = {0, 6, 12, 12 + kIcoFaces, 12 + 2 * kIcoFaces};
@@ -139,7 +143,8 @@ TEST_CASE("bodies vtu: a sphere's bounds are its centre +- rounded radius", "[ou
   const Quat rotation = GENERATE(Quat::Identity(), axis_angle({1, -2, 0.5}, 0.9));
   Bodies bodies;
   add_body(bodies, 0, centre, rotation, 2.0, Vec3::Zero(), Vec3::Zero(), 0);
-  const std::string path = temp_dir("sphere") + "/sphere.vtu";
+  const TempDir tmp("sphere");
+  const std::string path = tmp.path + "/sphere.vtu";
   write_bodies_vtu(path, bodies, shapes);
   const Json data = read_with_vtk(path);
   // Vertices lie on the sphere, so the mesh holds the ball of its smallest face distance:
@@ -158,7 +163,8 @@ TEST_CASE("bodies vtu: a sphere's bounds are its centre +- rounded radius", "[ou
 }
 
 TEST_CASE("bodies vtu: an empty body list is a valid file", "[output][vtk]") {
-  const std::string path = temp_dir("empty_bodies") + "/bodies.vtu";
+  const TempDir tmp("empty_bodies");
+  const std::string path = tmp.path + "/bodies.vtu";
   write_bodies_vtu(path, Bodies{}, {});
   const Json data = read_with_vtk(path);
   CHECK(data["n_points"].number == 0);

@@ -58,7 +58,8 @@ TEST_CASE("layout: bodies vtu blocks match point, corner and cell counts", "[out
   add_body(bodies, 0, {0, 0, 0}, axis_angle({0, 0, 1}, 0.3), 1.0, Vec3::Zero(), Vec3::Zero(), 0);
   add_body(bodies, 0, {1, 0, 0}, Quat::Identity(), 2.0, Vec3::Zero(), Vec3::Zero(), 0);
   add_body(bodies, 1, {2, 0, 0}, Quat::Identity(), 1.0, Vec3::Zero(), Vec3::Zero(), 0);
-  const std::string path = temp_dir("layout_bodies") + "/bodies.vtu";
+  const TempDir tmp("layout_bodies");
+  const std::string path = tmp.path + "/bodies.vtu";
   write_bodies_vtu(path, bodies, shapes);
   const auto bytes = bytes_by_name(appended_arrays(path));
   const std::uint64_t points = 8 + 8 + 42, cells = 6 + 6 + 80, corners = 4 * 12 + 3 * 80;
@@ -74,7 +75,8 @@ TEST_CASE("layout: bodies vtu blocks match point, corner and cell counts", "[out
 }
 
 TEST_CASE("layout: contacts and drivers vtp blocks match their counts", "[output][vtk]") {
-  const std::string dir = temp_dir("layout_vtp");
+  const TempDir tmp("layout_vtp");
+  const std::string dir = tmp.path;
   const std::size_t n = GENERATE(0, 1, 5);
   std::vector<ContactOut> contacts(n, ContactOut{});
   write_contacts_vtp(dir + "/contacts.vtp", contacts);
@@ -84,7 +86,8 @@ TEST_CASE("layout: contacts and drivers vtp blocks match their counts", "[output
   CHECK(bytes.at("force") == n * 24);
   CHECK(bytes.at("type") == n * 4);
 
-  write_drivers_vtp(dir + "/drivers.vtp", {{"floor", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 1, 2}}}, {"no_name", {}, {}}});
+  const DriverMesh floor{"floor", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 1, 2}}};
+  write_drivers_vtp(dir + "/drivers.vtp", {floor, {"no_name", {}, {}}});
   bytes = bytes_by_name(appended_arrays(dir + "/drivers.vtp"));
   CHECK(bytes.at("driver_names") == std::string("floor").size() + 1 + std::string("no_name").size() + 1);
   CHECK(bytes.at("driver") == 1 * 4);

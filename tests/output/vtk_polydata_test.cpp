@@ -24,7 +24,8 @@ std::vector<ContactOut> three_contacts() {
 
 TEST_CASE("contacts vtp: VTK reads one line per contact with its fields", "[output][vtk]") {
   const std::vector<ContactOut> contacts = three_contacts();
-  const std::string path = temp_dir("contacts") + "/contacts_000003.vtp";
+  const TempDir tmp("contacts");
+  const std::string path = tmp.path + "/contacts_000003.vtp";
   write_contacts_vtp(path, contacts);
   const Json data = read_with_vtk(path);
   REQUIRE(data["n_cells"].number == 3);
@@ -51,7 +52,8 @@ TEST_CASE("contacts vtp: VTK reads one line per contact with its fields", "[outp
 }
 
 TEST_CASE("contacts vtp: no contact is a valid empty file", "[output][vtk]") {
-  const std::string path = temp_dir("no_contacts") + "/contacts.vtp";
+  const TempDir tmp("no_contacts");
+  const std::string path = tmp.path + "/contacts.vtp";
   write_contacts_vtp(path, {});
   const Json data = read_with_vtk(path);
   CHECK(data["n_cells"].number == 0);
@@ -61,7 +63,8 @@ TEST_CASE("contacts vtp: no contact is a valid empty file", "[output][vtk]") {
 TEST_CASE("drivers vtp: VTK reads the polygons, driver index per cell and the names", "[output][vtk]") {
   const DriverMesh floor{"floor", {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}}};
   const DriverMesh roof{"roof & <lid>", {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}}, {{0, 1, 2}, {1, 3, 2}}};
-  const std::string path = temp_dir("drivers") + "/drivers_000000.vtp";
+  const TempDir tmp("drivers");
+  const std::string path = tmp.path + "/drivers_000000.vtp";
   write_drivers_vtp(path, {floor, roof});
   const Json data = read_with_vtk(path);
   REQUIRE(data["n_cells"].number == 3);
@@ -84,12 +87,14 @@ TEST_CASE("drivers vtp: VTK reads the polygons, driver index per cell and the na
 
 TEST_CASE("drivers vtp: a polygon index out of range is reported with the driver name", "[output][vtk]") {
   const DriverMesh bad{"hopper", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 3}}};
-  const std::string path = temp_dir("bad_driver") + "/drivers.vtp";
+  const TempDir tmp("bad_driver");
+  const std::string path = tmp.path + "/drivers.vtp";
   CHECK_THROWS_WITH(write_drivers_vtp(path, {bad}), Catch::Contains("hopper") && Catch::Contains("index 3"));
 }
 
 TEST_CASE("writers: an unwritable path throws RunError naming the path and the reason", "[output][vtk]") {
-  const std::string path = temp_dir("unwritable") + "/missing_folder/contacts.vtp";
+  const TempDir tmp("unwritable");
+  const std::string path = tmp.path + "/missing_folder/contacts.vtp";
   CHECK_THROWS_AS(write_contacts_vtp(path, three_contacts()), RunError);
   CHECK_THROWS_WITH(write_contacts_vtp(path, three_contacts()),
                     Catch::Contains(path) && Catch::Contains("No such file or directory"));

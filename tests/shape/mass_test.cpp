@@ -136,6 +136,14 @@ TEST_CASE("random rock: Steiner volume from its faces, inertia against quasi-Mon
     for (int l = k + 1; l < 3; ++l) CHECK(std::abs(m.inertia_per_mass(k, l)) < 2e-3 * s.inertia_per_mass[2]);
 }
 
+TEST_CASE("large radius on an irregular core: wedges and sectors dominate", "[mass]") {
+  // r comparable to the core: the edge and vertex pieces carry most of the inertia.
+  const Shape s = build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.2, 0.6, 0), Vec3(0.1, 0.3, 0.4)}, 0.5, "tet");
+  const test::NumericMoments m = test::integrate_rounded(s, 1 << 18);
+  CHECK(m.volume == Approx(s.volume).epsilon(2e-3));
+  CHECK(relative_error(s.inertia_per_mass, eigenvalues(m.inertia_per_mass)) < 2e-3);
+}
+
 TEST_CASE("mass properties do not depend on where and how the input points are placed", "[mass]") {
   const std::vector<Vec3> points = test::rock_points(11, 30, 1.0, 0.8, 0.6);
   const Shape s = build_hull_shape(points, 0.05, "rock");

@@ -1,6 +1,5 @@
 // Bad scene files: each InputError names the file, the line and the key, and what to do.
 #include <catch2/catch.hpp>
-
 #include <sstream>
 #include <vector>
 
@@ -13,16 +12,16 @@ using test::contains;
 namespace {
 
 const std::vector<std::string> kBase = {
-    "simulation: {duration: 1, dt: \"1 us\", seed: 3}",                // 1
-    "shapes: [lib.shp]",                                               // 2
-    "forces:",                                                         // 3
-    "  - contact_polyhedron:",                                         // 4
-    "      config: {kn: 1.0e5, kt: 1.0e5, mu: 0.5, en: 0.5}",          // 5
-    "bodies:",                                                         // 6
-    "  - shape: cube",                                                 // 7
-    "    position: [0, 0, 0]",                                         // 8
-    "drivers:",                                                        // 9
-    "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 1]}",    // 10
+    "simulation: {duration: 1, dt: \"1 us\", seed: 3}",              // 1
+    "shapes: [lib.shp]",                                             // 2
+    "forces:",                                                       // 3
+    "  - contact_polyhedron:",                                       // 4
+    "      config: {kn: 1.0e5, kt: 1.0e5, mu: 0.5, en: 0.5}",        // 5
+    "bodies:",                                                       // 6
+    "  - shape: cube",                                               // 7
+    "    position: [0, 0, 0]",                                       // 8
+    "drivers:",                                                      // 9
+    "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 1]}",  // 10
 };
 
 // The base scene with lines replaced (1-based; a replacement may hold several lines, or
@@ -30,8 +29,10 @@ const std::vector<std::string> kBase = {
 std::string edited(const std::vector<std::pair<int, std::string>>& edits) {
   std::vector<std::string> lines = kBase;
   for (const auto& [n, text] : edits) {
-    if (n > static_cast<int>(lines.size())) lines.push_back(text);
-    else lines[n - 1] = text;
+    if (n > static_cast<int>(lines.size()))
+      lines.push_back(text);
+    else
+      lines[n - 1] = text;
   }
   std::ostringstream out;
   for (const auto& l : lines)
@@ -50,7 +51,8 @@ std::string error_of(const std::string& text) {
 }
 
 // The error names scene.yaml at `line`, the key, and contains `part`.
-void check_error(const std::string& text, int line, const std::string& key, const std::string& part) {
+void check_error(const std::string& text, int line, const std::string& key,
+                 const std::string& part) {
   const std::string msg = error_of(text);
   INFO("message: " << msg);
   CHECK(contains(msg, "scene.yaml:" + std::to_string(line) + ": "));
@@ -65,12 +67,12 @@ TEST_CASE("the base scene of these tests is valid", "[scene][errors]") {
 }
 
 TEST_CASE("unknown keys suggest the nearest valid key", "[scene][errors]") {
-  check_error(with_line(11, "  - cylinder: {name: d, center: [0, 0, 0], raduis: 0.1}"), 11, "raduis",
-              "unknown key in 'cylinder' (did you mean 'radius'?)");
+  check_error(with_line(11, "  - cylinder: {name: d, center: [0, 0, 0], raduis: 0.1}"), 11,
+              "raduis", "unknown key in 'cylinder' (did you mean 'radius'?)");
   check_error(with_line(6, "bodys:"), 6, "bodys", "(did you mean 'bodies'?)");
   check_error(with_line(8, "    postion: [0, 0, 0]"), 8, "postion", "did you mean 'position'?");
-  check_error(with_line(5, "      config: {kn: 1.0e5, kt: 1.0e5, mu: 0.5, en: 0.5, damprate: 0.1}"), 5,
-              "damprate", "did you mean 'damp_rate'?");
+  check_error(with_line(5, "      config: {kn: 1.0e5, kt: 1.0e5, mu: 0.5, en: 0.5, damprate: 0.1}"),
+              5, "damprate", "did you mean 'damp_rate'?");
   check_error(with_line(4, "  - contact_polyhedra:"), 4, "contact_polyhedra",
               "did you mean 'contact_polyhedron'?");
   check_error(with_line(11, "  - walls: {point: [0, 0, 0], normal: [0, 0, 1]}"), 11, "walls",
@@ -78,7 +80,8 @@ TEST_CASE("unknown keys suggest the nearest valid key", "[scene][errors]") {
   // A key nothing resembles gets no misleading hint.
   const std::string msg = error_of(with_line(11, "zzzzzzzz: 1"));
   CHECK((contains(msg, "scene.yaml:11:") && !contains(msg, "did you mean")));
-  check_error(with_line(8, "    position: [0, 0, 0]\n    count: 5"), 9, "count", "generate: random");
+  check_error(with_line(8, "    position: [0, 0, 0]\n    count: 5"), 9, "count",
+              "generate: random");
 }
 
 TEST_CASE("wrong types and vector lengths", "[scene][errors]") {
@@ -87,10 +90,12 @@ TEST_CASE("wrong types and vector lengths", "[scene][errors]") {
   check_error(with_line(8, "    position: [0, 0]"), 8, "position", "list of 3 numbers");
   check_error(with_line(8, "    position: [\"5 s\", 0, 0]"), 8, "position", "expected a length");
   check_error(with_line(8, "    position: 3"), 8, "position", "list of 3 numbers");
-  check_error(with_line(1, "simulation: {duration: 1, threads: 1.5}"), 1, "threads", "whole number");
+  check_error(with_line(1, "simulation: {duration: 1, threads: 1.5}"), 1, "threads",
+              "whole number");
   check_error(with_line(1, "simulation: 5"), 1, "simulation", "mapping");
   check_error(edited({{9, "output: {contacts: maybe}"}, {10, ""}}), 9, "contacts", "true or false");
-  check_error(edited({{6, "bodies: {shape: cube}"}, {7, ""}, {8, ""}}), 6, "bodies", "list of items");
+  check_error(edited({{6, "bodies: {shape: cube}"}, {7, ""}, {8, ""}}), 6, "bodies",
+              "list of items");
 }
 
 TEST_CASE("non-positive sizes, densities, stiffnesses and times", "[scene][errors]") {
@@ -107,45 +112,50 @@ TEST_CASE("non-positive sizes, densities, stiffnesses and times", "[scene][error
 }
 
 TEST_CASE("restitution, damping and cohesion parameters", "[scene][errors]") {
-  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 1.5}"), 5, "en", "(0, 1]");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 1.5}"), 5, "en",
+              "(0, 1]");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0}"), 5, "en", "(0, 1]");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, damp_rate: 0.5}"), 5,
               "damp_rate", "not both");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5}"), 5, "en", "damp_rate");
-  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, damp_rate: 1}"), 5, "damp_rate",
-              "[0, 1)");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, damp_rate: 1}"), 5,
+              "damp_rate", "[0, 1)");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, fc: 0.05}"), 5, "fc",
               "contact_polyhedron_with_cohesion");
   check_error(edited({{4, "  - contact_sphere_with_cohesion:"},
                       {5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, fc: 0.05}"}}),
               5, "fc", "dncut > 0");
-  CHECK(error_of(edited({{4, "  - contact_sphere_with_cohesion:"},
-                         {5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, fc: 0.05, dncut: 1e-4}"}})) ==
+  CHECK(error_of(edited(
+            {{4, "  - contact_sphere_with_cohesion:"},
+             {5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, fc: 0.05, dncut: 1e-4}"}})) ==
         "");
-  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}\n"
-                           "  - contact_sphere: {config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}}"),
+  check_error(with_line(5,
+                        "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}\n"
+                        "  - contact_sphere: {config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}}"),
               6, "contact_sphere", "only one contact operator");
-  check_error(with_line(5, "      config_driver: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}"), 4, "config",
-              "missing");
+  check_error(with_line(5, "      config_driver: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}"), 4,
+              "config", "missing");
 }
 
 TEST_CASE("directions: zero is an error, others are normalized", "[scene][errors]") {
-  check_error(with_line(10, "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 0]}"), 10, "normal",
-              "zero vector");
-  check_error(with_line(8, "    position: [0, 0, 0]\n    orientation: {axis: [0, 0, 0], angle: 1}"), 9,
-              "axis", "zero vector");
-  check_error(with_line(8, "    position: [0, 0, 0]\n    orientation: {quaternion: [0, 0, 0, 0]}"), 9,
-              "quaternion", "must not be zero");
+  check_error(with_line(10, "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 0]}"), 10,
+              "normal", "zero vector");
+  check_error(with_line(8, "    position: [0, 0, 0]\n    orientation: {axis: [0, 0, 0], angle: 1}"),
+              9, "axis", "zero vector");
+  check_error(with_line(8, "    position: [0, 0, 0]\n    orientation: {quaternion: [0, 0, 0, 0]}"),
+              9, "quaternion", "must not be zero");
   test::TempDir dir;
   dir.write("lib.shp", "");
-  const Scene s = load_scene(dir.write(
-      "scene.yaml", edited({{10, "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 3, 4]}"},
-                            {11, "  - cylinder: {center: [0, 0, 0], axis: [0, 0, 2], radius: 1}"}})));
+  const Scene s = load_scene(
+      dir.write("scene.yaml",
+                edited({{10, "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 3, 4]}"},
+                        {11, "  - cylinder: {center: [0, 0, 0], axis: [0, 0, 2], radius: 1}"}})));
   CHECK((s.drivers[0].normal - Vec3(0, 0.6, 0.8)).norm() < 1e-15);
   CHECK((s.drivers[1].axis - Vec3::UnitZ()).norm() < 1e-15);
   CHECK(s.drivers[1].name == "cylinder_2");
   const Scene q = load_scene(dir.write(
-      "q.yaml", with_line(8, "    position: [0, 0, 0]\n    orientation: {quaternion: [0, 2, 0, 0]}")));
+      "q.yaml",
+      with_line(8, "    position: [0, 0, 0]\n    orientation: {quaternion: [0, 2, 0, 0]}")));
   CHECK(q.bodies[0].orientation.x() == 1.0);  // (0, 2, 0, 0) / 2: a half turn about x
 }
 
@@ -153,8 +163,8 @@ TEST_CASE("missing files, duplicate names, missing blocks", "[scene][errors]") {
   check_error(with_line(2, "shapes: [nothere.shp]"), 2, "shapes", "cannot open shape library");
   check_error(with_line(11, "  - stl: {file: nothere.stl}"), 11, "file", "cannot open STL file");
   CHECK(error_of(with_line(11, "  - stl: {file: mesh.stl}")) == "");
-  check_error(with_line(11, "  - wall: {name: floor, point: [0, 0, 1], normal: [0, 0, -1]}"), 11, "name",
-              "already used at line 10");
+  check_error(with_line(11, "  - wall: {name: floor, point: [0, 0, 1], normal: [0, 0, -1]}"), 11,
+              "name", "already used at line 10");
   check_error(with_line(1, "output: {dir: o}"), 1, "simulation", "missing");
   check_error(with_line(1, "simulation: {dt: auto}"), 1, "duration", "missing");
   check_error(with_line(2, "outputs: {}"), 2, "outputs", "did you mean 'output'");
@@ -178,27 +188,33 @@ TEST_CASE("the file itself: missing, not a mapping, YAML syntax error", "[scene]
 TEST_CASE("generator blocks: kind, mix fractions, region, scale", "[scene][errors]") {
   // The generator starts at line 9, after the explicit body.
   const std::string body = "    position: [0, 0, 0]\n";
-  const std::string gen = body + "  - generate: random\n    shapes: {cube: 0.5, tetra: 0.5}\n    count: 10\n";
+  const std::string gen =
+      body + "  - generate: random\n    shapes: {cube: 0.5, tetra: 0.5}\n    count: 10\n";
   const std::string box = "    region: {box: {min: [0, 0, 0], max: [1, 1, 1]}}\n";
   check_error(with_line(8, gen + box + "    scale: {min: 1.2, max: 0.8}"), 13, "max", ">= min");
-  check_error(with_line(8, body + "  - generate: randon\n    shapes: cube\n    count: 1\n" + box), 9,
-              "generate", "did you mean 'random'?");
-  check_error(with_line(8, body + "  - generate: random\n    shapes: {cube: 0.5, tetra: 0.4}\n    count: 10\n" +
-                               box),
-              10, "shapes", "sum to");
+  check_error(with_line(8, body + "  - generate: randon\n    shapes: cube\n    count: 1\n" + box),
+              9, "generate", "did you mean 'random'?");
+  check_error(
+      with_line(
+          8, body + "  - generate: random\n    shapes: {cube: 0.5, tetra: 0.4}\n    count: 10\n" +
+                 box),
+      10, "shapes", "sum to");
   check_error(with_line(8, gen + "    region: {box: {min: [0, 0, 0], max: [1, 0, 1]}}"), 12, "max",
               "must exceed");
-  check_error(with_line(8, gen + "    region: {cylinder: {center: [0, 0, 0], axis: [0, 0, 0], radius: 1, "
-                                 "length: 1}}"),
-              12, "axis", "zero vector");
-  check_error(with_line(8, gen + "    region: {box: {min: [0, 0, 0], max: [1, 1, 1]}, cylinder: {}}"), 12,
-              "region", "exactly one");
+  check_error(
+      with_line(8, gen + "    region: {cylinder: {center: [0, 0, 0], axis: [0, 0, 0], radius: 1, "
+                         "length: 1}}"),
+      12, "axis", "zero vector");
+  check_error(
+      with_line(8, gen + "    region: {box: {min: [0, 0, 0], max: [1, 1, 1]}, cylinder: {}}"), 12,
+      "region", "exactly one");
   check_error(with_line(8, gen), 9, "region", "missing");
-  check_error(with_line(8, body + "  - generate: lattice\n    shapes: cube\n    count: 0\n" + box), 11, "count",
-              "at least 1");
+  check_error(with_line(8, body + "  - generate: lattice\n    shapes: cube\n    count: 0\n" + box),
+              11, "count", "at least 1");
   test::TempDir dir;
   dir.write("lib.shp", "");
-  const Scene s = load_scene(dir.write("g.yaml", with_line(8, gen + box + "    orientation: fixed")));
+  const Scene s =
+      load_scene(dir.write("g.yaml", with_line(8, gen + box + "    orientation: fixed")));
   CHECK_FALSE(s.generators[0].random_orientation);
   CHECK(s.generators[0].scale_min == 1.0);
   CHECK(s.generators[0].loc.line == 9);

@@ -40,14 +40,15 @@ TEST_CASE("unit strings convert to SI by their definitions", "[units]") {
 TEST_CASE("a bare number is SI, angles in radians", "[units]") {
   CHECK(q("0.005", Dimension::length) == 0.005);
   CHECK(q("1.0e5", Dimension::stiffness) == 1.0e5);
-  CHECK(q("0.5", Dimension::angle) == 0.5);               // rad
-  CHECK(q("3", Dimension::angular_velocity) == 3.0);      // rad/s
+  CHECK(q("0.5", Dimension::angle) == 0.5);           // rad
+  CHECK(q("3", Dimension::angular_velocity) == 3.0);  // rad/s
   CHECK(q(" -2 ", Dimension::velocity) == -2.0);
 }
 
 TEST_CASE("the radian may be left out, other units may not", "[units]") {
   // rad is a ratio of lengths: N m and N m/rad are the same rolling stiffness.
-  CHECK(q("0.01 N m", Dimension::rolling_stiffness) == q("0.01 N m/rad", Dimension::rolling_stiffness));
+  CHECK(q("0.01 N m", Dimension::rolling_stiffness) ==
+        q("0.01 N m/rad", Dimension::rolling_stiffness));
   CHECK(q("2 1/s", Dimension::angular_velocity) == 2.0);
   CHECK_FALSE(input_error_of([] { q("30 deg", Dimension::dimensionless); }).empty());
 }
@@ -65,7 +66,8 @@ TEST_CASE("a unit of the wrong dimension names the place, the expected dimension
 }
 
 TEST_CASE("unknown units, bad syntax and non-numbers are InputErrors", "[units]") {
-  CHECK(contains(input_error_of([] { q("5 furlong", Dimension::length); }), "unknown unit 'furlong'"));
+  CHECK(contains(input_error_of([] { q("5 furlong", Dimension::length); }),
+                 "unknown unit 'furlong'"));
   CHECK(contains(input_error_of([] { q("abc", Dimension::length); }),
                  "expected a number or a quantity string like \"5 mm\""));
   CHECK(contains(input_error_of([] { q("5 m^x", Dimension::length); }), "cannot read the unit"));

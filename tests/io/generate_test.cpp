@@ -1,8 +1,7 @@
 // Body generators: counts, no overlap (brute force), inside the region, reproducibility,
 // mix fractions and orientation statistics.
-#include <catch2/catch.hpp>
-
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 
@@ -121,8 +120,9 @@ TEST_CASE("random: same seed, same bodies; another seed, other bodies", "[genera
   REQUIRE((a.size() == b.size() && a.size() == c.size()));
   int same = 0, differ = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    same += a[i].position == b[i].position && a[i].orientation.coeffs() == b[i].orientation.coeffs() &&
-            a[i].scale == b[i].scale && a[i].shape == b[i].shape;
+    same += a[i].position == b[i].position &&
+            a[i].orientation.coeffs() == b[i].orientation.coeffs() && a[i].scale == b[i].scale &&
+            a[i].shape == b[i].shape;
     differ += a[i].position != c[i].position;
   }
   CHECK(same == static_cast<int>(a.size()));
@@ -171,7 +171,8 @@ TEST_CASE("random: 50,000 bodies place with no overlap", "[generate]") {
   // each pair of bodies in neighbouring cells.
   std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
   const auto cell_of = [](const Vec3& p) {
-    return std::array<long, 3>{std::lround(std::floor(p.x() / 0.0024)), std::lround(std::floor(p.y() / 0.0024)),
+    return std::array<long, 3>{std::lround(std::floor(p.x() / 0.0024)),
+                               std::lround(std::floor(p.y() / 0.0024)),
                                std::lround(std::floor(p.z() / 0.0024))};
   };
   for (std::size_t i = 0; i < bodies.size(); ++i) cells[cell_of(bodies[i].position)].push_back(i);
@@ -216,7 +217,8 @@ TEST_CASE("lattice: spacing, order, inside, too many", "[generate]") {
   CHECK(bodies[16].position.z() - bodies[0].position.z() == Approx(spacing));
   CHECK(max_overlap(bodies, lib) <= 1e-12);
   int outside = 0;
-  for (const auto& b : bodies) outside += !inside_box(b, spacing / 2, std::get<BoxRegion>(g.region));
+  for (const auto& b : bodies)
+    outside += !inside_box(b, spacing / 2, std::get<BoxRegion>(g.region));
   CHECK(outside == 0);
   g.count = 4 * 4 * 8 + 1;  // floor(0.2 / 0.024) = 8 layers
   const std::string msg = test::input_error_of([&] { expand_bodies(scene_with(g), lib); });
@@ -252,7 +254,8 @@ TEST_CASE("unknown shape names suggest the nearest known one", "[generate]") {
   GeneratorSpec g = generator(10, kBox);
   g.shapes = {{"small", 0.5}, {"larje", 0.5}};
   msg = test::input_error_of([&] { expand_bodies(scene_with(g), lib); });
-  CHECK((contains(msg, "scene.yaml:17:") && contains(msg, "'larje'") && contains(msg, "did you mean 'large'?")));
+  CHECK((contains(msg, "scene.yaml:17:") && contains(msg, "'larje'") &&
+         contains(msg, "did you mean 'large'?")));
   // Explicit bodies come first, then generated ones, in file order.
   s.bodies[0].shape = "large";
   s.generators = {generator(5, kBox)};

@@ -1,6 +1,5 @@
 // SCENE.md's example scene: every key parses into the settings it names, in SI.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <filesystem>
 
@@ -172,7 +171,8 @@ TEST_CASE("SCENE.md example: forces and output", "[scene]") {
   CHECK((c.present && !c.sphere && !c.cohesion && c.has_config_driver));
   CHECK((c.config.kn == 1e5 && c.config.kt == 1e5 && c.config.mu == 0.5 && c.config.en == 0.5));
   CHECK(c.config.damp_rate < 0.0);
-  CHECK((c.config_driver.mu == 0.3 && c.config_driver.damp_rate == 0.9 && c.config_driver.en < 0.0));
+  CHECK(
+      (c.config_driver.mu == 0.3 && c.config_driver.damp_rate == 0.9 && c.config_driver.en < 0.0));
   CHECK(s.forces.quadratic->cx == 0.38);
   CHECK(s.forces.quadratic->mu == 0.000015);
   CHECK(fs::equivalent(s.forces.fluid_friction->field, dir.path / "samples/drum/fluid.vti"));
@@ -196,7 +196,8 @@ TEST_CASE("SCENE.md example: the cohesion operator", "[scene]") {
 
 TEST_CASE("defaults: output beside the scene, optional blocks empty", "[scene]") {
   test::TempDir dir;
-  const Scene s = load_scene(dir.write("a/minimal.yaml", "simulation: {duration: \"2 ms\", dt: \"1 us\"}\n"));
+  const Scene s =
+      load_scene(dir.write("a/minimal.yaml", "simulation: {duration: \"2 ms\", dt: \"1 us\"}\n"));
   CHECK(s.simulation.duration == Approx(2e-3).epsilon(1e-15));
   CHECK(s.simulation.dt.value() == Approx(1e-6).epsilon(1e-15));
   CHECK(s.simulation.threads == 0);
