@@ -18,11 +18,11 @@ struct RunError : std::runtime_error {
 // "FILE:LINE: key 'KEY': MESSAGE"; parts that are empty or 0 are left out.
 inline std::string input_message(const std::string& file, int line, const std::string& key,
                                  const std::string& message) {
-  std::string s = file;
-  if (line > 0) s += ":" + std::to_string(line);
-  if (!s.empty()) s += ": ";
-  if (!key.empty()) s += "key '" + key + "': ";
-  return s + message;
+  std::string s = file;  // appended piecewise: GCC 12 misreports `a + b + c` (PR105651)
+  if (line > 0) s.append(":").append(std::to_string(line));
+  if (!s.empty()) s.append(": ");
+  if (!key.empty()) s.append("key '").append(key).append("': ");
+  return s.append(message);
 }
 
 }  // namespace polydem

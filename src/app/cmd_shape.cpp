@@ -71,8 +71,9 @@ void print_json(const std::vector<Shape>& shapes) {
     char numbers[200];
     std::snprintf(numbers, sizeof numbers, "\"radius\": %.17g, \"volume\": %.17g, \"bounding_radius\": %.17g",
                   s.radius, s.volume, s.bounding_radius);
-    std::cout << (i ? ",\n " : "\n ") << "{\"name\": " << json_string(s.name) << ", \"nv\": " << s.vertices.size()
-              << ", \"ne\": " << s.edges.size() << ", \"nf\": " << s.faces.size() << ", " << numbers
+    std::cout << (i ? ",\n " : "\n ") << "{\"name\": " << json_string(s.name)
+              << ", \"nv\": " << s.vertices.size() << ", \"ne\": " << s.edges.size()
+              << ", \"nf\": " << s.faces.size() << ", " << numbers
               << ", \"center\": " << json_vec(s.input_center)
               << ", \"inertia_per_mass\": " << json_vec(s.inertia_per_mass) << "}";
   }
@@ -96,10 +97,14 @@ int info(const std::vector<std::string>& args) {
   std::string file;
   bool json = false;
   for (const auto& a : args) {
-    if (a == "--json") json = true;
-    else if (!a.empty() && a[0] == '-') usage_error("shape info: unknown option '" + a + "'", kInfoHelp);
-    else if (file.empty()) file = a;
-    else usage_error("shape info: one FILE only, got '" + file + "' and '" + a + "'", kInfoHelp);
+    if (a == "--json")
+      json = true;
+    else if (!a.empty() && a[0] == '-')
+      usage_error("shape info: unknown option '" + a + "'", kInfoHelp);
+    else if (file.empty())
+      file = a;
+    else
+      usage_error("shape info: one FILE only, got '" + file + "' and '" + a + "'", kInfoHelp);
   }
   if (file.empty()) usage_error("shape info: missing FILE", kInfoHelp);
   const std::vector<Shape> shapes = read_shape_file(file);
@@ -126,7 +131,8 @@ std::map<std::string, std::string> hull_options(const std::vector<std::string>& 
     }
   }
   for (const char* need : {"input", "--radius", "--name", "-o"})
-    if (!opt.count(need)) usage_error(std::string("shape hull: missing ") + (opt.count("input") ? need : "INPUT"), kHullHelp);
+    if (!opt.count(need))
+      usage_error(std::string("shape hull: missing ") + (opt.count("input") ? need : "INPUT"), kHullHelp);
   return opt;
 }
 
@@ -135,18 +141,19 @@ int hull(const std::vector<std::string>& args) {
   auto opt = hull_options(args);
   const auto radius = parse_length(opt["--radius"]);
   if (!radius)
-    throw InputError(input_message("command line", 0, "--radius", "'" + opt["--radius"] +
-                                                                      "' is not a length (write 0.0005 or \"0.5 mm\")"));
+    throw InputError(input_message("command line", 0, "--radius",
+                                   "'" + opt["--radius"] + "' is not a length (write 0.0005 or \"0.5 mm\")"));
   Shape shape = build_hull_shape(read_points(opt["input"]), *radius, opt["--name"]);
   std::vector<Shape> shapes;
   if (opt.count("--append") && std::ifstream(opt["-o"])) shapes = read_shp_file(opt["-o"]);
   for (const Shape& s : shapes)
     if (s.name == shape.name)
-      throw InputError(input_message(opt["-o"], 0, "name", "shape '" + shape.name + "' is already in this file"));
+      throw InputError(
+          input_message(opt["-o"], 0, "name", "shape '" + shape.name + "' is already in this file"));
   shapes.push_back(shape);
   write_shp_file(opt["-o"], shapes);
-  std::cout << "shape '" << shape.name << "': " << shape.vertices.size() << " vertices, " << shape.edges.size()
-            << " edges, " << shape.faces.size() << " faces -> " << opt["-o"] << "\n";
+  std::cout << "shape '" << shape.name << "': " << shape.vertices.size() << " vertices, "
+            << shape.edges.size() << " edges, " << shape.faces.size() << " faces -> " << opt["-o"] << "\n";
   return 0;
 }
 

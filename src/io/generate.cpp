@@ -28,6 +28,18 @@ int shape_index(const ShapeLibrary& lib, const std::string& name, const SourceLo
                         (hint.empty() ? " (not in the loaded shape libraries)" : hint)));
 }
 
+// contact_sphere promises spheres only: the sphere kernels would ignore a polyhedron's corners.
+void check_sphere(const Scene& scene, const Shape& shape, const SourceLoc& loc,
+                  const std::string& key) {
+  if (!scene.forces.contact.sphere || shape.is_sphere()) return;
+  const std::string op =
+      scene.forces.contact.cohesion ? "contact_sphere_with_cohesion" : "contact_sphere";
+  throw InputError(input_message(
+      loc.file, loc.line, key,
+      "shape '" + shape.name + "' is not a sphere (" + std::to_string(shape.vertices.size()) +
+          " vertices) but the scene uses " + op + ": use the contact_polyhedron operator"));
+}
+
 // Library index of every body: exact counts from the fractions (largest remainder), shuffled,
 // so a 0.7/0.3 mix of 5000 gives 3500 and 1500.
 std::vector<int> shape_sequence(const GeneratorSpec& g, const std::vector<int>& indices,
@@ -55,11 +67,13 @@ std::vector<int> shape_sequence(const GeneratorSpec& g, const std::vector<int>& 
 }
 
 // Shape, scale and orientation of every body, positions still unset.
-std::vector<BodySpec> draw_bodies(const GeneratorSpec& g, const ShapeLibrary& lib,
-                                  std::mt19937_64& rng) {
+std::vector<BodySpec> draw_bodies(const Scene& scene, const GeneratorSpec& g,
+                                  const ShapeLibrary& lib, std::mt19937_64& rng) {
   std::vector<int> indices;
-  for (const auto& [name, fraction] : g.shapes)
-    indices.push_back(shape_index(lib, name, g.loc, "shapes"));
+  for (const auto& entry : g.shapes) {
+    indices.push_back(shape_index(lib, entry.first, g.loc, "shapes"));
+    check_sphere(scene, lib.shapes[indices.back()], g.loc, "shapes");
+  }
   std::vector<BodySpec> bodies;
   for (int s : shape_sequence(g, indices, rng)) {
     BodySpec b;
@@ -115,8 +129,9 @@ void place_random(const GeneratorSpec& g, const Region& region, const ShapeLibra
 void place_lattice(const GeneratorSpec& g, const Region& region, const ShapeLibrary& lib,
                    std::vector<BodySpec>& bodies) {
   double spacing = 0.0;  // m, the largest bounding diameter the mix can draw
-  for (const auto& [name, fraction] : g.shapes)
-    spacing = std::max(spacing, 2.0 * lib.shapes[lib.find(name)].bounding_radius * g.scale_max);
+  for (const auto& entry : g.shapes)
+    spacing =
+        std::max(spacing, 2.0 * lib.shapes[lib.find(entry.first)].bounding_radius * g.scale_max);
   if (!(spacing > 0.0)) fail_count(g, "the shapes have no size (bounding radius 0)");
   const std::vector<Vec3> sites = region.lattice(spacing);
   if (sites.size() < bodies.size())
@@ -132,13 +147,13 @@ void place_lattice(const GeneratorSpec& g, const Region& region, const ShapeLibr
 std::vector<BodySpec> expand_bodies(const Scene& scene, const ShapeLibrary& lib) {
   std::vector<BodySpec> out;
   for (const BodySpec& b : scene.bodies) {
-    shape_index(lib, b.shape, b.loc, "shape");
+    check_sphere(scene, lib.shapes[shape_index(lib, b.shape, b.loc, "shape")], b.loc, "shape");
     out.push_back(b);
   }
   for (std::size_t k = 0; k < scene.generators.size(); ++k) {
     const GeneratorSpec& g = scene.generators[k];
     std::mt19937_64 rng = generator_rng(scene.simulation.seed, k);
-    std::vector<BodySpec> bodies = draw_bodies(g, lib, rng);
+    std::vector<BodySpec> bodies = draw_bodies(scene, g, lib, rng);
     const Region region(g.region);
     if (g.kind == GeneratorSpec::Kind::random)
       place_random(g, region, lib, bodies, rng);

@@ -38,7 +38,10 @@ size_t farthest_from_line(const std::vector<Vec3>& p, const Vec3& a, const Vec3&
   double dmax = -1.0;
   for (size_t i = 0; i < p.size(); ++i) {
     const double d = (p[i] - a).cross(dir).norm();
-    if (d > dmax) { dmax = d; best = i; }
+    if (d > dmax) {
+      dmax = d;
+      best = i;
+    }
   }
   return best;
 }

@@ -60,8 +60,8 @@ std::vector<std::vector<int>> merge_coplanar(const std::vector<Vec3>& vertices,
   for (const auto& [edge, t] : owner) {
     auto it = owner.find({edge.second, edge.first});
     if (it == owner.end()) continue;
-    const double angle = std::atan2(normals[t].cross(normals[it->second]).norm(),
-                                    normals[t].dot(normals[it->second]));
+    const double angle =
+        std::atan2(normals[t].cross(normals[it->second]).norm(), normals[t].dot(normals[it->second]));
     if (angle < angle_tolerance) parent[find_root(parent, t)] = find_root(parent, it->second);
   }
   std::map<int, std::vector<int>> groups;  // ordered by root: deterministic face order

@@ -41,8 +41,8 @@ Moments shifted(const Moments& local, const Vec3& p) {
   Moments m;
   m.volume = local.volume;
   m.first = local.volume * p + local.first;
-  m.second = local.volume * p * p.transpose() + p * local.first.transpose() +
-             local.first * p.transpose() + local.second;
+  m.second = local.volume * p * p.transpose() + p * local.first.transpose() + local.first * p.transpose() +
+             local.second;
   return m;
 }
 
@@ -90,9 +90,9 @@ Moments face_prisms(const Shape& s) {
 
 // Cylindrical wedge of an edge: points a + s t + rho (cos phi u + sin phi w), phi in [0, theta].
 struct Wedge {
-  Vec3 t, u, w;        // unit edge direction; first face normal; rotation direction
-  double theta = 0.0;  // rad, exterior dihedral angle (2 pi for a lone segment)
-  double length = 0.0; // m
+  Vec3 t, u, w;         // unit edge direction; first face normal; rotation direction
+  double theta = 0.0;   // rad, exterior dihedral angle (2 pi for a lone segment)
+  double length = 0.0;  // m
 };
 
 Vec3 any_perpendicular(const Vec3& t) {
@@ -140,8 +140,8 @@ Moments wedge_moments(const Wedge& w, double r) {
   m.volume = area * L;
   m.first = area * L * L / 2.0 * w.t + L * r * r * r / 3.0 * e1;
   const Vec3 g = L * L / 2.0 * r * r * r / 3.0 * e1;
-  m.second = area * L * L * L / 3.0 * w.t * w.t.transpose() + w.t * g.transpose() +
-             g * w.t.transpose() + L * std::pow(r, 4) / 4.0 * e2;
+  m.second = area * L * L * L / 3.0 * w.t * w.t.transpose() + w.t * g.transpose() + g * w.t.transpose() +
+             L * std::pow(r, 4) / 4.0 * e2;
   return m;
 }
 
@@ -243,7 +243,7 @@ void compute_mass_properties(Shape& s) {
     throw InputError("shape '" + s.name + "': zero volume (give a radius > 0 or a solid polyhedron)");
   const Vec3 center = m.first / m.volume;
   const Mat3 spread = m.second / m.volume - center * center.transpose();  // m^2, about the centre
-  const Mat3 inertia = spread.trace() * Mat3::Identity() - spread;       // m^2, I / mass
+  const Mat3 inertia = spread.trace() * Mat3::Identity() - spread;        // m^2, I / mass
   Vec3 moments;
   const Mat3 axes = principal_axes(inertia, moments);
   for (Vec3& v : s.vertices) v = axes.transpose() * (v - center);

@@ -86,7 +86,8 @@ TriangleMesh read_ascii_stl(const std::string& bytes, const std::string& path) {
     if (word == "vertex") {
       corners.push_back(read_xyz(words, path, n));
     } else if (word == "endfacet") {
-      if (corners.size() != 3) bad_line(path, n, "a facet needs 3 vertices, it has " + std::to_string(corners.size()));
+      if (corners.size() != 3)
+        bad_line(path, n, "a facet needs 3 vertices, it has " + std::to_string(corners.size()));
       welder.triangle(corners[0], corners[1], corners[2]);
       corners.clear();
     }
@@ -138,8 +139,9 @@ TriangleMesh read_stl(const std::string& path) {
     if (bytes.size() == 84 + 50 * static_cast<size_t>(count)) return read_binary_stl(bytes);
   }
   if (bytes.compare(0, 5, "solid") != 0)
-    throw InputError(input_message(path, 0, "", "not an STL file (neither 'solid ...' text nor a "
-                                                "binary of 84 + 50 n bytes)"));
+    throw InputError(input_message(path, 0, "",
+                                   "not an STL file (neither 'solid ...' text nor a "
+                                   "binary of 84 + 50 n bytes)"));
   TriangleMesh mesh = read_ascii_stl(bytes, path);
   if (mesh.triangles.empty()) throw InputError(input_message(path, 0, "", "no facet in the STL file"));
   return mesh;

@@ -32,8 +32,9 @@ ShapeLibrary load_shape_library(const std::vector<std::string>& paths) {
     for (Shape& s : read_shape_file(path)) {
       const int previous = library.find(s.name);
       if (previous >= 0)
-        throw InputError(input_message(path, 0, "name", "shape '" + s.name + "' is already defined in " +
-                                                            origin[previous] + " (shape names must be unique)"));
+        throw InputError(input_message(path, 0, "name",
+                                       "shape '" + s.name + "' is already defined in " + origin[previous] +
+                                           " (shape names must be unique)"));
       origin.push_back(path);
       library.shapes.push_back(std::move(s));
     }

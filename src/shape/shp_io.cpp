@@ -18,9 +18,9 @@ struct Token {
 };
 
 const std::vector<std::string> kShpKeys = {
-    "name", "radius", "preCompDone", "nv", "ne", "nf", "volume", "I/m", "position", "orientation",
-    "obb.extent", "obb.center", "obb.e1", "obb.e2", "obb.e3", "OBBtreeLevel", "MCnstep",
-    "fibObbOption", "isSurface"};
+    "name",   "radius",       "preCompDone", "nv",           "ne",         "nf",     "volume",
+    "I/m",    "position",     "orientation", "obb.extent",   "obb.center", "obb.e1", "obb.e2",
+    "obb.e3", "OBBtreeLevel", "MCnstep",     "fibObbOption", "isSurface"};
 
 std::vector<Token> tokenize(std::istream& in) {
   std::vector<Token> tokens;
@@ -57,6 +57,10 @@ class BlockParser {
     for (;;) {
       const Token& t = next("", "a key or '>'", open_line);
       if (t.text == ">") return b;
+      if (t.text == "<")
+        throw InputError(input_message(file_, t.line, "",
+                                       "'<' inside the shape block opened at line " +
+                                           std::to_string(open_line) + " (a '>' is missing)"));
       key(b, t);
     }
   }
@@ -64,8 +68,8 @@ class BlockParser {
  private:
   const Token& next(const std::string& key, const std::string& what, int line) {
     if (pos_ >= tokens_.size())
-      throw InputError(input_message(file_, line, key, "end of file where " + what +
-                                                           " was expected (a shape block ends with '>')"));
+      throw InputError(input_message(
+          file_, line, key, "end of file where " + what + " was expected (a shape block ends with '>')"));
     return tokens_[pos_++];
   }
 
@@ -83,8 +87,8 @@ class BlockParser {
     char* end = nullptr;
     const long v = std::strtol(t.text.c_str(), &end, 10);
     if (end == t.text.c_str() || *end != '\0' || v < 0 || v > max)
-      throw InputError(input_message(file_, t.line, key, "'" + t.text + "' is not an integer in 0.." +
-                                                             std::to_string(max)));
+      throw InputError(input_message(file_, t.line, key,
+                                     "'" + t.text + "' is not an integer in 0.." + std::to_string(max)));
     return static_cast<int>(v);
   }
 
@@ -96,10 +100,11 @@ class BlockParser {
   void key(Block& b, const Token& t) {
     if (header_key(b, t) || geometry_key(b.shape, t) || property_key(b, t) || ignored_key(t)) return;
     if (t.text == "isSurface")
-      throw InputError(input_message(file_, t.line, t.text, "open surface shapes are not supported "
-                                                            "(use an stl driver for a surface)"));
-    throw InputError(input_message(file_, t.line, t.text, "unknown key in a shape block" +
-                                                              did_you_mean_key(t.text, kShpKeys)));
+      throw InputError(input_message(file_, t.line, t.text,
+                                     "open surface shapes are not supported "
+                                     "(use an stl driver for a surface)"));
+    throw InputError(input_message(file_, t.line, t.text,
+                                   "unknown key in a shape block" + did_you_mean_key(t.text, kShpKeys)));
   }
 
   bool header_key(Block& b, const Token& t) {
@@ -189,7 +194,8 @@ Shape finish(Block b, const std::string& file) {
   if (!b.has_name) throw InputError(input_message(file, b.line, "name", "missing in this shape block"));
   const std::string where = "shape '" + s.name + "': ";
   if (!b.has_radius || !(s.radius > 0.0))
-    throw InputError(input_message(file, b.line, "radius", where + "missing or not > 0 (a Minkowski radius, m)"));
+    throw InputError(
+        input_message(file, b.line, "radius", where + "missing or not > 0 (a Minkowski radius, m)"));
   if (s.vertices.empty()) throw InputError(input_message(file, b.line, "nv", where + "no vertex"));
   try {
     if (b.precomputed && b.has_volume && b.has_inertia) {

@@ -27,7 +27,8 @@ void check_indices(const Shape& s) {
   for (const auto& e : s.edges) {
     check(e[0]);
     check(e[1]);
-    if (e[0] == e[1]) fail(s, "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) + " joins a vertex to itself");
+    if (e[0] == e[1])
+      fail(s, "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) + " joins a vertex to itself");
   }
   for (const auto& f : s.faces) {
     if (f.size() < 3) fail(s, "a face has fewer than 3 vertices");
@@ -91,13 +92,25 @@ void check_edges_match(const Shape& s, const std::map<EdgeKey, std::vector<int>>
                 " face edge(s) (leave edges out to have them derived from the faces)");
 }
 
+// Zero-length edges and zero-area faces (repeated vertices) have no direction or normal.
+void check_sizes(const Shape& s) {
+  for (const auto& e : s.edges)
+    if (s.vertices[e[0]] == s.vertices[e[1]])
+      fail(s, "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) +
+                  " has zero length (repeated vertex)");
+  for (size_t f = 0; f < s.faces.size(); ++f)
+    if (!(polygon_normal(s.vertices, s.faces[f]).norm() > 0.5))  // Eigen leaves a zero vector zero
+      fail(s, "face " + std::to_string(f) + " has zero area");
+}
+
 void prepare_faceless(Shape& s) {
   const size_t nv = s.vertices.size();
   if (nv == 1 && s.edges.empty()) return;
   if (nv == 2 && s.edges.empty()) s.edges.push_back({0, 1});
   if (nv == 2 && s.edges.size() == 1) return;
-  fail(s, "has " + std::to_string(nv) + " vertices and no face: only a sphere (1 vertex) or a "
-          "segment (2 vertices, 1 edge) may have no face (give faces, or hull the points)");
+  fail(s, "has " + std::to_string(nv) +
+              " vertices and no face: only a sphere (1 vertex) or a "
+              "segment (2 vertices, 1 edge) may have no face (give faces, or hull the points)");
 }
 
 }  // namespace
@@ -117,9 +130,12 @@ void prepare_topology(Shape& s) {
   check_indices(s);
   if (s.faces.empty()) {
     prepare_faceless(s);
+    check_sizes(s);
     s.face_normals.clear();
     return;
   }
+  // One polygon alone (as some Rockable libraries give plates): its back side is added.
+  if (s.faces.size() == 1) s.faces.emplace_back(s.faces[0].rbegin(), s.faces[0].rend());
   // A plate (two faces in one plane) keeps its two opposite orders as given.
   const bool plate = s.faces.size() == 2 && thickness(s) <= 1e-9 * extent(s);
   if (!plate) orient_solid_faces(s);
@@ -133,6 +149,7 @@ void prepare_topology(Shape& s) {
   } else {
     check_edges_match(s, by_edge);
   }
+  check_sizes(s);
   s.face_normals.clear();
   for (const auto& f : s.faces) s.face_normals.push_back(polygon_normal(s.vertices, f));
 }

@@ -16,7 +16,8 @@ struct EdgeFaces {
 // Unit normal of a polygon by Newell's method (robust for slightly non-planar polygons).
 Vec3 polygon_normal(const std::vector<Vec3>& vertices, const std::vector<int>& face);
 
-// Checks indices and topology, reverses faces that point inward (solids only), fills
+// Checks indices and topology, reverses faces that point inward (solids only), adds the
+// back face of a lone polygon (a plate given with one face), fills
 // `edges` from the faces when empty (or checks they match) and `face_normals`.
 // Throws InputError "shape 'NAME': ..." on a topology the mass properties cannot handle.
 void prepare_topology(Shape& s);

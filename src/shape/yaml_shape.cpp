@@ -11,8 +11,9 @@
 namespace polydem {
 namespace {
 
-const std::vector<std::string> kYamlKeys = {"name", "radius", "vertices", "faces", "edges", "points",
-                                            "volume", "inertia_per_mass", "position", "orientation"};
+const std::vector<std::string> kYamlKeys = {"name",     "radius",     "vertices", "faces",
+                                            "edges",    "points",     "volume",   "inertia_per_mass",
+                                            "position", "orientation"};
 
 int line_of(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
@@ -104,7 +105,8 @@ void read_topology(const ShapeEntry& e, Shape& s) {
       s.edges.push_back({pair[0], pair[1]});
     }
   if (s.vertices.size() > 2 && s.faces.empty())
-    e.fail(e.node()["vertices"], "vertices", "more than 2 vertices need 'faces' (or write 'points' to take the hull)");
+    e.fail(e.node()["vertices"], "vertices",
+           "more than 2 vertices need 'faces' (or write 'points' to take the hull)");
 }
 
 void read_precomputed(const ShapeEntry& e, Shape& s) {
@@ -156,7 +158,8 @@ std::vector<Shape> read_yaml_shapes(const std::string& path) {
     throw InputError(input_message(path, e.mark.line + 1, "", "YAML syntax: " + e.msg));
   }
   if (!root.IsSequence())
-    throw InputError(input_message(path, line_of(root), "", "a YAML shape file is a list of shapes ('- name: ...')"));
+    throw InputError(
+        input_message(path, line_of(root), "", "a YAML shape file is a list of shapes ('- name: ...')"));
   std::vector<Shape> shapes;
   try {
     for (const auto& node : root) shapes.push_back(read_entry(ShapeEntry(node, path), path));

@@ -45,16 +45,25 @@ struct Reader {
   }
 };
 
-// Active slots with their pair, so the next rebuild hands their history over by key.
-struct SavedSlot { BodyPair pair; ContactSlot slot; };
+// Active slots with their pair, so the next rebuild hands their history over by key. Field by
+// field: no padding bytes in the file, so equal states give equal files.
+template <class IO, class Slot>
+void slot_fields(IO& io, Slot& s) {
+  io.pod(s.features.type); io.pod(s.features.a); io.pod(s.features.b); io.pod(s.active);
+  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
+}
 
 void write_active(Writer& w, const PairList& list) {
-  std::vector<SavedSlot> saved;
+  std::uint64_t n = 0;
+  for (const ContactSlot& s : list.slots) n += s.active;
+  w.pod(n);
   for (std::size_t k = 0; k < list.size(); ++k)
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.slots[s].active) saved.push_back({list.pairs[k], list.slots[s]});
-  w.pod<std::uint64_t>(saved.size());
-  for (const SavedSlot& s : saved) w.pod(s);
+      if (list.slots[s].active) {
+        w.pod(list.pairs[k].i);
+        w.pod(list.pairs[k].j);
+        slot_fields(w, list.slots[s]);
+      }
 }
 
 void read_active(Reader& r, PairList& list) {
@@ -63,13 +72,16 @@ void read_active(Reader& r, PairList& list) {
   list = PairList{};
   list.slot_begin.push_back(0);
   for (std::uint64_t e = 0; e < n; ++e) {
-    SavedSlot s;
-    r.pod(s);
-    if (list.pairs.empty() || list.pairs.back().i != s.pair.i || list.pairs.back().j != s.pair.j) {
-      list.pairs.push_back(s.pair);
+    BodyPair pair;
+    ContactSlot slot;
+    r.pod(pair.i);
+    r.pod(pair.j);
+    slot_fields(r, slot);
+    if (list.pairs.empty() || list.pairs.back().i != pair.i || list.pairs.back().j != pair.j) {
+      list.pairs.push_back(pair);
       list.slot_begin.push_back(list.slot_begin.back());
     }
-    list.slots.push_back(s.slot);
+    list.slots.push_back(slot);
     ++list.slot_begin.back();
   }
   list.resize_results();

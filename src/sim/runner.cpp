@@ -23,9 +23,22 @@ void on_interrupt(int) { g_interrupted = true; }
 
 using Clock = std::chrono::steady_clock;
 
-std::int64_t steps_for(std::optional<double> every, double dt) {
-  return every ? std::max<std::int64_t>(1, std::llround(*every / dt)) : 0;
-}
+// Fires at 0, every, 2 every, ... of simulated time, at the step nearest to each.
+class Schedule {
+ public:
+  Schedule(std::optional<double> every, double now) : every_(every ? *every : 0.0) {
+    if (every_ > 0) next_ = std::ceil(now / every_ - 1e-9) * every_;
+  }
+  bool due(double t, double dt) {
+    if (every_ <= 0 || t < next_ - 0.5 * dt) return false;
+    while (next_ <= t + 0.5 * dt) next_ += every_;
+    return true;
+  }
+  bool enabled() const { return every_ > 0; }
+
+ private:
+  double every_, next_ = 0.0;
+};
 
 std::string numbered(const char* stem, std::int64_t n, const char* ext) {
   char buf[64];
@@ -160,13 +173,16 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const double dt = sim.dt();
   const double end_time = o.until ? *o.until : sim.scene().simulation.duration;
   const std::int64_t last_step = std::llround(end_time / dt);
-  const std::int64_t vtk_steps = steps_for(out.vtk_every, dt), csv_steps = steps_for(out.csv_every, dt),
-                     ckpt_steps = steps_for(out.checkpoint_every, dt);
+  Schedule vtk(out.vtk_every, sim.time()), csv(out.csv_every, sim.time()), ckpt(out.checkpoint_every, sim.time());
+  ckpt.due(sim.time(), dt);  // nothing to save at the start (or we resume from this very checkpoint)
   constexpr std::int64_t kCheckSteps = 100;  // finiteness check and last-good copy period
   OutputWriter writer(sim, o, progress);
   if (o.resume.empty()) {
-    if (vtk_steps) writer.frame();
-    if (csv_steps) writer.energy_row();
+    if (vtk.due(sim.time(), dt)) writer.frame();
+    if (csv.due(sim.time(), dt)) writer.energy_row();
+  } else {  // resuming: what is due now was written before the checkpoint
+    vtk.due(sim.time(), dt);
+    csv.due(sim.time(), dt);
   }
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
@@ -185,9 +201,9 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       last_good = sim.bodies;
       good_step = s;
     }
-    if (vtk_steps && s % vtk_steps == 0) writer.frame();
-    if (csv_steps && s % csv_steps == 0) writer.energy_row();
-    if (ckpt_steps && s % ckpt_steps == 0 && s != last_step) writer.checkpoint(sim);
+    if (vtk.due(sim.time(), dt)) writer.frame();
+    if (csv.due(sim.time(), dt)) writer.energy_row();
+    if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
     if (g_interrupted) {
       const std::string path = writer.checkpoint(sim);
       std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run SCENE --resume %s\n",

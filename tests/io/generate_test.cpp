@@ -1,11 +1,12 @@
 // Body generators: counts, no overlap (brute force), inside the region, reproducibility,
 // mix fractions and orientation statistics.
+#include "io/generate.hpp"
+
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 
-#include "io/generate.hpp"
 #include "io_fixture.hpp"
 
 using namespace polydem;
@@ -263,4 +264,18 @@ TEST_CASE("unknown shape names suggest the nearest known one", "[generate]") {
   REQUIRE(all.size() == 6);
   CHECK(all[0].loc.line == 9);
   CHECK(all[5].loc.line == 17);
+}
+
+TEST_CASE("contact_sphere rejects a polyhedral shape", "[generate]") {
+  ShapeLibrary lib = library();
+  Shape cube = sphere_shape("cube", 0.001);
+  cube.vertices = {Vec3(1, 1, 1), Vec3(-1, -1, -1)};  // any shape with more than one vertex
+  lib.shapes.push_back(cube);
+  Scene s = scene_with(generator(10, kBox));
+  s.forces.contact.present = s.forces.contact.sphere = true;
+  CHECK(test::input_error_of([&] { expand_bodies(s, lib); }).empty());
+  s.generators[0].shapes = {{"small", 0.5}, {"cube", 0.5}};
+  const std::string msg = test::input_error_of([&] { expand_bodies(s, lib); });
+  CHECK((contains(msg, "scene.yaml:17:") && contains(msg, "not a sphere") &&
+         contains(msg, "contact_polyhedron")));
 }

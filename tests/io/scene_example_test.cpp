@@ -206,4 +206,10 @@ TEST_CASE("defaults: output beside the scene, optional blocks empty", "[scene]")
   CHECK((s.bodies.empty() && s.generators.empty() && s.drivers.empty()));
   CHECK_FALSE(s.forces.contact.present);
   CHECK_FALSE(s.forces.gravity.has_value());
+  // Empty lists and an operator without parameters take the defaults.
+  const Scene e = load_scene(dir.write("a/empty.yaml",
+                                       "simulation: {duration: 1}\nbodies:\n"
+                                       "drivers:\nforces:\n  - gravity_force:\n"));
+  CHECK((e.bodies.empty() && e.drivers.empty()));
+  CHECK((e.forces.gravity.value() - Vec3(0, 0, -9.807)).norm() == 0.0);
 }

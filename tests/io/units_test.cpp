@@ -1,7 +1,8 @@
 // Unit conversion: every SCENE.md unit against its SI definition, and the errors.
+#include "io/units.hpp"
+
 #include <catch2/catch.hpp>
 
-#include "io/units.hpp"
 #include "io_fixture.hpp"
 #include "polydem/math.hpp"
 

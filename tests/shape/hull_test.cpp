@@ -1,12 +1,12 @@
 // Convex hulls: polygon faces, corners only, degenerate sets.
-#include <catch2/catch.hpp>
+#include "shape/hull.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <set>
 
 #include "polydem/error.hpp"
 #include "reference_body.hpp"
-#include "shape/hull.hpp"
 
 using namespace polydem;
 
@@ -23,7 +23,8 @@ void check_polytope(const Shape& s) {
     const Vec3 n = s.face_normals[f];
     CHECK(n.norm() == Approx(1.0));
     for (size_t i = 0; i < p.size(); ++i) {
-      const Vec3 a = s.vertices[p[i]], b = s.vertices[p[(i + 1) % p.size()]], c = s.vertices[p[(i + 2) % p.size()]];
+      const Vec3 a = s.vertices[p[i]], b = s.vertices[p[(i + 1) % p.size()]],
+                 c = s.vertices[p[(i + 2) % p.size()]];
       CHECK((b - a).cross(c - b).dot(n) > 0);  // strictly convex, turning left about n
     }
     for (const Vec3& v : s.vertices) CHECK(n.dot(v - s.vertices[p[0]]) < 1e-12);  // outward
@@ -87,8 +88,9 @@ TEST_CASE("degenerate sets with r > 0: sphere, segment, two-sided plate", "[hull
   CHECK(rod.vertices.size() == 2);
   CHECK(rod.edges.size() == 1);
   CHECK(rod.faces.empty());
-  const Shape plate = build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0),
-                                        Vec3(0.5, 0, 0), Vec3(0.2, 0.3, 0)}, 0.1, "plate");
+  const Shape plate = build_hull_shape(
+      {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0.5, 0, 0), Vec3(0.2, 0.3, 0)}, 0.1,
+      "plate");
   CHECK(plate.vertices.size() == 4);
   CHECK(plate.edges.size() == 4);
   REQUIRE(plate.faces.size() == 2);
@@ -98,8 +100,9 @@ TEST_CASE("degenerate sets with r > 0: sphere, segment, two-sided plate", "[hull
 }
 
 TEST_CASE("bad hull input is an InputError naming the fix", "[hull]") {
-  CHECK_THROWS_WITH(build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, 0.0, "flat"),
-                    Catch::Contains("degenerate hull") && Catch::Contains("give --radius > 0 or more points"));
+  CHECK_THROWS_WITH(
+      build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, 0.0, "flat"),
+      Catch::Contains("degenerate hull") && Catch::Contains("give --radius > 0 or more points"));
   CHECK_THROWS_WITH(build_hull_shape({Vec3(0, 0, 0)}, 0.0, "dot"), Catch::Contains("degenerate hull"));
   CHECK_THROWS_WITH(build_hull_shape({Vec3(0, 0, 0)}, -0.1, "dot"), Catch::Contains("must be >= 0"));
   CHECK_THROWS_AS(build_hull_shape({}, 0.1, "none"), InputError);

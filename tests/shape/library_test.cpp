@@ -18,7 +18,8 @@ TEST_CASE("shipped library loads with unique names and documented sizes", "[libr
   const Shape& cube = lib.shapes[lib.find("cube")];
   const double a = 0.009, r = 0.0005;
   CHECK(cube.radius == Approx(r).epsilon(1e-15));
-  CHECK(cube.volume == Approx(a * a * a + 6 * a * a * r + 3 * kPi * a * r * r + 4.0 / 3.0 * kPi * r * r * r).epsilon(1e-13));
+  CHECK(cube.volume ==
+        Approx(a * a * a + 6 * a * a * r + 3 * kPi * a * r * r + 4.0 / 3.0 * kPi * r * r * r).epsilon(1e-13));
   for (const Vec3& v : cube.vertices) CHECK(v.cwiseAbs().maxCoeff() <= a / 2 * (1 + 1e-12));
   for (const Shape& s : lib.shapes) {
     CHECK(s.radius == Approx(s.name == "sphere" ? 0.005 : 0.0005));

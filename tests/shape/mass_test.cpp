@@ -1,15 +1,14 @@
 // Mass properties of rounded bodies against closed forms and independent numeric integration.
-#include <catch2/catch.hpp>
-
-#include <algorithm>
-#include <random>
+#include "shape/mass.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <random>
 
 #include "polydem/error.hpp"
 #include "reference_body.hpp"
 #include "shape/hull.hpp"
-#include "shape/mass.hpp"
 
 using namespace polydem;
 
@@ -71,6 +70,7 @@ TEST_CASE("box a x b x c: I/m = (b^2 + c^2)/12 ...", "[mass]") {
   CHECK(relative_error(s.inertia_per_mass, Vec3(2.0 / 12, 5.0 / 12, 5.0 / 12)) < 1e-14);
   // Principal axis of the smallest moment is the long side: vertices have |x| = 1 there.
   for (const Vec3& v : s.vertices) CHECK(std::abs(v.x()) == Approx(1.0));
+  CHECK(s.input_rotation.coeffs() == Quat::Identity().coeffs());  // already principal: axes kept
 }
 
 TEST_CASE("rounded cube: exact Steiner volume, inertia against quasi-Monte-Carlo", "[mass]") {
@@ -104,6 +104,18 @@ TEST_CASE("plate: slab, wedges and sectors of a flat square", "[mass]") {
   CHECK(relative_error(s.inertia_per_mass, eigenvalues(m.inertia_per_mass)) < 3e-3);
 }
 
+TEST_CASE("a plate given as one polygon gets its back face", "[mass]") {
+  Shape s;
+  s.name = "square";
+  s.radius = 0.1;
+  s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  s.faces = {{0, 1, 2, 3}};
+  compute_mass_properties(s);
+  CHECK(s.faces.size() == 2);
+  CHECK(s.edges.size() == 4);
+  CHECK(s.volume == Approx(2 * 0.1 + 2 * kPi * 0.01 + 4.0 / 3.0 * kPi * 0.001).epsilon(1e-14));
+}
+
 TEST_CASE("random rock: Steiner volume from its faces, inertia against quasi-Monte-Carlo", "[mass]") {
   const double r = 0.1;
   const Shape s = build_hull_shape(test::rock_points(7, 40, 1.0, 0.7, 0.5), r, "rock");
@@ -113,7 +125,9 @@ TEST_CASE("random rock: Steiner volume from its faces, inertia against quasi-Mon
     const auto& poly = s.faces[f];
     Vec3 area = Vec3::Zero();
     for (size_t i = 1; i + 1 < poly.size(); ++i)
-      area += 0.5 * (s.vertices[poly[i]] - s.vertices[poly[0]]).cross(s.vertices[poly[i + 1]] - s.vertices[poly[0]]);
+      area +=
+          0.5 *
+          (s.vertices[poly[i]] - s.vertices[poly[0]]).cross(s.vertices[poly[i + 1]] - s.vertices[poly[0]]);
     ap += area.norm();
     vp += area.dot(s.vertices[poly[0]]) / 3.0;
     for (size_t i = 0; i < poly.size(); ++i) {
@@ -138,7 +152,8 @@ TEST_CASE("random rock: Steiner volume from its faces, inertia against quasi-Mon
 
 TEST_CASE("large radius on an irregular core: wedges and sectors dominate", "[mass]") {
   // r comparable to the core: the edge and vertex pieces carry most of the inertia.
-  const Shape s = build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.2, 0.6, 0), Vec3(0.1, 0.3, 0.4)}, 0.5, "tet");
+  const Shape s =
+      build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.2, 0.6, 0), Vec3(0.1, 0.3, 0.4)}, 0.5, "tet");
   const test::NumericMoments m = test::integrate_rounded(s, 1 << 18);
   CHECK(m.volume == Approx(s.volume).epsilon(2e-3));
   CHECK(relative_error(s.inertia_per_mass, eigenvalues(m.inertia_per_mass)) < 2e-3);
@@ -179,6 +194,13 @@ TEST_CASE("bad shapes for the mass computation are InputErrors", "[mass]") {
   s.radius = 0.1;
   s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   CHECK_THROWS_AS(compute_mass_properties(s), InputError);  // 3 vertices, no face
+  s.vertices = {Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("zero length"));
+  s.edges.clear();
+  s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0)};
+  s.faces = {{0, 1, 2}, {1, 0, 3}, {2, 1, 3}, {0, 2, 3}};  // face 0: collinear corners
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("zero area"));
+  s.faces.clear();
   s.radius = -1;
   s.vertices = {Vec3(0, 0, 0)};
   CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("must be >= 0"));

@@ -1,11 +1,11 @@
 // Point lists, OBJ and STL (ASCII and binary, including a binary header that starts with "solid").
-#include <catch2/catch.hpp>
+#include "shape/point_sources.hpp"
 
+#include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
 
 #include "polydem/error.hpp"
-#include "shape/point_sources.hpp"
 #include "temp_file.hpp"
 
 using namespace polydem;
@@ -34,7 +34,8 @@ std::string ascii_stl() {
   for (const auto& tri : kQuad) {
     s += "  facet normal 0 0 1\n    outer loop\n";
     for (const auto& v : tri)
-      s += "      vertex " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+      s += "      vertex " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) +
+           "\n";
     s += "    endloop\n  endfacet\n";
   }
   return s + "endsolid quad\n";
@@ -57,8 +58,9 @@ TEST_CASE("STL: ASCII, binary, and binary whose header begins with 'solid'", "[p
 }
 
 TEST_CASE("STL errors name the file and line", "[points]") {
-  CHECK_THROWS_WITH(read_stl(test::write_temp("bad.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n")),
-                    Catch::Contains("bad.stl:4") && Catch::Contains("three numbers"));
+  CHECK_THROWS_WITH(
+      read_stl(test::write_temp("bad.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n")),
+      Catch::Contains("bad.stl:4") && Catch::Contains("three numbers"));
   CHECK_THROWS_WITH(read_stl(test::write_temp("junk.stl", "hello")), Catch::Contains("not an STL file"));
   CHECK_THROWS_WITH(read_stl("/nonexistent.stl"), Catch::Contains("cannot open"));
 }

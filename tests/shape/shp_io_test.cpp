@@ -1,12 +1,12 @@
 // Rockable .shp reading and writing.
-#include <catch2/catch.hpp>
+#include "shape/shp_io.hpp"
 
+#include <catch2/catch.hpp>
 #include <sstream>
 
 #include "polydem/error.hpp"
 #include "polydem/shape_library.hpp"
 #include "shape/hull.hpp"
-#include "shape/shp_io.hpp"
 #include "temp_file.hpp"
 
 using namespace polydem;
@@ -109,8 +109,9 @@ TEST_CASE("a Rockable library loads: precomputed values kept, others computed", 
 
 TEST_CASE("write then read gives back the same shapes, bit for bit", "[shp]") {
   std::vector<Shape> shapes;
-  shapes.push_back(build_hull_shape({Vec3(0, 0, 0), Vec3(1, 0.1, 0), Vec3(0.2, 1, 0.1), Vec3(0.3, 0.2, 0.9),
-                                     Vec3(0.9, 0.8, 0.7)}, 0.05, "rock"));
+  shapes.push_back(build_hull_shape(
+      {Vec3(0, 0, 0), Vec3(1, 0.1, 0), Vec3(0.2, 1, 0.1), Vec3(0.3, 0.2, 0.9), Vec3(0.9, 0.8, 0.7)}, 0.05,
+      "rock"));
   shapes.push_back(build_hull_shape({Vec3(0, 0, 0), Vec3(0, 0, 2)}, 0.3, "rod"));
   const std::string path = test::temp_path("round_trip.shp");
   write_shp_file(path, shapes);
@@ -131,12 +132,19 @@ TEST_CASE("write then read gives back the same shapes, bit for bit", "[shp]") {
 }
 
 TEST_CASE("bad .shp input names file, line and key", "[shp]") {
-  CHECK(message_of("<\nname a\nradus 0.1\n>\n") == "lib.shp:3: key 'radus': unknown key in a shape block (did you mean 'radius'?)");
-  CHECK_THAT(message_of("<\nname a\nradius x\n>\n"), Catch::Contains("lib.shp:3: key 'radius': 'x' is not a number"));
-  CHECK_THAT(message_of("<\nname a\nradius 0.1\nnv 1\n0 0 0\n"), Catch::Contains("a shape block ends with '>'"));
-  CHECK_THAT(message_of("<\nname a\nradius -0.1\nnv 1\n0 0 0\n>"), Catch::Contains("lib.shp:1: key 'radius'"));
+  CHECK(message_of("<\nname a\nradus 0.1\n>\n") ==
+        "lib.shp:3: key 'radus': unknown key in a shape block (did you mean 'radius'?)");
+  CHECK_THAT(message_of("<\nname a\nradius x\n>\n"),
+             Catch::Contains("lib.shp:3: key 'radius': 'x' is not a number"));
+  CHECK_THAT(message_of("<\nname a\nradius 0.1\nnv 1\n0 0 0\n"),
+             Catch::Contains("a shape block ends with '>'"));
+  CHECK_THAT(message_of("<\nname a\nradius 0.1\n<\nname b\n>\n"),
+             Catch::Contains("lib.shp:4: '<' inside the shape block opened at line 1"));
+  CHECK_THAT(message_of("<\nname a\nradius -0.1\nnv 1\n0 0 0\n>"),
+             Catch::Contains("lib.shp:1: key 'radius'"));
   CHECK_THAT(message_of("<\nname a\nradius 0.1\nnv 3\n0 0 0\n1 0 0\n0 1 0\n>"), Catch::Contains("no face"));
-  CHECK_THAT(message_of("<\nname a\nradius 0.1\nnv 1\n0 0 0\nisSurface\n>"), Catch::Contains("not supported"));
+  CHECK_THAT(message_of("<\nname a\nradius 0.1\nnv 1\n0 0 0\nisSurface\n>"),
+             Catch::Contains("not supported"));
 }
 
 TEST_CASE("library: missing file, unknown type and duplicate names are InputErrors", "[shp]") {

@@ -44,11 +44,14 @@ TEST_CASE("YAML shapes: points hulled, vertices with faces, precomputed values k
 }
 
 TEST_CASE("YAML shape errors: line, key and suggestion", "[yaml]") {
-  const std::string typo = test::write_temp("typo.yaml", "- name: a\n  radius: 0.001\n  vertice: [[0, 0, 0]]\n");
+  const std::string typo =
+      test::write_temp("typo.yaml", "- name: a\n  radius: 0.001\n  vertice: [[0, 0, 0]]\n");
   CHECK_THROWS_WITH(read_shape_file(typo), Catch::Contains("typo.yaml:3: key 'vertice'") &&
                                                Catch::Contains("did you mean 'vertices'?"));
-  const std::string unit = test::write_temp("unit.yaml", "- name: a\n  radius: 1 inch\n  points: [[0, 0, 0]]\n");
+  const std::string unit =
+      test::write_temp("unit.yaml", "- name: a\n  radius: 1 inch\n  points: [[0, 0, 0]]\n");
   CHECK_THROWS_WITH(read_shape_file(unit), Catch::Contains("unit.yaml:2: key 'radius'"));
-  const std::string flat = test::write_temp("flat.yaml", "- name: a\n  radius: 0.1\n  vertices: [[0,0,0],[1,0,0],[0,1,0]]\n");
+  const std::string flat =
+      test::write_temp("flat.yaml", "- name: a\n  radius: 0.1\n  vertices: [[0,0,0],[1,0,0],[0,1,0]]\n");
   CHECK_THROWS_WITH(read_shape_file(flat), Catch::Contains("flat.yaml:3") && Catch::Contains("'points'"));
 }
