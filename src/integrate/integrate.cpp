@@ -3,25 +3,11 @@
 #include "integrate/integrate.hpp"
 
 #include "integrate/free_rotor.hpp"
+#include "polydem/parallel.hpp"
 
 namespace polydem {
 
 namespace {
-
-// Below this many bodies a parallel region costs more (a few us) than the loop itself.
-constexpr std::size_t kParallelMinBodies = 256;
-
-// fn(k) for k in [0, n), in parallel when n is large. Small n skips OpenMP entirely: even an
-// if(false) region makes a futex call (a one-body 10^6-step run went from 8 s to 0.8 s).
-template <class Fn>
-void for_each_index(std::size_t n, const Fn& fn) {
-  if (n < kParallelMinBodies) {
-    for (std::size_t k = 0; k < n; ++k) fn(k);
-    return;
-  }
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < n; ++k) fn(k);
-}
 
 // Relative tolerance on principal moments for the isotropic fast path.
 constexpr double kIsotropicTolerance = 1e-12;
@@ -55,7 +41,7 @@ RotorGroups group_rotors(const Bodies& b) {
 }
 
 void kick(Bodies& b, double h) {
-  for_each_index(b.size(), [&b, h](std::size_t i) {
+  parallel_for(b.size(), [&b, h](std::size_t i) {
     b.velocity[i] += b.force[i] * (h / b.mass[i]);
     // Torque is summed in the world frame; L lives in the principal frame: apply R^T.
     b.angular_momentum[i] += b.orientation[i].conjugate() * (b.torque[i] * h);
@@ -65,14 +51,14 @@ void kick(Bodies& b, double h) {
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  for_each_index(groups.isotropic.size(),
+  parallel_for(groups.isotropic.size(),
                  [&](std::size_t k) { drift_body<true>(b, groups.isotropic[k], dt); });
-  for_each_index(groups.asymmetric.size(),
+  parallel_for(groups.asymmetric.size(),
                  [&](std::size_t k) { drift_body<false>(b, groups.asymmetric[k], dt); });
 }
 
 void drift(Bodies& b, double dt) {
-  for_each_index(b.size(), [&b, dt](std::size_t i) {
+  parallel_for(b.size(), [&b, dt](std::size_t i) {
     if (is_isotropic(b.inertia[i])) {
       drift_body<true>(b, i, dt);
     } else {
@@ -82,7 +68,7 @@ void drift(Bodies& b, double dt) {
 }
 
 void update_angular_velocity(Bodies& b) {
-  for_each_index(b.size(), [&b](std::size_t i) {
+  parallel_for(b.size(), [&b](std::size_t i) {
     b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
   });
 }

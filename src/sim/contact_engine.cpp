@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "polydem/parallel.hpp"
+
 namespace polydem {
 
 namespace {
@@ -43,12 +45,11 @@ void fill_slots(std::vector<std::vector<FeaturePair>>& per_pair, PairList& list)
   for (std::size_t k = 0; k < per_pair.size(); ++k)
     list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
   list.slots.assign(list.slot_begin.back(), ContactSlot{});
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::size_t k = 0; k < per_pair.size(); ++k) {
+  parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
     auto& c = per_pair[k];
     std::sort(c.begin(), c.end(), [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); });
     for (std::size_t s = 0; s < c.size(); ++s) list.slots[list.slot_begin[k] + s].features = c[s];
-  }
+  });
   list.resize_results();
 }
 
@@ -73,14 +74,13 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
 
 void ContactEngine::pose(const Bodies& bodies) {
   const std::size_t n = bodies.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < n; ++b) {
+  parallel_for(n, [&](std::size_t b) {
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
     pose_vertices(s, bodies.scale[b], bodies.position[b], bodies.orientation[b], v);
     posed_[b] = PosedBody{&s, v, bodies.orientation[b].toRotationMatrix(), bodies.position[b],
                           s.radius * bodies.scale[b]};
-  }
+  });
 }
 
 void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
@@ -89,9 +89,9 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   PairList fresh;
   cells_.build_pairs(bodies.position, bounding_, range_p, fresh.pairs);
   std::vector<std::vector<FeaturePair>> per_pair(fresh.pairs.size());
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::size_t k = 0; k < fresh.pairs.size(); ++k)
+  parallel_for_dynamic(fresh.pairs.size(), [&](std::size_t k) {
     candidate_features(posed_[fresh.pairs[k].i], posed_[fresh.pairs[k].j], range_p, per_pair[k]);
+  });
   fill_slots(per_pair, fresh);
   carry_history(body_list_, fresh);
   body_list_ = std::move(fresh);
@@ -127,20 +127,26 @@ static void all_pair_forces(PairList& list, const LawParams& law, double band, d
   elastic.assign(n, 0.0);
   dissipated.assign(n, 0.0);
   contacts.assign(n, 0);
+  auto one_pair = [&](std::size_t k, PairScratch& scratch) {
+    const PairTotals t = pair_forces(law, band, dt, view, partner, list, std::uint32_t(k), scratch);
+    list.force_i[k] = t.force_i;
+    list.torque_i[k] = t.torque_i;
+    list.torque_j[k] = t.torque_j;
+    list.touching[k] = t.contacts > 0;
+    elastic[k] = t.elastic;
+    dissipated[k] = t.dissipated;
+    contacts[k] = t.contacts;
+  };
+  if (n < kParallelMinItems) {  // small scenes: no thread wake-up
+    PairScratch scratch;
+    for (std::size_t k = 0; k < n; ++k) one_pair(k, scratch);
+    return;
+  }
 #pragma omp parallel
   {
     PairScratch scratch;
 #pragma omp for schedule(dynamic, 256)
-    for (std::size_t k = 0; k < n; ++k) {
-      const PairTotals t = pair_forces(law, band, dt, view, partner, list, std::uint32_t(k), scratch);
-      list.force_i[k] = t.force_i;
-      list.torque_i[k] = t.torque_i;
-      list.torque_j[k] = t.torque_j;
-      list.touching[k] = t.contacts > 0;
-      elastic[k] = t.elastic;
-      dissipated[k] = t.dissipated;
-      contacts[k] = t.contacts;
-    }
+    for (std::size_t k = 0; k < n; ++k) one_pair(k, scratch);
   }
 }
 
@@ -172,8 +178,7 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
 
 void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {
   const std::size_t n = bodies.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < n; ++b) {
+  parallel_for(n, [&](std::size_t b) {
     Vec3 f = Vec3::Zero(), t = Vec3::Zero();
     for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
       const std::uint32_t k = body_index_.entries[e] >> 1;
@@ -189,7 +194,7 @@ void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {
     }
     bodies.force[b] += f;
     bodies.torque[b] += t;
-  }
+  });
   for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
   for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable
     if (!driver_list_.touching[k]) continue;

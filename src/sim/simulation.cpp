@@ -4,6 +4,7 @@
 
 #include "integrate/integrate.hpp"
 #include "polydem/error.hpp"
+#include "polydem/parallel.hpp"
 #include "sim/build_bodies.hpp"
 
 namespace polydem {
@@ -33,6 +34,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
   engine_ = std::make_unique<ContactEngine>(library_.shapes, bodies, cs);
+  rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt);
@@ -48,16 +50,15 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
 
 void Simulation::external_forces() {
   const std::size_t n = bodies.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < n; ++b) {
+  parallel_for(n, [&](std::size_t b) {
     bodies.force[b] = bodies.mass[b] * gravity_;
     bodies.torque[b].setZero();
-  }
+  });
 }
 
 void Simulation::step() {
   kick(bodies, 0.5 * dt_);
-  drift(bodies, dt_);
+  drift(bodies, dt_, rotors_);
   drivers.advance(time(), dt_);
   external_forces();
   if (scene_.forces.contact.present) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "driver/drivers.hpp"
+#include "integrate/integrate.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/scene.hpp"
 #include "polydem/shape_library.hpp"
@@ -55,6 +56,7 @@ class Simulation {
   Scene scene_;
   ShapeLibrary library_;
   std::unique_ptr<ContactEngine> engine_;
+  RotorGroups rotors_;           // isotropic bodies take the exact one-rotation path
   TimeStepEstimate dt_estimate_;
   double dt_ = 0.0;
   std::int64_t step_ = 0;

@@ -80,7 +80,7 @@ TEST_CASE("damping_ratio_for_restitution inverts the closed form", "[law]") {
   CHECK(damping_ratio_for_restitution(std::exp(-2.0)) == Approx(1.0).epsilon(1e-9));
 }
 
-TEST_CASE("the plain alpha formula gives ~0.55 for en = 0.5 under the clamp; ours gives 0.5", "[law]") {
+TEST_CASE("the plain alpha formula gives ~0.55 for en = 0.5 under the clamp, ours gives 0.5", "[law]") {
   const double plain = plain_damping_ratio(0.5);
   CHECK(plain == Approx(0.2155).epsilon(1e-3));
   CHECK(restitution_for_damping_ratio(plain) == Approx(0.55).margin(0.01));

@@ -28,7 +28,7 @@ ContactKinematics sliding_on_z(const Vec3& v_rel) {
 
 }  // namespace
 
-TEST_CASE("tangential spring: sticking: -kt times the displacement; sliding: mu fn against the slip", "[law]") {
+TEST_CASE("tangential spring: sticking gives -kt times the displacement, sliding gives mu fn against the slip", "[law]") {
   const LawParams law = friction_law();
   const double fn = law.kn * kOverlap;
   const Vec3 vt(0.3, -0.4, 0.0);  // m/s, |vt| = 0.5

@@ -112,7 +112,7 @@ TEST_CASE("random: a cylinder with a tilted axis", "[generate]") {
   CHECK((mean - (c.center + 0.5 * c.length * c.axis)).norm() < 0.01);
 }
 
-TEST_CASE("random: same seed, same bodies; another seed, other bodies", "[generate]") {
+TEST_CASE("random: same seed gives the same bodies, another seed other bodies", "[generate]") {
   const ShapeLibrary lib = library();
   const GeneratorSpec g = generator(500, kBox);
   const auto a = expand_bodies(scene_with(g, 7), lib);
