@@ -21,8 +21,8 @@ struct TimeStepEstimate {
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;
 
-// The smallest mass a contact force meets: 1/m_rot = 1/m + l^2/I_min with l the bounding
-// radius (a vertex far from the centre is lighter than the body). Pairs of bodies halve it.
+// The smallest mass a contact force meets at any vertex of any body (a vertex far from the
+// centre is lighter than the body); pairs of bodies halve it.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt);
