@@ -8,24 +8,26 @@ void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t s
                        const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on) {
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
-  for (const FoundContact& c : found) {
-    ContactSlot& fresh = list.slots[c.slot];
-    if (fresh.active) continue;                       // key lives on: history already here
-    std::uint32_t nearest = slot_end;
+  // Contacts that start now (no history of their own) and those that just ended.
+  std::uint32_t fresh[kMaxHandOver], ended[kMaxHandOver];
+  int n_fresh = 0, n_ended = 0;
+  for (const FoundContact& c : found)
+    if (!list.slots[c.slot].active && n_fresh < kMaxHandOver) fresh[n_fresh++] = std::uint32_t(&c - found.data());
+  for (std::uint32_t s = slot_begin; s < slot_end && n_ended < kMaxHandOver; ++s)
+    if (list.slots[s].active && !now_on[s - slot_begin]) ended[n_ended++] = s;
+  for (int k = 0; k < n_fresh; ++k) list.slots[found[fresh[k]].slot].history = ContactHistory{};
+  // Greedy matching, closest pair first: each ended contact gives its history once.
+  while (n_fresh > 0 && n_ended > 0) {
+    int best_f = 0, best_e = 0;
     double best = std::numeric_limits<double>::infinity();
-    for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
-      const ContactSlot& old = list.slots[s];
-      if (!old.active || now_on[s - slot_begin]) continue;  // only contacts that just ended
-      const double d2 = (old.point - c.geometry.point).squaredNorm();
-      if (d2 < best) { best = d2; nearest = s; }
-    }
-    if (nearest == slot_end) {
-      fresh.history = ContactHistory{};
-    } else {
-      fresh.history = list.slots[nearest].history;
-      list.slots[nearest].active = false;             // given once
-      list.slots[nearest].history = ContactHistory{};
-    }
+    for (int f = 0; f < n_fresh; ++f)
+      for (int e = 0; e < n_ended; ++e) {
+        const double d2 = (list.slots[ended[e]].point - found[fresh[f]].geometry.point).squaredNorm();
+        if (d2 < best) { best = d2; best_f = f; best_e = e; }
+      }
+    list.slots[found[fresh[best_f]].slot].history = list.slots[ended[best_e]].history;
+    fresh[best_f] = fresh[--n_fresh];
+    ended[best_e] = ended[--n_ended];
   }
   for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
     ContactSlot& slot = list.slots[s];

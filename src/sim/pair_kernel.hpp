@@ -41,7 +41,9 @@ inline void patch_weights(const std::vector<FoundContact>& found, double band,
 
 // A slot that starts touching inherits the history of the nearest slot of the same pair
 // that stopped touching this step (a vertex sliding from a face onto an edge keeps its
-// spring); each ended slot gives its history once.
+// spring), matched closest pair first; each ended slot gives its history once. Beyond
+// kMaxHandOver changes in one step for one pair, the rest start from zero.
+constexpr int kMaxHandOver = 32;
 void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end,
                        const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on);
 
