@@ -4,6 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 sample=${1:-box-fill}
 shift || true
-bash tools/build.sh
+bash tools/build.sh polydem
 build/polydem run "samples/$sample/scene.yaml" "$@"
 echo "ParaView: open samples/$sample/out/scene.pvd"

@@ -193,7 +193,13 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const std::int64_t first_step = sim.step_index();
   RunSummary summary;
   while (sim.step_index() < last_step) {
-    sim.step();
+    try {
+      sim.step();
+    } catch (const RunError&) {  // the neighbour search refuses non-finite positions
+      const long bad = first_non_finite_body(sim.bodies);
+      if (bad >= 0) fail_non_finite(sim, bad, last_good, good_step, o.out_dir);
+      throw;
+    }
     const std::int64_t s = sim.step_index();
     if (s % kCheckSteps == 0 || s == last_step) {
       const long bad = first_non_finite_body(sim.bodies);
