@@ -10,14 +10,10 @@
 #include <vector>
 
 #include "io/units.hpp"
+#include "shape/suggest.hpp"
 #include "polydem/math.hpp"
 
 namespace polydem {
-
-// Levenshtein distance between two words.
-int edit_distance(const std::string& a, const std::string& b);
-// " (did you mean 'radius'?)" for the nearest name within a few edits, else "".
-std::string did_you_mean(const std::string& word, const std::vector<std::string>& names);
 
 // 1-based line of a node, or `fallback` when yaml-cpp has no mark for it.
 int line_of(const YAML::Node& node, int fallback = 0);

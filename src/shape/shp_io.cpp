@@ -104,7 +104,7 @@ class BlockParser {
                                      "open surface shapes are not supported "
                                      "(use an stl driver for a surface)"));
     throw InputError(input_message(file_, t.line, t.text,
-                                   "unknown key in a shape block" + did_you_mean_key(t.text, kShpKeys)));
+                                   "unknown key in a shape block" + did_you_mean(t.text, kShpKeys)));
   }
 
   bool header_key(Block& b, const Token& t) {

@@ -25,7 +25,7 @@ class ShapeEntry {
       const std::string key = kv.first.as<std::string>();
       bool known = false;
       for (const auto& k : kYamlKeys) known = known || k == key;
-      if (!known) fail(kv.first, key, "unknown key in a shape" + did_you_mean_key(key, kYamlKeys));
+      if (!known) fail(kv.first, key, "unknown key in a shape" + did_you_mean(key, kYamlKeys));
     }
   }
 
