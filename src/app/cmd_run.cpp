@@ -128,10 +128,13 @@ int cmd_run(const std::vector<std::string>& args) {
   std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s, %d threads, output in %s\n",
                sim.bodies.size(), sim.drivers.size(), sim.dt(), omp_get_max_threads(), o.out_dir.c_str());
   const RunSummary s = run_simulation(sim, o);
+  const ContactStats& c = sim.engine().stats();
   std::fprintf(stderr, "polydem: %lld steps in %.2f s (%.3g us per body-step), %zu rebuilds; ParaView: %s/scene.pvd\n",
                static_cast<long long>(s.steps), s.wall_seconds,
                1e6 * s.wall_seconds / std::max<double>(1.0, double(s.steps) * double(sim.bodies.size())),
                s.rebuilds, o.out_dir.c_str());
+  std::fprintf(stderr, "polydem: last list: %zu body pairs, %zu driver pairs, %zu candidate feature pairs; %zu contacts\n",
+               c.body_pairs, c.driver_pairs, c.slots, c.contacts);
   return 0;
 }
 

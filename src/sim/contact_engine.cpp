@@ -15,6 +15,9 @@ struct BodyPartner {
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
+  bool separated(const PosedBody& a, std::uint32_t j, double band) const {
+    return separated_along_centres(a, posed[j], band);
+  }
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const {
     return bodies->velocity[j] + bodies->angular_velocity[j].cross(p - bodies->position[j]);
@@ -33,6 +36,7 @@ struct DriverPartner {
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return drivers->contact(a, j, f, max_gap, out);
   }
+  bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
   Vec3 angular_velocity(std::uint32_t j) const { return drivers->angular_velocity(j); }

@@ -38,8 +38,10 @@ void carry_history(const PairList& old_list, PairList& fresh) {
       if (!old_slot.active) continue;
       const std::uint64_t key = feature_key(old_slot.features);
       while (s_new < s_new_end && feature_key(fresh.slots[s_new].features) < key) ++s_new;
-      if (s_new < s_new_end && feature_key(fresh.slots[s_new].features) == key)
+      if (s_new < s_new_end && feature_key(fresh.slots[s_new].features) == key) {
         fresh.slots[s_new] = old_slot;
+        fresh.touching[k_new] = 1;
+      }
     }
   }
 }

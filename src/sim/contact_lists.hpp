@@ -55,7 +55,8 @@ struct BodyPairIndex {
 };
 
 // Copies the history of every active slot of `old_list` into the slot with the same pair
-// and key in `fresh` (both sorted). Keys absent from `fresh` end their contact.
+// and key in `fresh` (both sorted) and marks that pair touching. Keys absent from `fresh`
+// end their contact.
 void carry_history(const PairList& old_list, PairList& fresh);
 
 }  // namespace polydem

@@ -17,6 +17,19 @@ struct BodyView {
   const double* mass;       // kg
 };
 
+// True when the two bodies are farther apart than `band` along the line of their centres:
+// the gap between their support planes normal to it bounds their distance from below.
+inline bool separated_along_centres(const PosedBody& a, const PosedBody& b, double band) {
+  const Vec3 axis = b.position - a.position;  // m, from a to b
+  const double length = axis.norm();
+  if (length == 0.0) return false;
+  const Vec3 d = axis / length;
+  double reach_a = -1e300, reach_b = -1e300;  // m, support of a along d and of b along -d
+  for (std::size_t v = 0; v < a.shape->vertices.size(); ++v) reach_a = std::max(reach_a, (a.vertices[v] - a.position).dot(d));
+  for (std::size_t v = 0; v < b.shape->vertices.size(); ++v) reach_b = std::max(reach_b, (b.position - b.vertices[v]).dot(d));
+  return length - reach_a - reach_b - a.radius - b.radius >= band;
+}
+
 // One sub-contact found this step, before forces.
 struct FoundContact {
   std::uint32_t slot;
@@ -63,6 +76,7 @@ struct PairScratch {
 
 // Partner must provide:
 //   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
+//   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
 //   Vec3 center(j), Vec3 velocity_at(j, point), Vec3 angular_velocity(j), double m_eff(i, j)
 template <class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
@@ -70,13 +84,15 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   const BodyPair p = list.pairs[k];
   const PosedBody& a = bodies.posed[p.i];
   const std::uint32_t s0 = list.slot_begin[k], s1 = list.slot_begin[k + 1];
+  PairTotals totals;
+  const bool was_touching = list.touching[k] != 0;
+  if (!was_touching && partner.separated(a, p.j, band)) return totals;  // most listed pairs, at a glance
   scratch.found.clear();
   for (std::uint32_t s = s0; s < s1; ++s) {
     ContactPoint cp;
     if (partner.contact(a, p.j, list.slots[s].features, band, cp)) scratch.found.push_back({s, cp});
   }
-  hand_over_history(list, s0, s1, scratch.found, scratch.now_on);
-  PairTotals totals;
+  if (was_touching || !scratch.found.empty()) hand_over_history(list, s0, s1, scratch.found, scratch.now_on);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
   const Vec3 xi = a.position, xj = partner.center(p.j);
