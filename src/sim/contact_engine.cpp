@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "polydem/parallel.hpp"
+#include "sim/sphere_kernel.hpp"
 
 namespace polydem {
 
@@ -74,6 +75,7 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
   }
   world_vertices_.resize(vertex_offset_[n]);
   posed_.resize(n);
+  spheres_only_ = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
 }
 
 void ContactEngine::pose(const Bodies& bodies) {
@@ -123,16 +125,16 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
 }
 
-template <class Partner>
-static void all_pair_forces(PairList& list, const LawParams& law, double band, double dt,
-                            const BodyView& view, const Partner& partner, std::vector<double>& elastic,
+// Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results.
+template <class Kernel>
+static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<double>& elastic,
                             std::vector<double>& dissipated, std::vector<int>& contacts) {
   const std::size_t n = list.size();
   elastic.assign(n, 0.0);
   dissipated.assign(n, 0.0);
   contacts.assign(n, 0);
   auto one_pair = [&](std::size_t k, PairScratch& scratch) {
-    const PairTotals t = pair_forces(law, band, dt, view, partner, list, std::uint32_t(k), scratch);
+    const PairTotals t = kernel(std::uint32_t(k), scratch);
     list.force_i[k] = t.force_i;
     list.torque_i[k] = t.torque_i;
     list.torque_j[k] = t.torque_j;
@@ -169,12 +171,22 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
       stats_.contacts += std::size_t(pair_contacts_[k]);
     }
   };
-  all_pair_forces(body_list_, settings_.particle, band_particle_, dt, view, BodyPartner{posed_.data(), &bodies},
-                  pair_elastic_, pair_dissipated_, pair_contacts_);
+  if (spheres_only_) {
+    all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch&) {
+      return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
+    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+  } else {
+    const BodyPartner partner{posed_.data(), &bodies};
+    all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
+      return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
+    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+  }
   add_totals();
   if (!driver_list_.pairs.empty()) {
-    all_pair_forces(driver_list_, settings_.driver, band_driver_, dt, view, DriverPartner{&drivers, &bodies},
-                    pair_elastic_, pair_dissipated_, pair_contacts_);
+    const DriverPartner partner{&drivers, &bodies};
+    all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
+      return pair_forces(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
+    }, pair_elastic_, pair_dissipated_, pair_contacts_);
     add_totals();
   }
   reduce(bodies, drivers);

@@ -61,6 +61,7 @@ class ContactEngine {
   CellList cells_;
   RebuildTrigger trigger_;
   bool must_rebuild_ = true;
+  bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   PairList body_list_, driver_list_;
   BodyPairIndex body_index_, driver_index_;
   std::vector<double> pair_elastic_, pair_dissipated_;
