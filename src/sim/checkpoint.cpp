@@ -47,9 +47,9 @@ struct Reader {
 
 // Active slots with their pair, so the next rebuild hands their history over by key. Field by
 // field: no padding bytes in the file, so equal states give equal files.
-template <class IO, class Slot>
-void slot_fields(IO& io, Slot& s) {
-  io.pod(s.features.type); io.pod(s.features.a); io.pod(s.features.b); io.pod(s.active);
+template <class IO, class Key, class Slot>
+void slot_fields(IO& io, Key& f, Slot& s) {
+  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.pod(s.active);
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
 }
 
@@ -62,7 +62,7 @@ void write_active(Writer& w, const PairList& list) {
       if (list.slots[s].active) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
-        slot_fields(w, list.slots[s]);
+        slot_fields(w, list.features[s], list.slots[s]);
       }
 }
 
@@ -73,14 +73,16 @@ void read_active(Reader& r, PairList& list) {
   list.slot_begin.push_back(0);
   for (std::uint64_t e = 0; e < n; ++e) {
     BodyPair pair;
+    FeaturePair key;
     ContactSlot slot;
     r.pod(pair.i);
     r.pod(pair.j);
-    slot_fields(r, slot);
+    slot_fields(r, key, slot);
     if (list.pairs.empty() || list.pairs.back().i != pair.i || list.pairs.back().j != pair.j) {
       list.pairs.push_back(pair);
       list.slot_begin.push_back(list.slot_begin.back());
     }
+    list.features.push_back(key);
     list.slots.push_back(slot);
     ++list.slot_begin.back();
   }

@@ -50,10 +50,11 @@ void fill_slots(std::vector<std::vector<FeaturePair>>& per_pair, PairList& list)
   for (std::size_t k = 0; k < per_pair.size(); ++k)
     list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
   list.slots.assign(list.slot_begin.back(), ContactSlot{});
+  list.features.resize(list.slot_begin.back());
   parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
     auto& c = per_pair[k];
     std::sort(c.begin(), c.end(), [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); });
-    for (std::size_t s = 0; s < c.size(); ++s) list.slots[list.slot_begin[k] + s].features = c[s];
+    std::copy(c.begin(), c.end(), list.features.begin() + list.slot_begin[k]);
   });
   list.resize_results();
 }
@@ -138,7 +139,7 @@ static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<do
     list.force_i[k] = t.force_i;
     list.torque_i[k] = t.torque_i;
     list.torque_j[k] = t.torque_j;
-    list.touching[k] = t.contacts > 0;
+    list.touching[k] = std::uint16_t(t.contacts);
     elastic[k] = t.elastic;
     dissipated[k] = t.dissipated;
     contacts[k] = t.contacts;

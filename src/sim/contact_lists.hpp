@@ -14,8 +14,9 @@
 
 namespace polydem {
 
+// The state of one slot, touched only where a contact is (or was) active; the slot's key
+// lives apart in PairList::features, the array every step scans.
 struct ContactSlot {
-  FeaturePair features;       // the key within the pair: (type, feature of i, feature of j)
   bool active = false;        // in contact at the last step
   ContactHistory history;     // N, N m: springs carried while the key lives
   Vec3 point = Vec3::Zero();  // m, last contact point: history hand-over, output
@@ -32,10 +33,11 @@ inline std::uint64_t feature_key(FeaturePair f) {
 struct PairList {
   std::vector<BodyPair> pairs;             // sorted by (i, j)
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
-  std::vector<ContactSlot> slots;
+  std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
+  std::vector<ContactSlot> slots;          // per slot: contact state
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
-  std::vector<std::uint8_t> touching;      // 1 when the pair had an active contact this step
+  std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
 
   std::size_t size() const { return pairs.size(); }
   void resize_results() {
@@ -55,7 +57,7 @@ struct BodyPairIndex {
 };
 
 // Copies the history of every active slot of `old_list` into the slot with the same pair
-// and key in `fresh` (both sorted) and marks that pair touching. Keys absent from `fresh`
+// and key in `fresh` (both sorted) and counts it in the pair's `touching`. Keys absent from `fresh`
 // end their contact.
 void carry_history(const PairList& old_list, PairList& fresh);
 

@@ -4,15 +4,18 @@
 
 namespace polydem {
 
-void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end,
+void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                        const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on) {
+  int still_active = 0;
+  for (const FoundContact& c : found) still_active += list.slots[c.slot].active;
+  if (still_active == was_active && still_active == int(found.size())) return;  // same contacts: keys keep history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
   // Contacts that start now (no history of their own) and those that just ended.
   std::uint32_t fresh[kMaxHandOver], ended[kMaxHandOver];
   int n_fresh = 0, n_ended = 0;
-  for (const FoundContact& c : found)
-    if (!list.slots[c.slot].active && n_fresh < kMaxHandOver) fresh[n_fresh++] = std::uint32_t(&c - found.data());
+  for (std::size_t c = 0; c < found.size(); ++c)
+    if (!list.slots[found[c].slot].active && n_fresh < kMaxHandOver) fresh[n_fresh++] = std::uint32_t(c);
   for (std::uint32_t s = slot_begin; s < slot_end && n_ended < kMaxHandOver; ++s)
     if (list.slots[s].active && !now_on[s - slot_begin]) ended[n_ended++] = s;
   for (int k = 0; k < n_fresh; ++k) list.slots[found[fresh[k]].slot].history = ContactHistory{};
@@ -31,8 +34,9 @@ void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t s
   }
   for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
     ContactSlot& slot = list.slots[s];
-    slot.active = now_on[s - slot_begin] != 0;
-    if (!slot.active) { slot.history = ContactHistory{}; slot.fn = 0.0; slot.force = Vec3::Zero(); }
+    const bool on = now_on[s - slot_begin] != 0;
+    if (slot.active && !on) { slot.history = ContactHistory{}; slot.fn = 0.0; slot.force = Vec3::Zero(); }
+    slot.active = on;
   }
 }
 

@@ -57,7 +57,8 @@ inline void patch_weights(const std::vector<FoundContact>& found, double band,
 // spring), matched closest pair first; each ended slot gives its history once. Beyond
 // kMaxHandOver changes in one step for one pair, the rest start from zero.
 constexpr int kMaxHandOver = 32;
-void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end,
+// `was_active`: how many slots of the pair were active before this step.
+void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                        const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on);
 
 struct PairTotals {
@@ -85,14 +86,15 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   const PosedBody& a = bodies.posed[p.i];
   const std::uint32_t s0 = list.slot_begin[k], s1 = list.slot_begin[k + 1];
   PairTotals totals;
-  const bool was_touching = list.touching[k] != 0;
+  const int was_touching = list.touching[k];
   if (!was_touching && partner.separated(a, p.j, band)) return totals;  // most listed pairs, at a glance
   scratch.found.clear();
   for (std::uint32_t s = s0; s < s1; ++s) {
     ContactPoint cp;
-    if (partner.contact(a, p.j, list.slots[s].features, band, cp)) scratch.found.push_back({s, cp});
+    if (partner.contact(a, p.j, list.features[s], band, cp)) scratch.found.push_back({s, cp});
   }
-  if (was_touching || !scratch.found.empty()) hand_over_history(list, s0, s1, scratch.found, scratch.now_on);
+  if (was_touching || !scratch.found.empty())
+    hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
   const Vec3 xi = a.position, xj = partner.center(p.j);

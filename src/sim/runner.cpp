@@ -64,7 +64,7 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
         c.overlap = std::max(c.overlap, -slot.gap);
         c.point += slot.point * std::max(slot.fn, 1e-300);
         weight += std::max(slot.fn, 1e-300);
-        c.type = int(slot.features.type);
+        c.type = int(list.features[s].type);
       }
       c.point /= weight;
       const BodyPair p = list.pairs[k];

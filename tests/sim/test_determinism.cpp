@@ -110,8 +110,8 @@ TEST_CASE("the contact set each step equals the brute-force set", "[verlet]") {
     for (std::size_t k = 0; k < list.size(); ++k)
       for (std::uint32_t q = list.slot_begin[k]; q < list.slot_begin[k + 1]; ++q)
         if (list.slots[q].active)
-          engine.insert({list.pairs[k].i, list.pairs[k].j, int(list.slots[q].features.type), list.slots[q].features.a,
-                         list.slots[q].features.b});
+          engine.insert({list.pairs[k].i, list.pairs[k].j, int(list.features[q].type), list.features[q].a,
+                         list.features[q].b});
     const Bodies& b = sim.bodies;
     std::vector<std::vector<Vec3>> verts(b.size());
     std::vector<PosedBody> posed(b.size());

@@ -13,7 +13,8 @@ PairList one_pair_list(std::vector<FeaturePair> keys) {
   PairList list;
   list.pairs = {{0, 1}};
   list.slot_begin = {0, std::uint32_t(keys.size())};
-  for (FeaturePair k : keys) list.slots.push_back(ContactSlot{k});
+  list.features = keys;
+  list.slots.resize(keys.size());
   list.resize_results();
   return list;
 }
@@ -32,7 +33,7 @@ TEST_CASE("a vertex sliding from a face onto an edge keeps its tangential spring
   face.history.ft = {0.2, -0.1, 0};
   face.history.mr = {0, 0, 1e-4};
   std::vector<std::uint8_t> scratch;
-  hand_over_history(list, 0, 2, {found(0, {0.0101, 0, 0})}, scratch);  // now on the edge
+  hand_over_history(list, 0, 2, 1, {found(0, {0.0101, 0, 0})}, scratch);  // now on the edge
   CHECK(list.slots[0].active);
   CHECK(list.slots[0].history.ft == Vec3(0.2, -0.1, 0));
   CHECK(list.slots[0].history.mr == Vec3(0, 0, 1e-4));
@@ -45,10 +46,10 @@ TEST_CASE("a living key keeps its history and a fresh contact starts from zero",
   list.slots[0].active = true;
   list.slots[0].history.ft = {0.3, 0, 0};
   std::vector<std::uint8_t> scratch;
-  hand_over_history(list, 0, 2, {found(0, {0, 0, 0}), found(1, {0.01, 0, 0})}, scratch);
+  hand_over_history(list, 0, 2, 1, {found(0, {0, 0, 0}), found(1, {0.01, 0, 0})}, scratch);
   CHECK(list.slots[0].history.ft == Vec3(0.3, 0, 0));  // same key: kept
   CHECK(list.slots[1].history.ft == Vec3::Zero());      // nothing ended: starts from zero
-  hand_over_history(list, 0, 2, {}, scratch);           // separation resets everything
+  hand_over_history(list, 0, 2, 2, {}, scratch);           // separation resets everything
   CHECK_FALSE(list.slots[0].active);
   CHECK(list.slots[0].history.ft == Vec3::Zero());
 }
@@ -60,7 +61,7 @@ TEST_CASE("each ended contact hands its history over once, to the nearest new on
   list.slots[0].point = {0, 0, 0};
   list.slots[0].history.ft = {1, 0, 0};
   std::vector<std::uint8_t> scratch;
-  hand_over_history(list, 0, 3, {found(1, {0.05, 0, 0}), found(2, {0.001, 0, 0})}, scratch);
+  hand_over_history(list, 0, 3, 1, {found(1, {0.05, 0, 0}), found(2, {0.001, 0, 0})}, scratch);
   CHECK(list.slots[2].history.ft == Vec3(1, 0, 0));  // nearest
   CHECK(list.slots[1].history.ft == Vec3::Zero());
 }

@@ -11,7 +11,6 @@ bin=build/polydem
 results=tools/bench/results.csv
 [ -f "$results" ] || echo "machine,commit,scene,threads,bodies,steps,seconds,us_per_particle_step,contacts,rebuilds" > "$results"
 machine=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//; s/,//g')
-commit=$(git rev-parse --short HEAD)
 for scene in cubes spheres; do
   settled=build/bench/$scene
   if [ ! -f "$settled/settled.bin" ]; then
@@ -38,6 +37,7 @@ PY
     us=$(echo "$line" | sed 's/.*(\([0-9.e+-]*\) us per body-step).*/\1/')
     rebuilds=$(echo "$line" | sed 's/.*, \([0-9]*\) rebuilds.*/\1/')
     contacts=$(tail -1 "$settled/run$threads/energy.csv" | awk -F, '{print $8}')
+    commit=$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- src include || echo +)
     echo "\"$machine\",$commit,$scene,$threads,$bodies,$nsteps,$secs,$us,$contacts,$rebuilds" | tee -a "$results"
     rm -f "$log"
   done
