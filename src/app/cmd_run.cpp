@@ -104,22 +104,22 @@ void warn_unsafe_step(const Simulation& sim) {
                  t.chosen, t.chosen / t.critical, t.critical, kUnsafeFraction, kAutoFraction * t.critical);
 }
 
-std::unique_ptr<Simulation> load(const std::string& path) {
-  const Scene scene = load_scene(path);
+// Shapes, bodies and the simulation of a parsed scene (threads are set before: the first
+// contact search already runs in parallel).
+std::unique_ptr<Simulation> build(const Scene& scene) {
   const ShapeLibrary library = load_shape_library(scene.shape_files);
-  const std::vector<BodySpec> specs = expand_bodies(scene, library);
-  return std::make_unique<Simulation>(scene, library, specs);
+  return std::make_unique<Simulation>(scene, library, expand_bodies(scene, library));
 }
 
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args) {
   const RunArgs a = parse_run_args(args, kRunHelp, true);
-  Scene scene = load_scene(a.scene);
+  const Scene scene = load_scene(a.scene);
   const int threads = a.threads ? *a.threads : scene.simulation.threads;
   if (threads > 0) omp_set_num_threads(threads);
-  const ShapeLibrary library = load_shape_library(scene.shape_files);
-  Simulation sim(scene, library, expand_bodies(scene, library));
+  const auto built = build(scene);
+  Simulation& sim = *built;
   warn_unsafe_step(sim);
   RunOptions o;
   o.out_dir = a.out ? *a.out : scene.output.dir;
@@ -140,7 +140,7 @@ int cmd_run(const std::vector<std::string>& args) {
 
 int cmd_check(const std::vector<std::string>& args) {
   const RunArgs a = parse_run_args(args, kCheckHelp, false);
-  const auto sim = load(a.scene);
+  const auto sim = build(load_scene(a.scene));
   std::printf("scene: %s: valid\n", a.scene.c_str());
   print_counts(*sim);
   warn_unsafe_step(*sim);

@@ -212,8 +212,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
     if (g_interrupted) {
       const std::string path = writer.checkpoint(sim);
-      std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run SCENE --resume %s\n",
-                   sim.time(), path.c_str());
+      std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run %s --out %s --resume %s\n",
+                   sim.time(), sim.scene().path.c_str(), o.out_dir.c_str(), path.c_str());
       break;
     }
     const auto now = Clock::now();
