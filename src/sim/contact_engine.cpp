@@ -81,6 +81,14 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
 
 void ContactEngine::pose(const Bodies& bodies) {
   const std::size_t n = bodies.size();
+  if (spheres_only_) {  // the one vertex is the centre: no rotation to apply
+    parallel_for(n, [&](std::size_t b) {
+      world_vertices_[b] = bodies.position[b];
+      posed_[b] = PosedBody{&shapes_[bodies.shape[b]], &world_vertices_[b], Mat3::Identity(), bodies.position[b],
+                            shapes_[bodies.shape[b]].radius * bodies.scale[b]};
+    });
+    return;
+  }
   parallel_for(n, [&](std::size_t b) {
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
