@@ -76,7 +76,7 @@ struct DriverSpec {
   std::string name;
   Vec3 point = Vec3::Zero();      // m, wall: a point on the plane
   Vec3 normal = Vec3::UnitZ();    // wall: unit normal towards the particles
-  Vec3 center = Vec3::Zero();     // m, cylinder (base centre) / ball centre
+  Vec3 center = Vec3::Zero();     // m, cylinder: middle of its axis; ball: centre
   Vec3 axis = Vec3::UnitZ();      // cylinder axis, unit
   double radius = 0.0;            // m, cylinder / ball
   std::optional<double> length;   // m, cylinder; empty: infinite

@@ -1,6 +1,7 @@
 #pragma once
-// Drivers: rigid boundaries the particles touch (walls now; cylinders, balls, STL meshes
-// plug in through the same contact/candidate interface).
+// Drivers: rigid boundaries the particles touch (walls, cylinders seen from inside, balls),
+// fixed or moving (constant velocity, rotation about an axis, removal at a time). Each kind
+// gives candidate features and contacts through the same interface as a body partner.
 #include <cstdint>
 #include <vector>
 
@@ -16,14 +17,21 @@ struct Driver {
   bool active = true;              // false once removed (remove_at)
   Vec3 point = Vec3::Zero();       // m, wall: current point on the plane
   Vec3 normal = Vec3::UnitZ();     // wall: unit normal towards the particles
+  Vec3 center = Vec3::Zero();      // m, cylinder: middle of its axis; ball: centre
+  Vec3 axis = Vec3::UnitZ();       // cylinder: unit axis
   Vec3 velocity = Vec3::Zero();    // m/s, current translation velocity
+  Vec3 omega = Vec3::Zero();       // rad/s, current angular velocity about `pivot`
+  Vec3 pivot = Vec3::Zero();       // m, a point on the rotation axis
   Vec3 force = Vec3::Zero();       // N, exerted by the particles this step
   Vec3 torque = Vec3::Zero();      // N m, about `point`, exerted by the particles this step
   double work = 0.0;               // J, work done by the driver on the particles so far
+  Shape ball_shape;                // ball: a one-vertex shape, so body-ball contacts reuse the body kernels
 };
 
 class Drivers {
  public:
+  // Throws InputError (file, line) for what the engine cannot do yet (STL meshes, servo
+  // motions, contact on the outer surface of a cylinder).
   explicit Drivers(const std::vector<DriverSpec>& specs);
 
   std::size_t size() const { return list_.size(); }
@@ -31,21 +39,25 @@ class Drivers {
   const Driver& operator[](std::size_t j) const { return list_[j]; }
   Driver& operator[](std::size_t j) { return list_[j]; }
 
-  // Applies the motions from time t to t + dt (removal, constant velocity).
+  // Applies the motions from time t to t + dt (removal, translation, rotation).
   void advance(double t, double dt);
 
-  // True when body `a` (bounding sphere `reach` around its centre) may touch driver j.
+  // True when a body whose bounding sphere of radius `reach` is centred at `center` may touch driver j.
   bool near(std::uint32_t j, const Vec3& center, double reach) const;
-  // Feature pairs (vertex of a, feature of the driver) within rA + range of driver j.
+  // Feature pairs (feature of a, feature of the driver) within rA + range of driver j.
   void candidates(const PosedBody& a, std::uint32_t j, double range, std::vector<FeaturePair>& out) const;
   // One feature pair; normal from the driver to the body, same conventions as feature_contact.
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const;
 
-  Vec3 center(std::uint32_t j) const { return list_[j].point; }
-  Vec3 velocity_at(std::uint32_t j, const Vec3&) const { return list_[j].velocity; }
-  Vec3 angular_velocity(std::uint32_t) const { return Vec3::Zero(); }
+  Vec3 center(std::uint32_t j) const;
+  Vec3 velocity_at(std::uint32_t j, const Vec3& p) const {
+    const Driver& d = list_[j];
+    return d.velocity + d.omega.cross(p - d.pivot);
+  }
+  Vec3 angular_velocity(std::uint32_t j) const { return list_[j].omega; }
 
-  // A square patch of half-size `extent` for each active wall, for the VTK output.
+  // Surface meshes of the active drivers for the VTK output; infinite walls and cylinders
+  // are cut at `extent` (m) around their reference point.
   std::vector<DriverMesh> meshes(double extent) const;
 
  private:

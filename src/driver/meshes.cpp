@@ -1,0 +1,72 @@
+// Driver surfaces as polygon meshes for the VTK output, at their current placement.
+#include <cmath>
+
+#include "driver/drivers.hpp"
+#include "output/vtk.hpp"
+
+namespace polydem {
+
+namespace {
+
+constexpr int kSegments = 48;  // around a cylinder or a ball: smooth enough to look round
+
+DriverMesh wall_mesh(const Driver& d, double extent) {
+  const Vec3 u = d.normal.unitOrthogonal() * extent;
+  const Vec3 w = d.normal.cross(u);
+  return {d.spec.name, {d.point - u - w, d.point + u - w, d.point + u + w, d.point - u + w}, {{0, 1, 2, 3}}};
+}
+
+DriverMesh cylinder_mesh(const Driver& d, double extent) {
+  const double half = d.spec.length ? 0.5 * *d.spec.length : extent;
+  const Vec3 u = d.axis.unitOrthogonal(), w = d.axis.cross(u);
+  DriverMesh m{d.spec.name, {}, {}};
+  for (int k = 0; k < kSegments; ++k) {
+    const double angle = 2.0 * kPi * k / kSegments;
+    const Vec3 r = d.spec.radius * (std::cos(angle) * u + std::sin(angle) * w);
+    m.points.push_back(d.center + r - half * d.axis);
+    m.points.push_back(d.center + r + half * d.axis);
+  }
+  for (int k = 0; k < kSegments; ++k) {
+    const int next = (k + 1) % kSegments;
+    m.polygons.push_back({2 * k, 2 * next, 2 * next + 1, 2 * k + 1});
+  }
+  return m;
+}
+
+DriverMesh ball_mesh(const Driver& d) {
+  const int rings = kSegments / 2;
+  const Vec3 u = Vec3::UnitX(), w = Vec3::UnitY(), z = Vec3::UnitZ();
+  DriverMesh m{d.spec.name, {}, {}};
+  for (int i = 0; i <= rings; ++i) {
+    const double polar = kPi * i / rings;
+    for (int k = 0; k < kSegments; ++k) {
+      const double az = 2.0 * kPi * k / kSegments;
+      m.points.push_back(d.center + d.spec.radius * (std::sin(polar) * (std::cos(az) * u + std::sin(az) * w) +
+                                                     std::cos(polar) * z));
+    }
+  }
+  for (int i = 0; i < rings; ++i)
+    for (int k = 0; k < kSegments; ++k) {
+      const int next = (k + 1) % kSegments;
+      m.polygons.push_back({i * kSegments + k, i * kSegments + next, (i + 1) * kSegments + next, (i + 1) * kSegments + k});
+    }
+  return m;
+}
+
+}  // namespace
+
+std::vector<DriverMesh> Drivers::meshes(double extent) const {
+  std::vector<DriverMesh> out;
+  for (const Driver& d : list_) {
+    if (!d.active) continue;
+    switch (d.spec.kind) {
+      case DriverSpec::Kind::wall: out.push_back(wall_mesh(d, extent)); break;
+      case DriverSpec::Kind::cylinder: out.push_back(cylinder_mesh(d, extent)); break;
+      case DriverSpec::Kind::ball: out.push_back(ball_mesh(d)); break;
+      case DriverSpec::Kind::stl: break;
+    }
+  }
+  return out;
+}
+
+}  // namespace polydem

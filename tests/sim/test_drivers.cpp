@@ -1,0 +1,107 @@
+// Drivers beyond the fixed wall: the inside of a cylinder, a rotating drum, a ball, a gate
+// removed at a given time, and a clear error for what the engine does not simulate yet.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "polydem/error.hpp"
+#include "sim_fixtures.hpp"
+
+using namespace polydem;
+using namespace polydem::test;
+
+namespace {
+
+constexpr double kG = 9.807, kRadius = 0.005, kKn = 1e5;
+
+DriverSpec drum(double radius, double omega) {
+  DriverSpec d;
+  d.kind = DriverSpec::Kind::cylinder;
+  d.name = "drum";
+  d.axis = Vec3::UnitX();
+  d.radius = radius;
+  if (omega != 0.0) {
+    d.motion.rotates = true;
+    d.motion.rotation_axis = Vec3::UnitX();
+    d.motion.omega = omega;
+  }
+  return d;
+}
+
+void run_for(Simulation& sim, double seconds) {
+  for (long long s = std::llround(seconds / sim.dt()); s > 0; --s) sim.step();
+}
+
+}  // namespace
+
+TEST_CASE("a sphere rests inside a cylinder with the overlap it has on a plane", "[driver]") {
+  Scene scene = base_scene(law(kKn, 0.3, 0.5, kKn), false, Vec3(0, 0, -kG));
+  scene.drivers.push_back(drum(0.05, 0.0));
+  const ShapeLibrary lib = library({sphere_shape(kRadius)});
+  Simulation sim(scene, lib, {body("sphere", {0, 0, -0.05 + kRadius})});
+  run_for(sim, 0.1);
+  const double mass = sim.bodies.mass[0];
+  const double overlap = sim.bodies.position[0].norm() + kRadius - 0.05;  // m, beyond the cylinder surface
+  CHECK(overlap == Approx(mass * kG / kKn).epsilon(1e-3));                 // kn overlap = m g, as on a wall
+  CHECK(std::abs(sim.bodies.position[0].y()) < 1e-9);                    // at the bottom
+}
+
+TEST_CASE("a rotating drum moves the contact at the wall's velocity", "[driver]") {
+  const double omega = 1.0, radius = 0.05;  // rad/s, m: the wall moves at 0.05 m/s
+  Scene scene = base_scene(law(kKn, 0.3, 0.5, kKn), false, Vec3(0, 0, -kG));
+  scene.drivers.push_back(drum(radius, omega));
+  Simulation sim(scene, library({sphere_shape(kRadius)}), {body("sphere", {0, 0, -radius + kRadius})});
+  run_for(sim, 0.05);
+  // Rolling without slip on the drum: the sphere's point at the wall moves with the wall, up
+  // to the undamped tangential spring's oscillation (a few % of the wall speed here).
+  const Vec3 x = sim.bodies.position[0];
+  const Vec3 outward = Vec3(0, x.y(), x.z()).normalized();
+  const Vec3 contact = Vec3(x.x(), 0, 0) + radius * outward;
+  const Vec3 sphere_point = sim.bodies.velocity[0] + sim.bodies.angular_velocity[0].cross(contact - x);
+  const Vec3 wall = Vec3(omega, 0, 0).cross(contact);
+  INFO("sphere point " << sphere_point.transpose() << ", wall " << wall.transpose());
+  CHECK((sphere_point - wall).norm() < 0.05 * wall.norm());
+  CHECK(sim.bodies.velocity[0].y() > 0.0);  // dragged the way the wall moves (+y at the bottom for +x spin)
+}
+
+TEST_CASE("a sphere dropped on a ball driver rebounds with en", "[driver][impact]") {
+  for (double en : {0.3, 0.7}) {
+    Scene scene = base_scene(law(kKn, en), false);
+    DriverSpec ball;
+    ball.kind = DriverSpec::Kind::ball;
+    ball.name = "ball";
+    ball.radius = 0.02;
+    scene.drivers.push_back(ball);
+    const ShapeLibrary lib = library({sphere_shape(kRadius)});
+    scene.simulation.dt = kPi * std::sqrt(2700.0 * lib.shapes[0].volume / kKn) / 400.0;
+    Simulation sim(scene, lib, {body("sphere", {0, 0, 0.02 + kRadius + 1e-5}, {0, 0, -1.0})});
+    bool touched = false;
+    for (int s = 0; s < 20000 && !(touched && sim.engine().stats().contacts == 0); ++s) {
+      sim.step();
+      touched = touched || sim.engine().stats().contacts > 0;
+    }
+    CHECK(sim.bodies.velocity[0].z() == Approx(en).epsilon(0.005));  // m_eff = m: same law as a wall
+  }
+}
+
+TEST_CASE("a gate removed at its time lets the body fall", "[driver]") {
+  Scene scene = base_scene(law(kKn, 0.3), true, Vec3(0, 0, -kG));
+  scene.drivers[0].motion.remove_at = 0.02;
+  Simulation sim(scene, library({sphere_shape(kRadius)}), {body("sphere", {0, 0, kRadius})});
+  run_for(sim, 0.019);
+  CHECK(std::abs(sim.bodies.velocity[0].z()) < 1e-3);  // held up by the gate
+  run_for(sim, 0.031);
+  CHECK(sim.bodies.velocity[0].z() == Approx(-kG * (sim.time() - 0.02)).epsilon(0.02));  // free fall since 0.02 s
+}
+
+TEST_CASE("drivers the engine cannot simulate yet stop the run at start-up", "[driver]") {
+  Scene scene = base_scene(law(kKn, 0.3), false);
+  DriverSpec mesh;
+  mesh.kind = DriverSpec::Kind::stl;
+  mesh.name = "hopper";
+  mesh.loc = {"scene.yaml", 12};
+  scene.drivers.push_back(mesh);
+  const ShapeLibrary lib = library({sphere_shape(kRadius)});
+  CHECK_THROWS_WITH(Simulation(scene, lib, {body("sphere", {0, 0, 1})}),
+                    Catch::Contains("scene.yaml:12") && Catch::Contains("not supported yet"));
+}
