@@ -94,10 +94,13 @@ class OutputWriter {
       : sim_(sim), dir_(o.out_dir), progress_(std::move(progress)), pvd_(dir_ + "/scene.pvd"),
         extent_(scene_extent(sim.bodies)) {
     for (const OutputFrame& f : progress_.frames) pvd_.add(f.time, f.files);
-    if (sim.scene().output.csv_every)
-      energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
-          std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
-                                   "driver_work", "contacts"}, !o.resume.empty());
+    if (!sim.scene().output.csv_every) return;
+    energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
+        std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
+                                 "driver_work", "contacts"}, !o.resume.empty());
+    for (std::size_t j = 0; j < sim.drivers.size(); ++j)  // force and torque the particles exert on it
+      driver_series_.push_back(std::make_unique<CsvSeries>(dir_ + "/driver_" + sim.drivers[j].spec.name + ".csv",
+          std::vector<std::string>{"time", "fx", "fy", "fz", "tx", "ty", "tz", "x", "y", "z"}, !o.resume.empty()));
   }
 
   void frame() {
@@ -121,6 +124,12 @@ class OutputWriter {
     const EnergyRow e = sim_.energy();
     energy_->row({sim_.time(), e.kinetic, e.rotational, e.elastic, e.dissipated, e.gravity_work, e.driver_work,
                   double(e.contacts)});
+    for (std::size_t j = 0; j < driver_series_.size(); ++j) {
+      const Driver& d = sim_.drivers[j];
+      const Vec3 x = sim_.drivers.center(std::uint32_t(j));
+      driver_series_[j]->row({sim_.time(), d.force.x(), d.force.y(), d.force.z(), d.torque.x(), d.torque.y(),
+                              d.torque.z(), x.x(), x.y(), x.z()});
+    }
   }
 
   std::string checkpoint(Simulation& sim) {
@@ -136,6 +145,7 @@ class OutputWriter {
   OutputProgress progress_;
   PvdSeries pvd_;
   std::unique_ptr<CsvSeries> energy_;
+  std::vector<std::unique_ptr<CsvSeries>> driver_series_;
   double extent_;
 };
 

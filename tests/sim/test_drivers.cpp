@@ -44,6 +44,7 @@ TEST_CASE("a sphere rests inside a cylinder with the overlap it has on a plane",
   const double overlap = sim.bodies.position[0].norm() + kRadius - 0.05;  // m, beyond the cylinder surface
   CHECK(overlap == Approx(mass * kG / kKn).epsilon(1e-3));                 // kn overlap = m g, as on a wall
   CHECK(std::abs(sim.bodies.position[0].y()) < 1e-9);                    // at the bottom
+  CHECK(sim.drivers[0].force.z() == Approx(-mass * kG).epsilon(1e-3));   // the drum carries the weight
 }
 
 TEST_CASE("a rotating drum moves the contact at the wall's velocity", "[driver]") {
