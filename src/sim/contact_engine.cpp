@@ -127,11 +127,36 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
 
   trigger_.mark_built(bodies.position, bodies.orientation);
+  mark_drivers(bodies, drivers);
   must_rebuild_ = false;
   ++stats_.rebuilds;
   stats_.body_pairs = body_list_.size();
   stats_.driver_pairs = driver_list_.size();
   stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
+}
+
+void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
+  drivers_at_build_.clear();
+  driver_lever_ = 0.0;
+  for (std::size_t j = 0; j < drivers.size(); ++j) {
+    drivers_at_build_.push_back(drivers[j]);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      driver_lever_ = std::max(driver_lever_, (bodies.position[b] - drivers.center(std::uint32_t(j))).norm() + bounding_[b]);
+  }
+}
+
+// A moving driver can reach bodies the lists did not pair it with: rebuild once its surface
+// may have moved half the skin where bodies are (translation, plus turning times the lever).
+bool ContactEngine::drivers_moved(const Drivers& drivers) const {
+  for (std::size_t j = 0; j < drivers_at_build_.size(); ++j) {
+    const Driver& now = drivers[j];
+    const Driver& then = drivers_at_build_[j];
+    if (now.active != then.active) continue;  // a removed driver only loses contacts
+    const double shift = (now.point - then.point).norm() + (now.center - then.center).norm() +
+                         driver_lever_ * ((now.normal - then.normal).norm() + (now.axis - then.axis).norm());
+    if (shift > 0.5 * settings_.skin) return true;
+  }
+  return false;
 }
 
 // Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results.
@@ -167,7 +192,8 @@ static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<do
 
 void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   pose(bodies);
-  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin))
+  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin) ||
+      drivers_moved(drivers))
     rebuild(bodies, drivers);
   const BodyView view{posed_.data(), bodies.velocity.data(), bodies.angular_velocity.data(), bodies.mass.data()};
   stats_.elastic = stats_.dissipated = 0.0;

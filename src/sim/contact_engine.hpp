@@ -50,6 +50,8 @@ class ContactEngine {
   void body_pair_forces(const Bodies& bodies, double dt);
   void driver_pair_forces(const Bodies& bodies, const Drivers& drivers, double dt);
   void reduce(Bodies& bodies, Drivers& drivers) const;
+  void mark_drivers(const Bodies& bodies, const Drivers& drivers);
+  bool drivers_moved(const Drivers& drivers) const;
 
   const std::vector<Shape>& shapes_;
   ContactSettings settings_;
@@ -63,6 +65,8 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   PairList body_list_, driver_list_;
+  std::vector<Driver> drivers_at_build_;   // driver placements when the lists were built
+  double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
   std::vector<double> pair_elastic_, pair_dissipated_;
   std::vector<int> pair_contacts_;

@@ -106,3 +106,21 @@ TEST_CASE("drivers the engine cannot simulate yet stop the run at start-up", "[d
   CHECK_THROWS_WITH(Simulation(scene, lib, {body("sphere", {0, 0, 1})}),
                     Catch::Contains("scene.yaml:12") && Catch::Contains("not supported yet"));
 }
+
+TEST_CASE("a moving ball driver finds and strikes a body it started far from", "[driver][impact]") {
+  const double en = 0.5, speed = 1.0;  // m/s, the impactor's speed
+  Scene scene = base_scene(law(kKn, en), false);
+  DriverSpec ball;
+  ball.kind = DriverSpec::Kind::ball;
+  ball.name = "impactor";
+  ball.radius = 0.02;
+  ball.center = {0, 0, 0.05};  // 25 mm above the sphere's top: far beyond the skin
+  ball.motion.velocity = {0, 0, -speed};
+  scene.drivers.push_back(ball);
+  const ShapeLibrary lib = library({sphere_shape(kRadius)});
+  scene.simulation.dt = kPi * std::sqrt(2700.0 * lib.shapes[0].volume / kKn) / 400.0;
+  Simulation sim(scene, lib, {body("sphere", {0, 0, 0})});
+  run_for(sim, 0.035);  // contact at ~25 ms, over by ~26 ms
+  // An infinitely heavy impactor: the body leaves at -(1 + e) times its speed.
+  CHECK(sim.bodies.velocity[0].z() == Approx(-(1.0 + en) * speed).epsilon(0.005));
+}
