@@ -44,8 +44,8 @@ cmp <(cut -d, -f1-7 "$tmp/full/energy.csv") <(cut -d, -f1-7 "$tmp/half/energy.cs
 "$polydem" run "$here/drop.yaml" --out "$tmp/int" --threads 1 2> "$tmp/int.log" &
 pid=$!
 rows() { if [ -f "$tmp/int/energy.csv" ]; then wc -l < "$tmp/int/energy.csv"; else echo 0; fi; }
-until [ "$(rows)" -gt 3 ]; do sleep 0.05; done
-kill -INT "$pid"
+until [ "$(rows)" -gt 3 ] || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
+kill -INT "$pid" 2> /dev/null || fail "the run ended before it could be interrupted"
 wait "$pid" || fail "interrupted run exited non-zero"
 grep -q "interrupted at t = " "$tmp/int.log" || { cat "$tmp/int.log"; fail "no interruption message (did the run end first?)"; }
 resume=$(grep -o -- "--resume [^ ]*" "$tmp/int.log" | cut -d' ' -f2)
