@@ -19,6 +19,7 @@ struct BodyPartner {
   bool separated(const PosedBody& a, std::uint32_t j, double band) const {
     return separated_along_centres(a, posed[j], band);
   }
+  double radius(std::uint32_t j) const { return posed[j].radius; }
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const {
     return bodies->velocity[j] + bodies->angular_velocity[j].cross(p - bodies->position[j]);
@@ -38,6 +39,9 @@ struct DriverPartner {
     return drivers->contact(a, j, f, max_gap, out);
   }
   bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
+  double radius(std::uint32_t j) const {  // a ball is rounded; planes and cylinders are not
+    return (*drivers)[j].spec.kind == DriverSpec::Kind::ball ? (*drivers)[j].spec.radius : 0.0;
+  }
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
   Vec3 angular_velocity(std::uint32_t j) const { return drivers->angular_velocity(j); }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contact/law.hpp"
+#include "geometry/shadowing.hpp"
 #include "sim/contact_lists.hpp"
 
 namespace polydem {
@@ -71,13 +72,28 @@ struct PairTotals {
 // Per-thread scratch so the pair loop does not allocate.
 struct PairScratch {
   std::vector<FoundContact> found;
+  std::vector<std::uint8_t> drop;
   std::vector<double> weight;
   std::vector<std::uint8_t> now_on;
 };
 
+// Removes the found contacts that a vertex-face contact of the same vertex shadows.
+inline void drop_shadowed(const PairList& list, double radii, PairScratch& scratch) {
+  auto& found = scratch.found;
+  if (found.size() < 2) return;
+  scratch.drop.resize(found.size());
+  mark_shadowed(found.size(), [&](std::size_t k) { return list.features[found[k].slot]; },
+                [&](std::size_t k) { return found[k].geometry.gap; }, radii, scratch.drop.data());
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < found.size(); ++k)
+    if (!scratch.drop[k]) found[kept++] = found[k];
+  found.resize(kept);
+}
+
 // Partner must provide:
 //   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
+//   double radius(j): the partner's rounding radius (m)
 //   Vec3 center(j), Vec3 velocity_at(j, point), Vec3 angular_velocity(j), double m_eff(i, j)
 template <class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
@@ -93,6 +109,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     ContactPoint cp;
     if (partner.contact(a, p.j, list.features[s], band, cp)) scratch.found.push_back({s, cp});
   }
+  drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if (was_touching || !scratch.found.empty())
     hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on);
   if (scratch.found.empty()) return totals;

@@ -11,6 +11,7 @@
 #include <set>
 #include <tuple>
 
+#include "geometry/shadowing.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim_fixtures.hpp"
 
@@ -125,13 +126,19 @@ TEST_CASE("the contact set each step equals the brute-force set", "[verlet]") {
       for (std::uint32_t j = i + 1; j < b.size(); ++j) {
         const double reach = sim.shapes()[b.shape[i]].bounding_radius + sim.shapes()[b.shape[j]].bounding_radius;
         if ((b.position[i] - b.position[j]).norm() >= reach) continue;  // bounding spheres apart: no contact possible
-        for (const auto& [f, cp] : brute_force_contacts(posed[i], posed[j])) brute.insert({i, j, int(f.type), f.a, f.b});
+        // Every feature pair, less the duplicates a vertex-face contact shadows (SPEC boundary rule).
+        const auto all = brute_force_contacts(posed[i], posed[j]);
+        std::vector<std::uint8_t> drop(all.size());
+        mark_shadowed(all.size(), [&](std::size_t k) { return all[k].first; }, [&](std::size_t k) { return all[k].second.gap; },
+                      posed[i].radius + posed[j].radius, drop.data());
+        for (std::size_t k = 0; k < all.size(); ++k)
+          if (!drop[k]) brute.insert({i, j, int(all[k].first.type), all[k].first.a, all[k].first.b});
       }
     REQUIRE(engine == brute);
     compared += brute.size();
     steps_with_contacts += !brute.empty();
   }
   INFO("contacts compared " << compared);
-  CHECK(compared > 1000);  // the pile really is dense
+  CHECK(compared > 500);  // the pile really is dense (~1000 contacts over the checks)
   CHECK(steps_with_contacts > 100);
 }
