@@ -47,7 +47,8 @@ std::string numbered(const char* stem, std::int64_t n, const char* ext) {
 }
 
 // One line per touching pair (force chains): body-body from centre to centre, body-driver
-// from the centre to the contact point; force summed over the pair's sub-contacts.
+// from the centre to the contact point; forces summed over the pair's sub-contacts (ft: the
+// sum of their tangential magnitudes).
 std::vector<ContactOut> contact_lines(const Simulation& sim) {
   std::vector<ContactOut> out;
   const Bodies& b = sim.bodies;
@@ -61,6 +62,8 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
         if (!slot.active) continue;
         c.fn += slot.fn;
         c.force += slot.force;
+        // force = fn n + ft with ft normal to n, so |ft| follows without storing n
+        c.ft += std::sqrt(std::max(slot.force.squaredNorm() - slot.fn * slot.fn, 0.0));
         c.overlap = std::max(c.overlap, -slot.gap);
         c.point += slot.point * std::max(slot.fn, 1e-300);
         weight += std::max(slot.fn, 1e-300);
@@ -72,7 +75,6 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
       c.j = driver ? -1 - std::int64_t(p.j) : std::int64_t(p.j);
       c.from = b.position[p.i];
       c.to = driver ? c.point : b.position[p.j];
-      c.ft = (c.force - c.force.dot((c.from - c.point).normalized()) * (c.from - c.point).normalized()).norm();
       out.push_back(c);
     }
   };
