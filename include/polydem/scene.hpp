@@ -55,7 +55,8 @@ struct GeneratorSpec {            // `generate: random` or `generate: lattice`
   Vec3 velocity = Vec3::Zero();   // m/s
   double density = 2700.0;        // kg/m^3
   int group = 0;
-  SourceLoc loc;
+  SourceLoc loc;                  // the generator's first line
+  SourceLoc shapes_loc;           // the `shapes` line: unknown names in the mix are reported there
 };
 
 struct Motion {                   // how a driver moves; fixed when all are unset

@@ -71,8 +71,8 @@ std::vector<BodySpec> draw_bodies(const Scene& scene, const GeneratorSpec& g,
                                   const ShapeLibrary& lib, std::mt19937_64& rng) {
   std::vector<int> indices;
   for (const auto& entry : g.shapes) {
-    indices.push_back(shape_index(lib, entry.first, g.loc, "shapes"));
-    check_sphere(scene, lib.shapes[indices.back()], g.loc, "shapes");
+    indices.push_back(shape_index(lib, entry.first, g.shapes_loc, "shapes"));
+    check_sphere(scene, lib.shapes[indices.back()], g.shapes_loc, "shapes");
   }
   std::vector<BodySpec> bodies;
   for (int s : shape_sequence(g, indices, rng)) {

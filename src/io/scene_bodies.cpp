@@ -123,6 +123,7 @@ GeneratorSpec read_generator(const YAML::Node& item, const std::string& file, in
   g.density = check_positive(m, "density", m.quantity("density", Dimension::density, g.density));
   g.group = static_cast<int>(m.integer("group", 0, 0));
   g.loc = {file, m.line()};
+  g.shapes_loc = {file, m.line("shapes")};
   return g;
 }
 

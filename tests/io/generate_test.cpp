@@ -37,6 +37,7 @@ GeneratorSpec generator(int count, std::variant<BoxRegion, CylinderRegion> regio
   g.scale_min = 0.8;
   g.scale_max = 1.2;
   g.loc = {"scene.yaml", 17};
+  g.shapes_loc = {"scene.yaml", 18};
   return g;
 }
 
@@ -254,8 +255,9 @@ TEST_CASE("unknown shape names suggest the nearest known one", "[generate]") {
          contains(msg, "did you mean 'small'?")));
   GeneratorSpec g = generator(10, kBox);
   g.shapes = {{"small", 0.5}, {"larje", 0.5}};
+  g.shapes_loc = {"scene.yaml", 19};  // the `shapes:` line of the generator
   msg = test::input_error_of([&] { expand_bodies(scene_with(g), lib); });
-  CHECK((contains(msg, "scene.yaml:17:") && contains(msg, "'larje'") &&
+  CHECK((contains(msg, "scene.yaml:19:") && contains(msg, "'larje'") &&
          contains(msg, "did you mean 'large'?")));
   // Explicit bodies come first, then generated ones, in file order.
   s.bodies[0].shape = "large";
@@ -276,6 +278,6 @@ TEST_CASE("contact_sphere rejects a polyhedral shape", "[generate]") {
   CHECK(test::input_error_of([&] { expand_bodies(s, lib); }).empty());
   s.generators[0].shapes = {{"small", 0.5}, {"cube", 0.5}};
   const std::string msg = test::input_error_of([&] { expand_bodies(s, lib); });
-  CHECK((contains(msg, "scene.yaml:17:") && contains(msg, "not a sphere") &&
+  CHECK((contains(msg, "scene.yaml:18:") && contains(msg, "not a sphere") &&
          contains(msg, "contact_polyhedron")));
 }

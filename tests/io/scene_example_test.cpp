@@ -131,6 +131,7 @@ TEST_CASE("SCENE.md example: simulation, shapes, bodies, generator", "[scene]") 
   CHECK(g.density == 2700.0);
   CHECK(g.group == 1);
   CHECK(g.loc.line == 19);
+  CHECK(g.shapes_loc.line == 20);  // `shapes: {cube: 0.7, ...}`, the line after `- generate: random`
   CHECK(fs::path(s.folder) == folder);
 }
 
