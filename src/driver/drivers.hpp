@@ -24,7 +24,6 @@ struct Driver {
   Vec3 pivot = Vec3::Zero();       // m, a point on the rotation axis
   Vec3 force = Vec3::Zero();       // N, exerted by the particles this step
   Vec3 torque = Vec3::Zero();      // N m, about center(j) (wall: its point), exerted by the particles this step
-  double work = 0.0;               // J, work done by the driver on the particles so far
   Shape ball_shape;                // ball: a one-vertex shape, so body-ball contacts reuse the body kernels
 };
 

@@ -53,6 +53,13 @@ void slot_fields(IO& io, Key& f, Slot& s) {
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
 }
 
+// The moving state of a driver (placement, motion, reactions), one writer/reader for both ways.
+template <class IO, class D>
+void driver_fields(IO& io, D& d) {
+  io.pod(d.active); io.pod(d.point); io.pod(d.normal); io.pod(d.center); io.pod(d.axis);
+  io.pod(d.velocity); io.pod(d.omega); io.pod(d.pivot); io.pod(d.force); io.pod(d.torque);
+}
+
 void write_active(Writer& w, const PairList& list) {
   std::uint64_t n = 0;
   for (const ContactSlot& s : list.slots) n += s.active;
@@ -105,7 +112,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Outp
   w.pod<std::uint64_t>(sim.drivers.size());
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     const Driver& d = sim.drivers[j];
-    w.pod(d.active); w.pod(d.point); w.pod(d.normal); w.pod(d.velocity); w.pod(d.force); w.pod(d.torque); w.pod(d.work);
+    driver_fields(w, d);
   }
   write_active(w, sim.engine().body_pairs());
   write_active(w, sim.engine().driver_pairs());
@@ -146,7 +153,7 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   if (nd != sim.drivers.size()) throw InputError(path + ": checkpoint driver count differs from the scene's");
   for (std::size_t j = 0; j < nd; ++j) {
     Driver& d = sim.drivers[j];
-    r.pod(d.active); r.pod(d.point); r.pod(d.normal); r.pod(d.velocity); r.pod(d.force); r.pod(d.torque); r.pod(d.work);
+    driver_fields(r, d);
   }
   read_active(r, sim.engine().body_pairs());
   read_active(r, sim.engine().driver_pairs());
