@@ -2,7 +2,7 @@
 # Installs what polydem needs to build and test, from Debian packages. Idempotent: installs
 # only what is missing. Uses sudo only when not root.
 set -euo pipefail
-packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2
+packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2 zlib1g-dev
           python3 python3-vtk9 python3-numpy python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do

@@ -17,7 +17,7 @@ inline constexpr int kPairTypeCount = 6;
 struct FeaturePair {
   PairType type;
   std::uint16_t a;
-  std::uint16_t b;
+  std::uint32_t b;  // 32 bits: a driver mesh may have more than 65,535 features
 };
 
 // A body placed in the world for one step; vertices are precomputed once per step by the caller.

@@ -15,7 +15,7 @@ namespace polydem {
 template <class KeyAt, class GapAt>
 void mark_shadowed(std::size_t n, const KeyAt& key_at, const GapAt& gap_at, double radii, std::uint8_t* drop) {
   constexpr int kMax = 64;  // vertices over a face per pair: more than any real contact patch
-  std::uint16_t over_a[kMax], over_b[kMax];
+  std::uint32_t over_a[kMax], over_b[kMax];
   int na = 0, nb = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const FeaturePair f = key_at(k);
@@ -23,7 +23,7 @@ void mark_shadowed(std::size_t n, const KeyAt& key_at, const GapAt& gap_at, doub
     if (f.type == PairType::vertex_face && na < kMax) over_a[na++] = f.a;
     if (f.type == PairType::face_vertex && nb < kMax) over_b[nb++] = f.b;
   }
-  auto listed = [](const std::uint16_t* v, int count, std::uint16_t x) {
+  auto listed = [](const std::uint32_t* v, int count, std::uint32_t x) {
     for (int i = 0; i < count; ++i)
       if (v[i] == x) return true;
     return false;

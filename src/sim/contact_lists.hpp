@@ -27,7 +27,7 @@ struct ContactSlot {
 
 // Packs a contact key of one pair into an integer that orders slots deterministically.
 inline std::uint64_t feature_key(FeaturePair f) {
-  return (std::uint64_t(f.type) << 32) | (std::uint64_t(f.a) << 16) | std::uint64_t(f.b);
+  return (std::uint64_t(f.type) << 48) | (std::uint64_t(f.a) << 32) | std::uint64_t(f.b);
 }
 
 struct PairList {
