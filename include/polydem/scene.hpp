@@ -67,6 +67,9 @@ struct Motion {                   // how a driver moves; fixed when all are unse
   double omega = 0.0;             // rad/s
   std::optional<double> force;    // N along the driver normal/axis (servo)
   std::optional<double> pressure; // Pa (servo, force = pressure x area)
+  std::optional<double> area;     // m^2, the area the servo pressure acts on
+  std::optional<double> gain;     // m/(N s), servo speed per newton of force error; empty: 0.1 / (kn dt)
+  std::optional<Vec3> direction;  // unit, servo direction of a ball or mesh (wall: normal; cylinder: axis)
   std::optional<double> remove_at;  // s, the driver disappears at this time
   double start = 0.0;             // s, motion begins
   std::optional<double> stop;     // s, motion ends
@@ -83,6 +86,7 @@ struct DriverSpec {
   std::optional<double> length;   // m, cylinder; empty: infinite
   bool inside = true;             // cylinder: particles inside
   std::string file;               // stl: path (resolved against the scene folder)
+  SourceLoc file_loc;             // stl: the `file` key, for errors in the file
   double scale = 1.0;             // stl
   Vec3 translation = Vec3::Zero();  // m, stl placement
   Quat rotation = Quat::Identity(); // stl placement
@@ -105,8 +109,31 @@ struct ForceSettings {
   ContactOperator contact;
   struct Quadratic { double cx = 0.38, mu = 0.000015; };
   std::optional<Quadratic> quadratic;     // quadratic_force
-  struct FluidFriction { std::string field; double cx = 1.0; };
+  struct FluidFriction { std::string field; double cx = 1.0; };  // field: a .vti, or "" (fluid_field)
   std::optional<FluidFriction> fluid_friction;  // sphere_fluid_friction
+  // fluid_field: the prescribed fluid on a regular grid of cells, from a .vti file or analytic:
+  // U(x) = velocity + velocity_gradient (x - reference), p(x) = pressure + pressure_gradient . (x - reference).
+  struct FluidField {
+    std::string file;             // .vti (resolved); empty: the analytic field on the grid below
+    Vec3 grid_min = Vec3::Zero(), grid_max = Vec3::Zero();  // m, analytic grid box
+    Eigen::Vector3i cells = Eigen::Vector3i::Ones();  // analytic grid cells per axis
+    Vec3 velocity = Vec3::Zero();           // m/s at `reference`
+    Mat3 velocity_gradient = Mat3::Zero();  // 1/s, shear or solid-body rotation
+    Vec3 reference = Vec3::Zero();          // m
+    double pressure = 0.0;                  // Pa at `reference`
+    Vec3 pressure_gradient = Vec3::Zero();  // Pa/m, hydrostatic: rho g
+    std::optional<double> rho, nu;          // kg/m^3, m^2/s; with a file: used when it lacks the array
+    bool trilinear = false;       // sampling: the particle's cell value, or trilinear between cell centres
+    SourceLoc loc, file_loc;      // the operator, and the key naming the file (for file errors)
+    std::string file_key = "file";  // that key: file, or sphere_fluid_friction's field
+  };
+  std::optional<FluidField> fluid;
+  struct CfdForce { double added_mass = 0.0; };  // C_added_mass, dimensionless
+  std::optional<CfdForce> pressure_force;        // pressure_force: -Vs grad(p) (1 + C_added_mass)
+  std::optional<CfdForce> viscous_force;         // viscous_force: -Vs div(tau) (1 + C_added_mass)
+  bool archimedes = false;                       // archimedes_force: -rho_f Vs g
+  struct VoidFraction { double alpha_min = 0.0; int samples = 6; };  // samples: lattice points per axis
+  std::optional<VoidFraction> void_fraction;     // void_fraction: Vs split among cells
 };
 
 struct OutputSettings {
@@ -115,6 +142,21 @@ struct OutputSettings {
   std::optional<double> csv_every;         // s; empty: no CSV output
   std::optional<double> checkpoint_every;  // s; empty: only the final checkpoint
   bool contacts = true;           // write the contact network
+  struct FlowProbe {              // probes: flow; mass and count of bodies past a plane
+    std::string name = "flow";    // written to NAME.csv
+    Vec3 point = Vec3::Zero();    // m, a point on the plane
+    Vec3 normal = -Vec3::UnitZ(); // unit, towards the discharged side
+    SourceLoc loc;
+  };
+  struct ReposeProbe {            // probes: repose_angle; free-surface slope in a drum
+    std::string name = "angle";   // written to NAME.csv
+    std::string driver;           // a cylinder driver (the drum)
+    std::optional<double> column; // m, width of the surface columns; empty: mean equivalent diameter
+    double fit = 0.6;             // central fraction of the free surface's width that is fitted
+    SourceLoc loc;
+  };
+  std::vector<FlowProbe> flow_probes;      // on the csv_every schedule
+  std::vector<ReposeProbe> repose_probes;  // on the csv_every schedule
 };
 
 struct Scene {

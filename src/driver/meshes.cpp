@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "driver/drivers.hpp"
+#include "driver/mesh.hpp"
 #include "output/vtk.hpp"
 
 namespace polydem {
@@ -53,6 +54,13 @@ DriverMesh ball_mesh(const Driver& d) {
   return m;
 }
 
+DriverMesh stl_mesh(const Driver& d) {
+  DriverMesh m{d.spec.name, {}, {}};
+  for (const Vec3& v : d.mesh->vertices) m.points.push_back(d.center + d.orientation * v);
+  for (const std::array<int, 3>& t : d.mesh->faces) m.polygons.push_back({t[0], t[1], t[2]});
+  return m;
+}
+
 }  // namespace
 
 std::vector<DriverMesh> Drivers::meshes(double extent) const {
@@ -63,7 +71,7 @@ std::vector<DriverMesh> Drivers::meshes(double extent) const {
       case DriverSpec::Kind::wall: out.push_back(wall_mesh(d, extent)); break;
       case DriverSpec::Kind::cylinder: out.push_back(cylinder_mesh(d, extent)); break;
       case DriverSpec::Kind::ball: out.push_back(ball_mesh(d)); break;
-      case DriverSpec::Kind::stl: break;
+      case DriverSpec::Kind::stl: out.push_back(stl_mesh(d)); break;
     }
   }
   return out;

@@ -1,5 +1,6 @@
 #include "driver/surfaces.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace polydem {
@@ -78,6 +79,51 @@ Shape ball_shape(const std::string& name, double radius) {
 
 PosedBody ball_pose(const Driver& d) {
   return PosedBody{&d.ball_shape, &d.center, Mat3::Identity(), d.center, d.spec.radius};
+}
+
+Shape axis_shape(const std::string& name, double radius) {
+  Shape s = ball_shape(name, radius);
+  s.vertices.push_back(Vec3::Zero());
+  s.edges = {{0, 1}};
+  return s;
+}
+
+namespace {
+
+// The outer cylinder as a posed body: its axis segment, radius R; `ends` receives the ends.
+PosedBody axis_pose(const Driver& d, const PosedBody& a, Vec3* ends) {
+  const double r = d.spec.radius;
+  if (d.spec.length) {
+    ends[0] = d.center - 0.5 * *d.spec.length * d.axis;
+    ends[1] = d.center + 0.5 * *d.spec.length * d.axis;
+    return PosedBody{&d.axis_shape, ends, Mat3::Identity(), d.center, r};
+  }
+  double core = 0.0;  // m, farthest core vertex of the body from its centre
+  for (std::size_t v = 0; v < a.shape->vertices.size(); ++v) core = std::max(core, (a.vertices[v] - a.position).norm());
+  // Ends farther along the axis than any point of the body, by more than R: never the closest.
+  const double half = r + 2.0 * (core + a.radius);
+  const Vec3 foot = d.center + (a.position - d.center).dot(d.axis) * d.axis;
+  ends[0] = foot - half * d.axis;
+  ends[1] = foot + half * d.axis;
+  return PosedBody{&d.axis_shape, ends, Mat3::Identity(), foot, r};
+}
+
+}  // namespace
+
+bool outer_cylinder_near(const Driver& d, const Vec3& center, double reach) {
+  const AxisFrame f = axis_frame(d, center);
+  const double beyond = d.spec.length ? std::max(0.0, std::abs(f.axial) - 0.5 * *d.spec.length) : 0.0;  // m, past an end
+  return std::hypot(beyond, f.radial.norm()) < d.spec.radius + reach;
+}
+
+void outer_cylinder_candidates(const Driver& d, const PosedBody& a, double range, std::vector<FeaturePair>& out) {
+  Vec3 ends[2];
+  candidate_features(a, axis_pose(d, a, ends), range, out);
+}
+
+bool outer_cylinder_contact(const Driver& d, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) {
+  Vec3 ends[2];
+  return feature_contact(a, axis_pose(d, a, ends), f, max_gap, out);
 }
 
 }  // namespace polydem

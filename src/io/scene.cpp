@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "io/scene_parts.hpp"
+#include "io/scene_probes.hpp"
 #include "polydem/error.hpp"
 
 namespace polydem {
@@ -104,7 +105,7 @@ std::vector<std::string> read_shape_files(const YamlMap& root, const std::string
 
 OutputSettings read_output(const YamlMap& root, const std::string& folder) {
   const YamlMap m = root.map("output", "output",
-                             {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts"});
+                             {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts", "probes"});
   OutputSettings o;
   const fs::path dir(m.text("dir", "out"));
   o.dir = (dir.is_absolute() ? dir : (fs::path(folder) / dir).lexically_normal()).string();
@@ -141,6 +142,7 @@ Scene load_scene(const std::string& path) {
   if (root.has("drivers")) read_drivers(root.node("drivers"), root.line("drivers"), scene);
   if (root.has("forces")) read_forces(root.node("forces"), root.line("forces"), scene);
   scene.output = read_output(root, scene.folder);
+  read_probes(root, scene);  // after drivers, forces and csv_every: it checks against them
   return scene;
 }
 

@@ -10,12 +10,37 @@ namespace {
 
 const std::vector<std::string> kDriverKinds = {"wall", "cylinder", "ball", "stl"};
 
-Motion read_motion(const YamlMap& driver) {
+// Servo keys: force (N) or pressure (Pa) with area (m^2, a number); gain (m/(N s), a number;
+// default 0.1 / (kn dt)); direction for a ball or a mesh (a wall uses its normal, a cylinder
+// its axis).
+void read_servo(const YamlMap& m, DriverSpec::Kind kind, Motion& motion) {
+  if (m.has("force") && m.has("pressure"))
+    m.fail("pressure", "give either force or pressure for a servo driver, not both");
+  motion.force = m.optional_quantity("force", Dimension::force);
+  motion.pressure = m.optional_quantity("pressure", Dimension::pressure);
+  const bool servo = motion.force || motion.pressure;
+  for (const char* key : {"gain", "area", "direction"})
+    if (m.has(key) && !servo) m.fail(key, "only a servo uses it: add force or pressure");
+  if (motion.pressure) {
+    m.require("area", "area: 0.01   # m^2, pressure x area is the force held");
+    motion.area = check_positive(m, "area", m.quantity("area", Dimension::dimensionless));
+  }
+  if (m.has("gain")) motion.gain = check_positive(m, "gain", m.quantity("gain", Dimension::dimensionless));
+  const bool own_direction = kind == DriverSpec::Kind::ball || kind == DriverSpec::Kind::stl;
+  if (servo && own_direction) {
+    m.require("direction", "direction: [0, 0, -1]   # the servo pushes along it");
+    motion.direction = m.direction("direction", Vec3::UnitZ());
+  } else if (m.has("direction")) {
+    m.fail("direction", "a wall's servo pushes along its normal and a cylinder's along its axis: remove it");
+  }
+}
+
+Motion read_motion(const YamlMap& driver, DriverSpec::Kind kind) {
   Motion motion;
   if (!driver.has("motion")) return motion;
-  const YamlMap m =
-      driver.map("motion", "motion",
-                 {"velocity", "rotate", "force", "pressure", "remove_at", "start", "stop"});
+  const YamlMap m = driver.map("motion", "motion",
+                               {"velocity", "rotate", "force", "pressure", "area", "gain", "direction",
+                                "remove_at", "start", "stop"});
   motion.velocity = m.vec3("velocity", Dimension::velocity, Vec3::Zero());
   if (m.has("rotate")) {
     const YamlMap r = m.map("rotate", "rotate", {"axis", "center", "omega"});
@@ -25,10 +50,7 @@ Motion read_motion(const YamlMap& driver) {
     motion.rotation_center = r.vec3("center", Dimension::length, Vec3::Zero());
     motion.omega = r.quantity("omega", Dimension::angular_velocity);
   }
-  if (m.has("force") && m.has("pressure"))
-    m.fail("pressure", "give either force or pressure for a servo driver, not both");
-  motion.force = m.optional_quantity("force", Dimension::force);
-  motion.pressure = m.optional_quantity("pressure", Dimension::pressure);
+  read_servo(m, kind, motion);
   if (m.has("remove_at"))
     motion.remove_at =
         check_positive(m, "remove_at", m.quantity("remove_at", Dimension::time), true);
@@ -60,6 +82,7 @@ void read_ball(const YamlMap& m, DriverSpec& d) {
 
 void read_stl(const YamlMap& m, DriverSpec& d, const std::string& folder) {
   d.file = resolve_input_file(m, "file", folder, "STL file");
+  d.file_loc = m.loc("file");
   d.scale = check_positive(m, "scale", m.quantity("scale", Dimension::dimensionless, 1.0));
   d.translation = m.vec3("translation", Dimension::length, Vec3::Zero());
   d.rotation = m.orientation("rotation");
@@ -100,7 +123,7 @@ DriverSpec read_driver(const YAML::Node& item, std::size_t index, const Scene& s
       read_stl(m, d, scene.folder);
       break;
   }
-  d.motion = read_motion(m);
+  d.motion = read_motion(m, d.kind);
   d.loc = {scene.path, m.line()};
   return d;
 }

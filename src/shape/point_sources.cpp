@@ -58,7 +58,7 @@ class Welder {
   std::map<std::array<double, 3>, int> index_;
 };
 
-TriangleMesh read_binary_stl(const std::string& bytes) {
+TriangleMesh read_binary_stl(const std::string& bytes, const std::string& path) {
   std::uint32_t count = 0;
   std::memcpy(&count, bytes.data() + 80, 4);
   Welder welder;
@@ -67,6 +67,8 @@ TriangleMesh read_binary_stl(const std::string& bytes) {
     float xyz[12];  // normal, then the three vertices (little-endian IEEE floats)
     std::memcpy(xyz, record, sizeof xyz);
     auto vertex = [&](int k) { return Vec3(xyz[3 + 3 * k], xyz[4 + 3 * k], xyz[5 + 3 * k]); };
+    if (!vertex(0).allFinite() || !vertex(1).allFinite() || !vertex(2).allFinite())  // NaN would weld with anything
+      throw InputError(input_message(path, 0, "", "triangle " + std::to_string(i + 1) + " has a coordinate that is not finite"));
     welder.triangle(vertex(0), vertex(1), vertex(2));
   }
   return welder.mesh;
@@ -136,7 +138,7 @@ TriangleMesh read_stl(const std::string& path) {
   if (bytes.size() >= 84) {
     std::uint32_t count = 0;
     std::memcpy(&count, bytes.data() + 80, 4);
-    if (bytes.size() == 84 + 50 * static_cast<size_t>(count)) return read_binary_stl(bytes);
+    if (bytes.size() == 84 + 50 * static_cast<size_t>(count)) return read_binary_stl(bytes, path);
   }
   if (bytes.compare(0, 5, "solid") != 0)
     throw InputError(input_message(path, 0, "",

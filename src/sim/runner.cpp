@@ -1,5 +1,6 @@
 #include "sim/runner.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -11,8 +12,10 @@
 
 #include "output/csv.hpp"
 #include "output/vtk.hpp"
+#include "output/vtk_image.hpp"
 #include "polydem/error.hpp"
 #include "sim/checkpoint.hpp"
+#include "sim/probes.hpp"
 
 namespace polydem {
 
@@ -90,6 +93,51 @@ double scene_extent(const Bodies& b) {
   return std::max(0.5 * (hi - lo).norm(), 1e-3);
 }
 
+// fluid_NNNNNN.vti: the fluid grid's cell fields and, with void_fraction, the void fraction.
+void write_fluid_vti(const std::string& path, const Simulation& sim) {
+  const FluidGrid& g = *sim.external()->grid();
+  std::vector<ImageArray> arrays;
+  auto add = [&](const char* name, const std::vector<double>& v) { if (!v.empty()) arrays.push_back({name, 1, v}); };
+  if (!g.U.empty()) arrays.push_back({"U", 3, std::vector<double>(g.U[0].data(), g.U[0].data() + 3 * g.U.size())});
+  add("p", g.p);
+  add("rho", g.rho);
+  add("nu", g.nu);
+  if (const auto vf = sim.external()->void_fraction(sim.bodies)) add("void_fraction", vf->alpha);
+  write_image_vti(path, g.origin, g.spacing, g.cells, arrays);
+}
+
+// fluid.csv: bodies outside the fluid grid (no grid force), the solid volume the alpha_min
+// floor refused (m^3), and the mean vertical velocity of each group (m/s).
+class FluidSeries {
+ public:
+  FluidSeries(const Simulation& sim, const std::string& path, bool append) : sim_(sim) {
+    std::vector<std::string> columns{"time", "outside", "excess_volume"};
+    for (int g : sim.bodies.group)
+      if (std::find(groups_.begin(), groups_.end(), g) == groups_.end()) groups_.push_back(g);
+    std::sort(groups_.begin(), groups_.end());
+    for (int g : groups_) columns.push_back("vz_group_" + std::to_string(g));
+    csv_ = std::make_unique<CsvSeries>(path, columns, append);
+  }
+  void row() {
+    const ExternalForces& ext = *sim_.external();
+    const auto vf = ext.void_fraction(sim_.bodies);
+    std::vector<double> values{sim_.time(), double(ext.outside()), vf ? vf->excess : 0.0};
+    std::vector<double> vz(groups_.size(), 0.0), count(groups_.size(), 0.0);
+    for (std::size_t b = 0; b < sim_.bodies.size(); ++b) {
+      const auto g = std::lower_bound(groups_.begin(), groups_.end(), sim_.bodies.group[b]) - groups_.begin();
+      vz[g] += sim_.bodies.velocity[b].z();
+      count[g] += 1.0;
+    }
+    for (std::size_t g = 0; g < groups_.size(); ++g) values.push_back(vz[g] / count[g]);
+    csv_->row(values);
+  }
+
+ private:
+  const Simulation& sim_;
+  std::vector<int> groups_;
+  std::unique_ptr<CsvSeries> csv_;
+};
+
 class OutputWriter {
  public:
   OutputWriter(const Simulation& sim, const RunOptions& o, OutputProgress progress)
@@ -100,6 +148,8 @@ class OutputWriter {
     energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
         std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
                                  "driver_work", "contacts"}, !o.resume.empty());
+    if (sim.external()) fluid_ = std::make_unique<FluidSeries>(sim, dir_ + "/fluid.csv", !o.resume.empty());
+    probes_ = std::make_unique<Probes>(sim, dir_, !o.resume.empty());  // output.probes: flow.csv, angle.csv
     for (std::size_t j = 0; j < sim.drivers.size(); ++j)  // force and torque the particles exert on it
       driver_series_.push_back(std::make_unique<CsvSeries>(dir_ + "/driver_" + sim.drivers[j].spec.name + ".csv",
           std::vector<std::string>{"time", "fx", "fy", "fz", "tx", "ty", "tz", "x", "y", "z"}, !o.resume.empty()));
@@ -116,6 +166,10 @@ class OutputWriter {
       f.files.push_back(numbered("contacts", progress_.frame, "vtp"));
       write_contacts_vtp(dir_ + "/" + f.files.back(), contact_lines(sim_));
     }
+    if (sim_.external() && sim_.external()->grid()) {
+      f.files.push_back(numbered("fluid", progress_.frame, "vti"));
+      write_fluid_vti(dir_ + "/" + f.files.back(), sim_);
+    }
     pvd_.add(f.time, f.files);
     progress_.frames.push_back(f);
     ++progress_.frame;
@@ -124,6 +178,7 @@ class OutputWriter {
   void energy_row() {
     if (!energy_) return;
     const EnergyRow e = sim_.energy();
+    if (fluid_) fluid_->row();
     energy_->row({sim_.time(), e.kinetic, e.rotational, e.elastic, e.dissipated, e.gravity_work, e.driver_work,
                   double(e.contacts)});
     for (std::size_t j = 0; j < driver_series_.size(); ++j) {
@@ -132,6 +187,7 @@ class OutputWriter {
       driver_series_[j]->row({sim_.time(), d.force.x(), d.force.y(), d.force.z(), d.torque.x(), d.torque.y(),
                               d.torque.z(), x.x(), x.y(), x.z()});
     }
+    probes_->row();
   }
 
   std::string checkpoint(Simulation& sim) {
@@ -148,6 +204,8 @@ class OutputWriter {
   PvdSeries pvd_;
   std::unique_ptr<CsvSeries> energy_;
   std::vector<std::unique_ptr<CsvSeries>> driver_series_;
+  std::unique_ptr<FluidSeries> fluid_;
+  std::unique_ptr<Probes> probes_;
   double extent_;
 };
 

@@ -44,7 +44,10 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   if (!std::isfinite(dt_) || dt_ <= 0.0)
     throw InputError(input_message(scene.path, 0, "dt", "cannot choose a time step automatically for this scene; give simulation.dt"));
   for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];
+  if (ExternalForces::wanted(scene.forces))
+    external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   external_forces();
+  ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
   if (contacts) engine_->compute(bodies, drivers, dt_);
 }
 
@@ -54,6 +57,8 @@ void Simulation::external_forces() {
     bodies.force[b] = bodies.mass[b] * gravity_;
     bodies.torque[b].setZero();
   });
+  // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
+  if (external_) ledger.external_work += external_->add(bodies) * dt_;
 }
 
 void Simulation::step() {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "driver/drivers.hpp"
+#include "field/external_forces.hpp"
 #include "integrate/integrate.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/scene.hpp"
@@ -19,6 +20,7 @@ namespace polydem {
 struct EnergyLedger {
   double dissipated = 0.0;    // by dashpots, friction slip and rolling slip
   double driver_work = 0.0;   // done by moving drivers on the particles
+  double external_work = 0.0; // done by drag and fluid forces on the particles
   Vec3 initial_mass_moment = Vec3::Zero();  // kg m, sum m x at t = 0: gravity work = m g . dx
 };
 
@@ -46,6 +48,8 @@ class Simulation {
   ContactEngine& engine() { return *engine_; }
   const ContactEngine& engine() const { return *engine_; }
   EnergyLedger ledger;
+  // Drag and fluid operators; null when the scene has none.
+  const ExternalForces* external() const { return external_.get(); }
 
   // Checkpoint support: the step counter is part of the state.
   void set_step_index(std::int64_t s) { step_ = s; }
@@ -61,6 +65,7 @@ class Simulation {
   double dt_ = 0.0;
   std::int64_t step_ = 0;
   Vec3 gravity_ = Vec3::Zero();  // m/s^2
+  std::unique_ptr<ExternalForces> external_;
 };
 
 // Index of the first body whose state is not finite, or -1.

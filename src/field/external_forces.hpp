@@ -1,0 +1,57 @@
+#pragma once
+// The force operators that act on each body from outside the contact network, gravity apart:
+// quadratic drag, friction against the fluid grid, and the CFD-DEM pressure-gradient,
+// viscous and Archimedes forces with the divided void fraction. Built only when the scene has
+// one of them; all act at the centre of mass (no torque).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "field/fluid_grid.hpp"
+#include "field/void_fraction.hpp"
+#include "polydem/bodies.hpp"
+#include "polydem/scene.hpp"
+#include "polydem/shape.hpp"
+
+namespace polydem {
+
+class ExternalForces {
+ public:
+  // Whether `forces` holds an operator this class applies.
+  static bool wanted(const ForceSettings& forces);
+
+  // Reads the fluid grid (InputError at the scene key for a bad file).
+  ExternalForces(const ForceSettings& forces, const std::vector<Shape>& shapes, const Bodies& bodies);
+
+  // Adds each operator's force to bodies.force; returns their power sum_b f_b . v_b (W),
+  // summed in body order.
+  double add(Bodies& bodies);
+
+  const FluidGrid* grid() const { return grid_ ? &*grid_ : nullptr; }
+  // Bodies whose centre was outside the grid at the last add(): no grid force acts on them.
+  std::size_t outside() const { return outside_; }
+  // The void fraction field now; empty without a void_fraction operator.
+  std::optional<VoidFractionField> void_fraction(const Bodies& bodies) const;
+  // Vs per body at the last add(), m^3.
+  const std::vector<double>& solid_volumes() const { return vs_; }
+
+ private:
+  Vec3 grid_force(const Bodies& bodies, std::size_t b) const;
+
+  ForceSettings::Quadratic quadratic_{};
+  bool quadratic_on_ = false;
+  std::optional<double> friction_cx_;          // sphere_fluid_friction
+  std::optional<double> pressure_, viscous_;   // 1 + C_added_mass
+  bool archimedes_ = false;
+  Vec3 gravity_ = Vec3::Zero();                // m/s^2
+  std::optional<FluidGrid> grid_;
+  std::unique_ptr<VoidFraction> void_fraction_;
+  std::vector<double> volume_, area_;          // per body: m^3, and pi r^2 of the equivalent sphere (m^2)
+  std::vector<double> vs_;                     // per body, m^3
+  std::vector<double> power_;                  // per body, W
+  std::vector<std::uint8_t> outside_flag_;
+  std::size_t outside_ = 0;
+};
+
+}  // namespace polydem
