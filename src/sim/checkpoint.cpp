@@ -10,7 +10,7 @@ namespace polydem {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '1'};
+constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '2'};  // 02: 32-bit partner features
 
 struct Writer {
   std::ofstream out;
@@ -134,7 +134,7 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   if (!r.in) throw InputError(path + ": cannot open checkpoint");
   char magic[sizeof(kMagic)];
   if (!r.in.read(magic, sizeof(magic)) || std::memcmp(magic, kMagic, sizeof(kMagic)) != 0)
-    throw InputError(path + ": not a polydem checkpoint");
+    throw InputError(path + ": not a polydem checkpoint of this version (format " + std::string(kMagic + 6, 2) + ")");
   std::int64_t step = 0;
   double dt = 0.0;
   r.pod(step);
