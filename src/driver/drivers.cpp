@@ -83,7 +83,7 @@ void Drivers::candidates(const PosedBody& a, std::uint32_t j, double range, std:
   switch (d.spec.kind) {
     case DriverSpec::Kind::wall: return wall_candidates(d, a, range, out);
     case DriverSpec::Kind::cylinder: return cylinder_candidates(d, a, range, out);
-    case DriverSpec::Kind::ball: return candidate_features(a, ball_pose(d), range, out);
+    case DriverSpec::Kind::ball: candidate_features(a, ball_pose(d), range, out); return;
     case DriverSpec::Kind::stl: return;
   }
 }
