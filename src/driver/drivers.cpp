@@ -136,7 +136,7 @@ void Drivers::candidates(const PosedBody& a, std::uint32_t j, double range, std:
     case DriverSpec::Kind::wall: return wall_candidates(d, a, range, out);
     case DriverSpec::Kind::cylinder:
       return d.spec.inside ? cylinder_candidates(d, a, range, out) : outer_cylinder_candidates(d, a, range, out);
-    case DriverSpec::Kind::ball: return candidate_features(a, ball_pose(d), range, out);
+    case DriverSpec::Kind::ball: candidate_features(a, ball_pose(d), range, out); return;
     case DriverSpec::Kind::stl: return mesh_candidates(d, a, range, out);
   }
 }

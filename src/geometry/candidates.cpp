@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "geometry/features.hpp"
 #include "geometry/segment.hpp"
@@ -58,17 +59,31 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, NearF
   }
 }
 
+// Where candidates go: the pairs, their core distances^2 (when asked) and the smallest of them.
+struct CandidateSink {
+  std::vector<FeaturePair>& pairs;
+  std::vector<double>* distances2;  // m^2, or null
+  double nearest2 = std::numeric_limits<double>::infinity();
+};
+
+// Keeps `pair` when its core distance^2 d2 is below cutoff2.
+inline void keep_if_near(FeaturePair pair, double d2, double cutoff2, CandidateSink& out) {
+  if (d2 >= cutoff2) return;
+  out.pairs.push_back(pair);
+  if (out.distances2) out.distances2->push_back(d2);
+  out.nearest2 = std::min(out.nearest2, d2);
+}
+
 void append_vertex_pairs(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
-                         double cutoff2, std::vector<FeaturePair>& out) {
+                         double cutoff2, CandidateSink& out) {
   for (std::uint16_t va : na.vertices)
     for (std::uint16_t vb : nb.vertices)
-      if ((A.vertices[va] - B.vertices[vb]).squaredNorm() < cutoff2)
-        out.push_back({PairType::vertex_vertex, va, vb});
+      keep_if_near({PairType::vertex_vertex, va, vb}, (A.vertices[va] - B.vertices[vb]).squaredNorm(), cutoff2, out);
 }
 
 // Vertices of V against edges of E; `type` says which body is A.
 void append_vertex_edge(const PosedBody& V, const PosedBody& E, const NearFeatures& nv, const NearFeatures& ne,
-                        double cutoff2, PairType type, std::vector<FeaturePair>& out) {
+                        double cutoff2, PairType type, CandidateSink& out) {
   const bool v_is_a = type == PairType::vertex_edge;
   const std::vector<std::uint16_t>& outer = v_is_a ? nv.vertices : ne.edges;
   const std::vector<std::uint16_t>& inner = v_is_a ? ne.edges : nv.vertices;
@@ -77,14 +92,14 @@ void append_vertex_edge(const PosedBody& V, const PosedBody& E, const NearFeatur
       const std::uint16_t v = v_is_a ? i : j;
       const std::uint16_t e = v_is_a ? j : i;
       const Vec3& p0 = E.vertices[E.shape->edges[e][0]];
-      if (point_segment_distance_sq(V.vertices[v], p0, E.vertices[E.shape->edges[e][1]] - p0) < cutoff2)
-        out.push_back({type, i, j});
+      keep_if_near({type, i, j}, point_segment_distance_sq(V.vertices[v], p0, E.vertices[E.shape->edges[e][1]] - p0),
+                   cutoff2, out);
     }
 }
 
 // Vertices of V against faces of F; `type` says which body is A.
 void append_vertex_face(const PosedBody& V, const PosedBody& F, const NearFeatures& nv, const NearFeatures& nf,
-                        double cutoff2, PairType type, std::vector<FeaturePair>& out) {
+                        double cutoff2, PairType type, CandidateSink& out) {
   const bool v_is_a = type == PairType::vertex_face;
   const std::size_t outer_count = v_is_a ? nv.vertices.size() : nf.faces.size();
   const std::size_t inner_count = v_is_a ? nf.faces.size() : nv.vertices.size();
@@ -94,20 +109,20 @@ void append_vertex_face(const PosedBody& V, const PosedBody& F, const NearFeatur
       const std::size_t jf = v_is_a ? j : i;
       const std::uint16_t v = nv.vertices[iv];
       const std::uint16_t f = nf.faces[jf];
-      if (face_distance_sq(V.vertices[v], F, f, nf.face_normals[jf], cutoff2) < cutoff2)
-        out.push_back(v_is_a ? FeaturePair{type, v, f} : FeaturePair{type, f, v});
+      keep_if_near(v_is_a ? FeaturePair{type, v, f} : FeaturePair{type, f, v},
+                   face_distance_sq(V.vertices[v], F, f, nf.face_normals[jf], cutoff2), cutoff2, out);
     }
 }
 
 void append_edge_edge(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
-                      double cutoff2, std::vector<FeaturePair>& out) {
+                      double cutoff2, CandidateSink& out) {
   for (std::uint16_t ea : na.edges) {
     const Vec3& pa = A.vertices[A.shape->edges[ea][0]];
     const Vec3 da = A.vertices[A.shape->edges[ea][1]] - pa;
     for (std::uint16_t eb : nb.edges) {
       const Vec3& pb = B.vertices[B.shape->edges[eb][0]];
-      if (segment_segment_distance_sq(pa, da, pb, B.vertices[B.shape->edges[eb][1]] - pb) < cutoff2)
-        out.push_back({PairType::edge_edge, ea, eb});
+      keep_if_near({PairType::edge_edge, ea, eb},
+                   segment_segment_distance_sq(pa, da, pb, B.vertices[B.shape->edges[eb][1]] - pb), cutoff2, out);
     }
   }
 }
@@ -136,20 +151,24 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
   for (std::size_t i = 0; i < shape.vertices.size(); ++i) out[i] = position + rs * shape.vertices[i];
 }
 
-void candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& out) {
+double candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& pairs,
+                          std::vector<double>* distances2) {
   const double cutoff = A.radius + B.radius + range;
   const double cutoff2 = cutoff * cutoff;
+  constexpr double kNone = std::numeric_limits<double>::infinity();
   // Reused per thread: rebuilds visit many body pairs, one allocation each would dominate.
   thread_local NearFeatures na, nb;
   collect_near(A, B.position, core_bounding_radius(B) + cutoff, na);
-  if (na.vertices.empty() && na.edges.empty() && na.faces.empty()) return;
+  if (na.vertices.empty() && na.edges.empty() && na.faces.empty()) return kNone;
   collect_near(B, A.position, core_bounding_radius(A) + cutoff, nb);
+  CandidateSink out{pairs, distances2};
   append_vertex_pairs(A, B, na, nb, cutoff2, out);
   append_vertex_edge(A, B, na, nb, cutoff2, PairType::vertex_edge, out);
   append_vertex_edge(B, A, nb, na, cutoff2, PairType::edge_vertex, out);
   append_vertex_face(A, B, na, nb, cutoff2, PairType::vertex_face, out);
   append_vertex_face(B, A, nb, na, cutoff2, PairType::face_vertex, out);
   append_edge_edge(A, B, na, nb, cutoff2, out);
+  return std::sqrt(out.nearest2) - A.radius - B.radius;
 }
 
 std::vector<std::pair<FeaturePair, ContactPoint>> brute_force_contacts(const PosedBody& A, const PosedBody& B) {

@@ -52,8 +52,12 @@ bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, d
 
 // Verlet candidates: appends every feature pair whose features (as point sets, boundary
 // included, no interior rule) are closer than rA + rB + range, in a deterministic order
-// (by type, then index in A, then index in B). Used at neighbour-list rebuilds.
-void candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& out);
+// (by type, then index in A, then index in B). Used at neighbour-list rebuilds. Returns the
+// smallest gap (m, core distance - rA - rB) among the appended pairs, +inf when none: until
+// the bodies have moved that far, no feature pair of theirs can touch. With `distances2`, also
+// appends each kept pair's core distance^2 (m^2).
+double candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& out,
+                          std::vector<double>* distances2 = nullptr);
 
 // Reference: every feature pair of the two bodies evaluated with feature_contact(max_gap = 0).
 std::vector<std::pair<FeaturePair, ContactPoint>> brute_force_contacts(const PosedBody& A, const PosedBody& B);

@@ -132,9 +132,11 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
   const double bb = db.squaredNorm();
   if (c2 <= kParallelSin2 * aa * bb) return false;
   const Vec3 r = pa - pb;
-  const double inv_c = 1.0 / std::sqrt(c2);
-  const double signed_d = r.dot(c) * inv_c;  // line-line distance along the common normal
+  const double rc = r.dot(c);  // line-line distance times |c|
   const double rsum = A.radius + B.radius;
+  if (too_far_sq(rc * rc / c2, rsum, max_gap)) return false;  // most listed pairs: no sqrt
+  const double inv_c = 1.0 / std::sqrt(c2);
+  const double signed_d = rc * inv_c;  // line-line distance along the common normal
   if (std::abs(signed_d) - rsum >= max_gap) return false;
   const double ab = da.dot(db);
   const double ra = da.dot(r);

@@ -43,10 +43,14 @@ inline void rotate_isotropic(Quat& q, const Vec3& l_body, const Vec3& inertia, d
   const Vec3 w_body = l_body.cwiseQuotient(inertia);  // rad/s
   const double w = w_body.norm();
   const double half = 0.5 * w * dt;  // rad
-  // sin(half)/w without dividing by zero: Taylor series below 1e-4 rad (error < 1e-22).
-  const double s_over_w = half > 1e-4 ? std::sin(half) / w : 0.5 * dt * (1.0 - half * half / 6.0);
+  // Below 1e-4 rad (settled bodies) Taylor series replace sin(half)/w and cos(half): no
+  // division by zero, no libm call, truncation error < 1e-22.
+  const bool small = half <= 1e-4;
+  const double h2 = half * half;
+  const double s_over_w = small ? 0.5 * dt * (1.0 - h2 / 6.0) : std::sin(half) / w;
+  const double c = small ? 1.0 - 0.5 * h2 * (1.0 - h2 / 12.0) : std::cos(half);
   const Vec3 v = s_over_w * w_body;
-  q = q * Quat(std::cos(half), v.x(), v.y(), v.z());
+  q = q * Quat(c, v.x(), v.y(), v.z());
 }
 
 // One Newton step towards |q| = 1: branch-free and enough, as each step drifts by ~1e-16 only.

@@ -12,17 +12,20 @@ namespace {
 // Relative tolerance on principal moments for the isotropic fast path.
 constexpr double kIsotropicTolerance = 1e-12;
 
-// Translation, then the exact or split free-rotor flow, then w from the new (q, L_body).
+// Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
+// (an isotropic body keeps its w: it turns about L).
 template <bool kIsotropicPath>
 void drift_body(Bodies& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
   if constexpr (kIsotropicPath) {
+    // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
     free_rotor::rotate_isotropic(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
+    free_rotor::renormalize(b.orientation[i]);
   } else {
     free_rotor::rotate_asymmetric(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
+    free_rotor::renormalize(b.orientation[i]);
+    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
   }
-  free_rotor::renormalize(b.orientation[i]);
-  b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
 }
 
 }  // namespace

@@ -27,11 +27,12 @@ void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Qu
   }
   x_built = x;
   q_built = q;
+  displacement_.assign(x.size(), 0.0);
   ++rebuild_count;
 }
 
 bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector<Quat>& q,
-                                   const std::vector<double>& bounding_radius, double skin) const {
+                                   const std::vector<double>& bounding_radius, double skin) {
   const std::size_t n = x.size();
   if (q.size() != n || bounding_radius.size() != n) {
     throw std::invalid_argument("needs_rebuild: sizes of positions, orientations and radii differ");
@@ -42,6 +43,7 @@ bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector
 #pragma omp parallel for schedule(static) reduction(max : exceeded) if (n >= kMinParallel)
   for (std::size_t i = 0; i < n; ++i) {
     const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
+    displacement_[i] = d;
     // Written as !(d <= limit) so a NaN state also asks for a rebuild.
     if (!(d <= limit)) exceeded = 1;
   }

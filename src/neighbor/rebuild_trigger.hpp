@@ -20,15 +20,20 @@ class RebuildTrigger {
   // Remembers the state the lists were built at; counts one rebuild.
   void mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q);
   // True when some body's displacement_bound exceeds skin/2 (or is not finite), or when no build
-  // was marked for this many bodies. Parallel reduction, cheap enough for every step.
+  // was marked for this many bodies. Parallel reduction, cheap enough for every step. Keeps
+  // each body's bound in displacement().
   bool needs_rebuild(const std::vector<Vec3>& x, const std::vector<Quat>& q,
-                     const std::vector<double>& bounding_radius, double skin) const;
+                     const std::vector<double>& bounding_radius, double skin);
+  // m, per body, the displacement_bound found by the last needs_rebuild (0 right after a build):
+  // two features closer than their distance at the build minus both bounds cannot have met.
+  const std::vector<double>& displacement() const { return displacement_; }
   // Calls to mark_built so far.
   std::size_t rebuilds() const { return rebuild_count; }
 
  private:
   std::vector<Vec3> x_built;  // m
   std::vector<Quat> q_built;
+  std::vector<double> displacement_;  // m
   std::size_t rebuild_count = 0;
 };
 

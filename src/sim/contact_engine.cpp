@@ -1,6 +1,9 @@
 #include "sim/contact_engine.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
 
 #include "polydem/parallel.hpp"
 #include "sim/sphere_kernel.hpp"
@@ -16,6 +19,13 @@ struct BodyPartner {
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
+  const double* displacement;  // m, per body since the lists were built
+  // Rigorous: a feature distance shrinks by at most the two bodies' displacement bounds.
+  bool apart(const PairList& list, std::uint32_t k, double band) const {
+    const BodyPair p = list.pairs[k];
+    return list.gap_at_build[k] - displacement[p.i] - displacement[p.j] >= band;
+  }
+  double moved(std::uint32_t i, std::uint32_t j) const { return displacement[i] + displacement[j]; }  // m
   bool separated(const PosedBody& a, std::uint32_t j, double band) const {
     return separated_along_centres(a, posed[j], band);
   }
@@ -38,9 +48,13 @@ struct DriverPartner {
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return drivers->contact(a, j, f, max_gap, out);
   }
+  bool apart(const PairList&, std::uint32_t, double) const { return false; }  // a moving driver has no bound
+  double moved(std::uint32_t, std::uint32_t) const { return 0.0; }  // its slots' gaps are -inf
   bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
-  double radius(std::uint32_t j) const {  // a ball is rounded; planes and cylinders are not
-    return (*drivers)[j].spec.kind == DriverSpec::Kind::ball ? (*drivers)[j].spec.radius : 0.0;
+  double radius(std::uint32_t j) const {  // balls and outer cylinders are rounded cores (a point, a segment)
+    const DriverSpec& d = (*drivers)[j].spec;
+    const bool rounded = d.kind == DriverSpec::Kind::ball || (d.kind == DriverSpec::Kind::cylinder && !d.inside);
+    return rounded ? d.radius : 0.0;
   }
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
@@ -48,17 +62,75 @@ struct DriverPartner {
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
 };
 
-// Lays out per-pair candidate lists as the CSR slots of a PairList, each run sorted by key.
-void fill_slots(std::vector<std::vector<FeaturePair>>& per_pair, PairList& list) {
+// m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
+float gap_below(double core_distance2, double radii) {
+  const double gap = std::sqrt(core_distance2) - radii;
+  const float f = static_cast<float>(gap);
+  return static_cast<double>(f) > gap ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+// Candidates of the body pairs whose bounding spheres overlap: their feature pairs and, per
+// feature pair, the gap at the build (m, a lower bound). Pairs with no candidate cannot touch
+// before the next rebuild, so they stay out of the per-step loop (half the pairs in a pile).
+struct BodyCandidates {
+  std::vector<BodyPair> pairs;
+  std::vector<double> pair_gap;                        // m, smallest of the pair
+  std::vector<std::vector<FeaturePair>> features;
+  std::vector<std::vector<float>> gaps;                // m
+};
+
+BodyCandidates body_candidates(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed, double range) {
+  BodyCandidates all;
+  all.pair_gap.resize(near.size());
+  all.features.resize(near.size());
+  all.gaps.resize(near.size());
+  parallel_for_dynamic(near.size(), [&](std::size_t k) {
+    const PosedBody& a = posed[near[k].i];
+    const PosedBody& b = posed[near[k].j];
+    thread_local std::vector<double> distances2;
+    distances2.clear();
+    all.pair_gap[k] = candidate_features(a, b, range, all.features[k], &distances2);
+    all.gaps[k].resize(distances2.size());
+    for (std::size_t c = 0; c < distances2.size(); ++c) all.gaps[k][c] = gap_below(distances2[c], a.radius + b.radius);
+  });
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    if (all.features[k].empty()) continue;
+    all.pairs.push_back(near[k]);
+    all.pair_gap[kept] = all.pair_gap[k];
+    if (kept != k) {
+      all.features[kept] = std::move(all.features[k]);
+      all.gaps[kept] = std::move(all.gaps[k]);
+    }
+    ++kept;
+  }
+  all.pair_gap.resize(kept);
+  all.features.resize(kept);
+  all.gaps.resize(kept);
+  return all;
+}
+
+// Lays out per-pair candidate lists as the CSR slots of a PairList, each run sorted by key,
+// with each slot's gap at the build (`gaps` null: -inf, never skipped, as for moving drivers).
+void fill_slots(const std::vector<std::vector<FeaturePair>>& per_pair, const std::vector<std::vector<float>>* gaps,
+                PairList& list) {
   list.slot_begin.assign(per_pair.size() + 1, 0);
   for (std::size_t k = 0; k < per_pair.size(); ++k)
     list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
   list.slots.assign(list.slot_begin.back(), ContactSlot{});
   list.features.resize(list.slot_begin.back());
+  list.slot_gap.assign(list.slot_begin.back(), -std::numeric_limits<float>::infinity());
   parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
-    auto& c = per_pair[k];
-    std::sort(c.begin(), c.end(), [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); });
-    std::copy(c.begin(), c.end(), list.features.begin() + list.slot_begin[k]);
+    const auto& c = per_pair[k];
+    thread_local std::vector<std::uint32_t> order;
+    order.resize(c.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return feature_key(c[x]) < feature_key(c[y]); });
+    const std::uint32_t base = list.slot_begin[k];
+    for (std::size_t r = 0; r < order.size(); ++r) {
+      list.features[base + r] = c[order[r]];
+      if (gaps) list.slot_gap[base + r] = (*gaps)[k][order[r]];
+    }
   });
   list.resize_results();
 }
@@ -106,18 +178,18 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   PairList fresh;
-  cells_.build_pairs(bodies.position, bounding_, range_p, fresh.pairs);
-  std::vector<std::vector<FeaturePair>> per_pair(fresh.pairs.size());
-  parallel_for_dynamic(fresh.pairs.size(), [&](std::size_t k) {
-    candidate_features(posed_[fresh.pairs[k].i], posed_[fresh.pairs[k].j], range_p, per_pair[k]);
-  });
-  fill_slots(per_pair, fresh);
+  std::vector<BodyPair> near;
+  cells_.build_pairs(bodies.position, bounding_, range_p, near);
+  BodyCandidates found = body_candidates(near, posed_, range_p);
+  fresh.pairs = std::move(found.pairs);
+  fresh.gap_at_build = std::move(found.pair_gap);
+  fill_slots(found.features, &found.gaps, fresh);
   carry_history(body_list_, fresh);
   body_list_ = std::move(fresh);
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
   PairList fresh_d;
-  per_pair.clear();
+  std::vector<std::vector<FeaturePair>> per_pair;
   for (std::uint32_t i = 0; i < bodies.size(); ++i)
     for (std::uint32_t j = 0; j < drivers.size(); ++j)
       if (drivers.near(j, bodies.position[i], bounding_[i] + range_d)) {
@@ -125,7 +197,8 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
         per_pair.emplace_back();
         drivers.candidates(posed_[i], j, range_d, per_pair.back());
       }
-  fill_slots(per_pair, fresh_d);
+  fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
+  fill_slots(per_pair, nullptr, fresh_d);
   carry_history(driver_list_, fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
@@ -215,7 +288,7 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
       return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
     }, pair_elastic_, pair_dissipated_, pair_contacts_);
   } else {
-    const BodyPartner partner{posed_.data(), &bodies};
+    const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data()};
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
     }, pair_elastic_, pair_dissipated_, pair_contacts_);

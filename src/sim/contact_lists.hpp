@@ -35,6 +35,8 @@ struct PairList {
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
   std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
   std::vector<ContactSlot> slots;          // per slot: contact state
+  std::vector<float> slot_gap;             // m, per slot: gap when the list was built (lower bound)
+  std::vector<double> gap_at_build;        // m, per pair: smallest feature gap when the list was built
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step

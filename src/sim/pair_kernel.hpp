@@ -92,6 +92,8 @@ inline void drop_shadowed(const PairList& list, double radii, PairScratch& scrat
 
 // Partner must provide:
 //   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
+//   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
+//   double moved(i, j): m, bound on how much closer two features got since the build
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
 //   double radius(j): the partner's rounding radius (m)
 //   Vec3 center(j), Vec3 velocity_at(j, point), Vec3 angular_velocity(j), double m_eff(i, j)
@@ -103,9 +105,12 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   const std::uint32_t s0 = list.slot_begin[k], s1 = list.slot_begin[k + 1];
   PairTotals totals;
   const int was_touching = list.touching[k];
-  if (!was_touching && partner.separated(a, p.j, band)) return totals;  // most listed pairs, at a glance
+  if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
+    return totals;  // most listed pairs, at a glance
   scratch.found.clear();
+  const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
   for (std::uint32_t s = s0; s < s1; ++s) {
+    if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
     ContactPoint cp;
     if (partner.contact(a, p.j, list.features[s], band, cp)) scratch.found.push_back({s, cp});
   }

@@ -13,9 +13,11 @@ namespace {
 
 ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const std::vector<Shape>& shapes) {
   const ContactOperator& op = scene.forces.contact;
-  ContactSettings s;
-  s.particle = prepare_law(op.config);
-  s.driver = prepare_law(op.has_config_driver ? op.config_driver : op.config);
+  ContactSettings s{};
+  if (op.present) {  // a scene without a contact operator (drag only) has no law to prepare
+    s.particle = prepare_law(op.config);
+    s.driver = prepare_law(op.has_config_driver ? op.config_driver : op.config);
+  }
   if (scene.simulation.skin) {
     s.skin = *scene.simulation.skin;
   } else {  // 10% of the smallest bounding radius: few candidates, rebuilds every ~tens of steps
@@ -33,6 +35,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
     : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library) {
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
+  drivers.set_contact_stiffness(cs.driver.kn);  // a servo's default gain
   engine_ = std::make_unique<ContactEngine>(library_.shapes, bodies, cs);
   rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
@@ -69,15 +72,18 @@ void Simulation::step() {
   if (scene_.forces.contact.present) {
     engine_->compute(bodies, drivers, dt_);
     ledger.dissipated += engine_->stats().dissipated;
-    for (std::size_t j = 0; j < drivers.size(); ++j)  // force on particles = -force on driver
-      ledger.driver_work -= drivers[j].force.dot(drivers[j].velocity) * dt_;
+    for (std::uint32_t j = 0; j < drivers.size(); ++j) {  // particles get -force and -torque (about the centre)
+      const Driver& d = drivers[j];
+      const Vec3 c = drivers.center(j);
+      ledger.driver_work -= (d.force.dot(drivers.velocity_at(j, c)) + d.torque.dot(d.omega)) * dt_;
+    }
   }
   kick(bodies, 0.5 * dt_);
   ++step_;
 }
 
 EnergyRow Simulation::energy() const {
-  EnergyRow e{0, 0, 0, 0, 0, 0, 0};
+  EnergyRow e{0, 0, 0, 0, 0, 0, 0, 0};
   Vec3 mass_moment = Vec3::Zero();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     e.kinetic += 0.5 * bodies.mass[b] * bodies.velocity[b].squaredNorm();
@@ -89,6 +95,7 @@ EnergyRow Simulation::energy() const {
   e.dissipated = ledger.dissipated;
   e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;
+  e.external_work = ledger.external_work;
   e.contacts = engine_->stats().contacts;
   return e;
 }

@@ -27,6 +27,7 @@ struct EnergyLedger {
 struct EnergyRow {
   double kinetic, rotational, elastic, dissipated, gravity_work, driver_work;
   std::size_t contacts;
+  double external_work;  // J, by drag and fluid forces
 };
 
 class Simulation {

@@ -95,18 +95,6 @@ TEST_CASE("a gate removed at its time lets the body fall", "[driver]") {
   CHECK(sim.bodies.velocity[0].z() == Approx(-kG * (sim.time() - 0.02)).epsilon(0.02));  // free fall since 0.02 s
 }
 
-TEST_CASE("drivers the engine cannot simulate yet stop the run at start-up", "[driver]") {
-  Scene scene = base_scene(law(kKn, 0.3), false);
-  DriverSpec mesh;
-  mesh.kind = DriverSpec::Kind::stl;
-  mesh.name = "hopper";
-  mesh.loc = {"scene.yaml", 12};
-  scene.drivers.push_back(mesh);
-  const ShapeLibrary lib = library({sphere_shape(kRadius)});
-  CHECK_THROWS_WITH(Simulation(scene, lib, {body("sphere", {0, 0, 1})}),
-                    Catch::Contains("scene.yaml:12") && Catch::Contains("not supported yet"));
-}
-
 TEST_CASE("a moving ball driver finds and strikes a body it started far from", "[driver][impact]") {
   const double en = 0.5, speed = 1.0;  // m/s, the impactor's speed
   Scene scene = base_scene(law(kKn, en), false);
