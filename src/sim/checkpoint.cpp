@@ -10,7 +10,7 @@ namespace polydem {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '2'};  // 02: 32-bit partner features
+constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '3'};  // 03: external work in the ledger
 
 struct Writer {
   std::ofstream out;

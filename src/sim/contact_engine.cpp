@@ -153,16 +153,19 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
   world_vertices_.resize(vertex_offset_[n]);
   posed_.resize(n);
   spheres_only_ = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
+  radius_.resize(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const Shape& s = shapes_[bodies.shape[b]];
+    radius_[b] = s.radius * bodies.scale[b];
+    // A sphere's pose is its centre alone: everything else is set once here.
+    if (spheres_only_) posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), bodies.position[b], radius_[b]};
+  }
 }
 
 void ContactEngine::pose(const Bodies& bodies) {
   const std::size_t n = bodies.size();
   if (spheres_only_) {  // the one vertex is the centre: no rotation to apply
-    parallel_for(n, [&](std::size_t b) {
-      world_vertices_[b] = bodies.position[b];
-      posed_[b] = PosedBody{&shapes_[bodies.shape[b]], &world_vertices_[b], Mat3::Identity(), bodies.position[b],
-                            shapes_[bodies.shape[b]].radius * bodies.scale[b]};
-    });
+    parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = bodies.position[b]; });
     return;
   }
   parallel_for(n, [&](std::size_t b) {
@@ -272,7 +275,8 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin) ||
       drivers_moved(drivers))
     rebuild(bodies, drivers);
-  const BodyView view{posed_.data(), bodies.velocity.data(), bodies.angular_velocity.data(), bodies.mass.data()};
+  const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
+                      bodies.angular_velocity.data(), bodies.mass.data()};
   stats_.elastic = stats_.dissipated = 0.0;
   stats_.contacts = 0;
   // Energies are summed serially in pair order: repeatable whatever the thread count.

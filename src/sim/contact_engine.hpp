@@ -60,6 +60,7 @@ class ContactEngine {
   std::vector<Vec3> world_vertices_;
   std::vector<PosedBody> posed_;
   std::vector<double> bounding_;           // m, scaled bounding radius per body
+  std::vector<double> radius_;             // m, scaled Minkowski radius per body
   CellList cells_;
   RebuildTrigger trigger_;
   bool must_rebuild_ = true;

@@ -13,6 +13,8 @@ namespace polydem {
 // What a pair kernel needs to know about body i (the particle side of every pair).
 struct BodyView {
   const PosedBody* posed;   // per body, posed for this step
+  const Vec3* position;     // m, centres (compact: the sphere path reads nothing else of the pose)
+  const double* radius;     // m, scaled Minkowski radii
   const Vec3* velocity;     // m/s
   const Vec3* angular_velocity;  // rad/s
   const double* mass;       // kg

@@ -10,29 +10,32 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   PairTotals totals;
   if (list.slot_begin[k] == list.slot_begin[k + 1]) return totals;  // out of reach at the rebuild
   const BodyPair p = list.pairs[k];
-  ContactSlot& slot = list.slots[list.slot_begin[k]];
-  const PosedBody& a = bodies.posed[p.i];
-  const PosedBody& b = bodies.posed[p.j];
-  const Vec3 d = a.position - b.position;  // m, from j to i
-  const double reach = a.radius + b.radius + band;
+  const Vec3& xi = bodies.position[p.i];
+  const Vec3& xj = bodies.position[p.j];
+  const double ri = bodies.radius[p.i], rj = bodies.radius[p.j];  // m
+  const Vec3 d = xi - xj;  // m, from j to i
+  const double reach = ri + rj + band;
   const double dist2 = d.squaredNorm();
+  ContactSlot& slot = list.slots[list.slot_begin[k]];
   if (dist2 >= reach * reach || dist2 == 0.0) {
-    slot.active = false;
-    slot.history = ContactHistory{};
-    slot.fn = 0.0;
-    slot.force = Vec3::Zero();
+    if (slot.active) {  // the contact ends: its springs let go
+      slot.active = false;
+      slot.history = ContactHistory{};
+      slot.fn = 0.0;
+      slot.force = Vec3::Zero();
+    }
     return totals;
   }
   const double dist = std::sqrt(dist2);
   const Vec3 n = d / dist;
-  const double gap = dist - a.radius - b.radius;
-  const Vec3 point = a.position - n * (a.radius + 0.5 * gap);  // middle of the overlap
-  const Vec3 ri = point - a.position, rj = point - b.position;
-  const Vec3 v_rel = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(ri) - bodies.velocity[p.j] -
-                     bodies.angular_velocity[p.j].cross(rj);
+  const double gap = dist - ri - rj;
+  const Vec3 point = xi - n * (ri + 0.5 * gap);  // middle of the overlap
+  const Vec3 arm_i = point - xi, arm_j = point - xj;
+  const Vec3 v_rel = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(arm_i) - bodies.velocity[p.j] -
+                     bodies.angular_velocity[p.j].cross(arm_j);
   const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
   const ContactKinematics kin{n, gap, v_rel, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
-                              mi * mj / (mi + mj), a.radius + 0.5 * gap, 1.0};
+                              mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
   if (!slot.active) slot.history = ContactHistory{};
   const ContactForce f = contact_force(law, kin, slot.history, dt);
   slot.active = true;
@@ -41,8 +44,8 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   slot.fn = f.fn;
   slot.gap = gap;
   totals.force_i = f.force;
-  totals.torque_i = ri.cross(f.force) + f.moment;
-  totals.torque_j = -(rj.cross(f.force) + f.moment);
+  totals.torque_i = arm_i.cross(f.force) + f.moment;
+  totals.torque_j = -(arm_j.cross(f.force) + f.moment);
   totals.elastic = f.elastic;
   totals.dissipated = f.dissipated;
   totals.contacts = 1;

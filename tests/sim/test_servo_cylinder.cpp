@@ -66,8 +66,10 @@ TEST_CASE("a servo wall settles at the requested force", "[driver][servo]") {
   }
 }
 
-TEST_CASE("a servo without stiffness or gain stops with a clear error", "[driver][servo][errors]") {
+TEST_CASE("a servo with neither a contact law nor a gain stops with a clear error", "[driver][servo][errors]") {
   Scene scene = lid_scene(1.0, std::nullopt);
+  scene.forces.contact.present = false;  // no kn to choose the default gain from
+  scene.simulation.dt = 1e-5;
   scene.drivers[1].loc = {"scene.yaml", 9};
   Simulation sim(scene, library({sphere_shape(kRadius)}), {body("sphere", {0, 0, kRadius})});
   CHECK_THROWS_WITH(sim.step(), Catch::StartsWith("scene.yaml:9: key 'gain': driver 'lid'"));
