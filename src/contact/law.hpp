@@ -101,8 +101,9 @@ inline double cohesion_potential(double fc_w, double dncut, double dn) {
 inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
   const Vec3 old = spring;
   spring += increment;
-  const double trial = spring.norm();
-  if (trial <= cap) return 0.0;
+  const double trial2 = spring.squaredNorm();
+  if (trial2 <= cap * cap) return 0.0;  // sticking, the common case: no square root
+  const double trial = std::sqrt(trial2);
   const double along = old.dot(spring) / trial;  // old spring along the trial direction
   spring *= cap / trial;
   return (trial - cap) * (along + cap) / (2.0 * stiffness);
@@ -112,10 +113,10 @@ inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffnes
 // cap |ft| <= ft_max = mu fp (LAMMPS granular "linear_history" tangential model). Returns J, slip.
 inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& v_rel, double kt_w,
                                 double ft_max, double dt) {
-  const double length = ft.norm();
+  const double length2 = ft.squaredNorm();
   ft -= ft.dot(n) * n;
-  const double in_plane = ft.norm();
-  if (in_plane > 0.0) ft *= length / in_plane;
+  const double in_plane2 = ft.squaredNorm();
+  if (in_plane2 > 0.0) ft *= std::sqrt(length2 / in_plane2);
   const Vec3 vt = v_rel - v_rel.dot(n) * n;  // m/s, tangential relative velocity
   return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max);
 }
@@ -125,7 +126,7 @@ inline double spring_energy(const Vec3& f, double k) { return k > 0.0 ? 0.5 * f.
 
 }  // namespace law_slot
 
-inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k, ContactHistory& h,
+[[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k, ContactHistory& h,
                                   double dt) {
   const double w = k.weight;
   const double kt_w = w * law.kt, kr_w = w * law.kr;
