@@ -53,6 +53,22 @@ void kick(Bodies& b, double h) {
   });
 }
 
+void kick(Bodies& b, double h, const RotorGroups& groups) {
+  parallel_for(groups.isotropic.size(), [&](std::size_t k) {
+    const std::size_t i = groups.isotropic[k];
+    b.velocity[i] += b.force[i] * (h / b.mass[i]);
+    const Vec3 dl = b.torque[i] * h;  // N m s, world frame
+    b.angular_momentum[i] += b.orientation[i].conjugate() * dl;
+    b.angular_velocity[i] += dl / b.inertia[i].x();  // w = L / I in any frame
+  });
+  parallel_for(groups.asymmetric.size(), [&](std::size_t k) {
+    const std::size_t i = groups.asymmetric[k];
+    b.velocity[i] += b.force[i] * (h / b.mass[i]);
+    b.angular_momentum[i] += b.orientation[i].conjugate() * (b.torque[i] * h);
+    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
+  });
+}
+
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
   parallel_for(groups.isotropic.size(),
                  [&](std::size_t k) { drift_body<true>(b, groups.isotropic[k], dt); });

@@ -24,6 +24,9 @@ RotorGroups group_rotors(const Bodies& b);
 
 // v += F/m h; L_body += R^T torque h (a half kick with h = dt/2 in velocity Verlet).
 void kick(Bodies& b, double h);
+// The same by groups: an isotropic body's world w takes torque h / I directly (one rotation
+// fewer per body); equal to kick(b, h) up to round-off.
+void kick(Bodies& b, double h, const RotorGroups& groups);
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).
 void drift(Bodies& b, double dt, const RotorGroups& groups);

@@ -16,10 +16,10 @@ namespace {
 struct BodyPartner {
   const PosedBody* posed;
   const Bodies* bodies;
+  const double* displacement;  // m, per body since the lists were built
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
-  const double* displacement;  // m, per body since the lists were built
   // Rigorous: a feature distance shrinks by at most the two bodies' displacement bounds.
   bool apart(const PairList& list, std::uint32_t k, double band) const {
     const BodyPair p = list.pairs[k];

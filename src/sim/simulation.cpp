@@ -65,7 +65,7 @@ void Simulation::external_forces() {
 }
 
 void Simulation::step() {
-  kick(bodies, 0.5 * dt_);
+  kick(bodies, 0.5 * dt_, rotors_);
   drift(bodies, dt_, rotors_);
   drivers.advance(time(), dt_);
   external_forces();
@@ -78,7 +78,7 @@ void Simulation::step() {
       ledger.driver_work -= (d.force.dot(drivers.velocity_at(j, c)) + d.torque.dot(d.omega)) * dt_;
     }
   }
-  kick(bodies, 0.5 * dt_);
+  kick(bodies, 0.5 * dt_, rotors_);
   ++step_;
 }
 
