@@ -49,7 +49,8 @@ struct Reader {
 // field: no padding bytes in the file, so equal states give equal files.
 template <class IO, class Key, class Slot>
 void slot_fields(IO& io, Key& f, Slot& s) {
-  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.pod(s.active);
+  bool active = true;  // only active slots are stored: a constant byte, kept for format 03
+  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.pod(active);
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
 }
 
@@ -63,11 +64,11 @@ void driver_fields(IO& io, D& d) {
 
 void write_active(Writer& w, const PairList& list) {
   std::uint64_t n = 0;
-  for (const ContactSlot& s : list.slots) n += s.active;
+  for (std::uint8_t a : list.active) n += a;
   w.pod(n);
   for (std::size_t k = 0; k < list.size(); ++k)
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.slots[s].active) {
+      if (list.active[s]) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
         slot_fields(w, list.features[s], list.slots[s]);
@@ -92,6 +93,7 @@ void read_active(Reader& r, PairList& list) {
     }
     list.features.push_back(key);
     list.slots.push_back(slot);
+    list.active.push_back(1);
     ++list.slot_begin.back();
   }
   list.resize_results();

@@ -118,6 +118,7 @@ void fill_slots(const std::vector<std::vector<FeaturePair>>& per_pair, const std
   for (std::size_t k = 0; k < per_pair.size(); ++k)
     list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
   list.slots.assign(list.slot_begin.back(), ContactSlot{});
+  list.active.assign(list.slot_begin.back(), 0);
   list.features.resize(list.slot_begin.back());
   list.slot_gap.assign(list.slot_begin.back(), -std::numeric_limits<float>::infinity());
   parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {

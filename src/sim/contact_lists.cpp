@@ -34,12 +34,13 @@ void carry_history(const PairList& old_list, PairList& fresh) {
     std::uint32_t s_new = fresh.slot_begin[k_new];
     const std::uint32_t s_new_end = fresh.slot_begin[k_new + 1];
     for (std::uint32_t s = old_list.slot_begin[k_old]; s < old_list.slot_begin[k_old + 1]; ++s) {
+      if (!old_list.active[s]) continue;
       const ContactSlot& old_slot = old_list.slots[s];
-      if (!old_slot.active) continue;
       const std::uint64_t key = feature_key(old_list.features[s]);
       while (s_new < s_new_end && feature_key(fresh.features[s_new]) < key) ++s_new;
       if (s_new < s_new_end && feature_key(fresh.features[s_new]) == key) {
         fresh.slots[s_new] = old_slot;
+        fresh.active[s_new] = 1;
         ++fresh.touching[k_new];
       }
     }

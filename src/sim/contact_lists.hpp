@@ -17,7 +17,6 @@ namespace polydem {
 // The state of one slot, touched only where a contact is (or was) active; the slot's key
 // lives apart in PairList::features, the array every step scans.
 struct ContactSlot {
-  bool active = false;        // in contact at the last step
   ContactHistory history;     // N, N m: springs carried while the key lives
   Vec3 point = Vec3::Zero();  // m, last contact point: history hand-over, output
   Vec3 force = Vec3::Zero();  // N on i at the last step: output
@@ -35,6 +34,7 @@ struct PairList {
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
   std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
   std::vector<ContactSlot> slots;          // per slot: contact state
+  std::vector<std::uint8_t> active;        // per slot: in contact at the last step (compact: scanned)
   std::vector<float> slot_gap;             // m, per slot: gap when the list was built (lower bound)
   std::vector<double> gap_at_build;        // m, per pair: smallest feature gap when the list was built
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).

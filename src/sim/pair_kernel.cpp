@@ -7,7 +7,7 @@ namespace polydem {
 void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                        const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on) {
   int still_active = 0;
-  for (const FoundContact& c : found) still_active += list.slots[c.slot].active;
+  for (const FoundContact& c : found) still_active += list.active[c.slot];
   if (still_active == was_active && still_active == int(found.size())) return;  // same contacts: keys keep history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
@@ -15,9 +15,9 @@ void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t s
   std::uint32_t fresh[kMaxHandOver], ended[kMaxHandOver];
   int n_fresh = 0, n_ended = 0;
   for (std::size_t c = 0; c < found.size(); ++c)
-    if (!list.slots[found[c].slot].active && n_fresh < kMaxHandOver) fresh[n_fresh++] = std::uint32_t(c);
+    if (!list.active[found[c].slot] && n_fresh < kMaxHandOver) fresh[n_fresh++] = std::uint32_t(c);
   for (std::uint32_t s = slot_begin; s < slot_end && n_ended < kMaxHandOver; ++s)
-    if (list.slots[s].active && !now_on[s - slot_begin]) ended[n_ended++] = s;
+    if (list.active[s] && !now_on[s - slot_begin]) ended[n_ended++] = s;
   for (int k = 0; k < n_fresh; ++k) list.slots[found[fresh[k]].slot].history = ContactHistory{};
   // Greedy matching, closest pair first: each ended contact gives its history once.
   while (n_fresh > 0 && n_ended > 0) {
@@ -33,10 +33,14 @@ void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t s
     ended[best_e] = ended[--n_ended];
   }
   for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
-    ContactSlot& slot = list.slots[s];
     const bool on = now_on[s - slot_begin] != 0;
-    if (slot.active && !on) { slot.history = ContactHistory{}; slot.fn = 0.0; slot.force = Vec3::Zero(); }
-    slot.active = on;
+    if (list.active[s] && !on) {
+      ContactSlot& slot = list.slots[s];
+      slot.history = ContactHistory{};
+      slot.fn = 0.0;
+      slot.force = Vec3::Zero();
+    }
+    list.active[s] = on;
   }
 }
 

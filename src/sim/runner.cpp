@@ -61,8 +61,8 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
       ContactOut c{};
       double weight = 0.0;
       for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
+        if (!list.active[s]) continue;
         const ContactSlot& slot = list.slots[s];
-        if (!slot.active) continue;
         c.fn += slot.fn;
         c.force += slot.force;
         // force = fn n + ft with ft normal to n, so |ft| follows without storing n

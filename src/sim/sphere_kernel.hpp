@@ -16,10 +16,11 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   const Vec3 d = xi - xj;  // m, from j to i
   const double reach = ri + rj + band;
   const double dist2 = d.squaredNorm();
-  ContactSlot& slot = list.slots[list.slot_begin[k]];
+  const std::uint32_t s = list.slot_begin[k];
+  ContactSlot& slot = list.slots[s];
   if (dist2 >= reach * reach || dist2 == 0.0) {
-    if (slot.active) {  // the contact ends: its springs let go
-      slot.active = false;
+    if (list.active[s]) {  // the contact ends: its springs let go
+      list.active[s] = 0;
       slot.history = ContactHistory{};
       slot.fn = 0.0;
       slot.force = Vec3::Zero();
@@ -36,9 +37,9 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
   const ContactKinematics kin{n, gap, v_rel, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
                               mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
-  if (!slot.active) slot.history = ContactHistory{};
+  if (!list.active[s]) slot.history = ContactHistory{};
   const ContactForce f = contact_force(law, kin, slot.history, dt);
-  slot.active = true;
+  list.active[s] = 1;
   slot.point = point;
   slot.force = f.force;
   slot.fn = f.fn;

@@ -110,7 +110,7 @@ TEST_CASE("the contact set each step equals the brute-force set", "[verlet]") {
     const PairList& list = sim.engine().body_pairs();
     for (std::size_t k = 0; k < list.size(); ++k)
       for (std::uint32_t q = list.slot_begin[k]; q < list.slot_begin[k + 1]; ++q)
-        if (list.slots[q].active)
+        if (list.active[q])
           engine.insert({list.pairs[k].i, list.pairs[k].j, int(list.features[q].type), list.features[q].a,
                          list.features[q].b});
     const Bodies& b = sim.bodies;

@@ -126,7 +126,7 @@ TEST_CASE("a cube's edge crossing an STL edge rebounds head-on with e_n and no s
     sim.step();
     const PairList& list = sim.engine().driver_pairs();
     for (std::size_t k = 0; k < list.slots.size(); ++k)
-      if (list.slots[k].active) ++(list.features[k].type == PairType::edge_edge ? edge_edge_steps : other_steps);
+      if (list.active[k]) ++(list.features[k].type == PairType::edge_edge ? edge_edge_steps : other_steps);
   }
   run_through_impact(sim, 40000);
   CHECK(edge_edge_steps > 100);
