@@ -134,16 +134,18 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
   const Vec3 r = pa - pb;
   const double rc = r.dot(c);  // line-line distance times |c|
   const double rsum = A.radius + B.radius;
-  if (too_far_sq(rc * rc / c2, rsum, max_gap)) return false;  // most listed pairs: no sqrt
-  const double inv_c = 1.0 / std::sqrt(c2);
-  const double signed_d = rc * inv_c;  // line-line distance along the common normal
-  if (std::abs(signed_d) - rsum >= max_gap) return false;
+  const double limit = rsum + max_gap;  // m
+  if (limit <= 0.0 || rc * rc >= limit * limit * c2) return false;  // too far: no division, no sqrt
   const double ab = da.dot(db);
   const double ra = da.dot(r);
   const double rb = db.dot(r);
-  const double s = (ab * rb - ra * bb) / c2;
-  const double t = (aa * rb - ab * ra) / c2;
-  if (!inside_segment(s, 1.0) || !inside_segment(t, 1.0)) return false;
+  const double s_c2 = ab * rb - ra * bb;  // s c2 and t c2: the interior test needs no division
+  const double t_c2 = aa * rb - ab * ra;
+  if (!inside_segment(s_c2, c2) || !inside_segment(t_c2, c2)) return false;
+  const double s = s_c2 / c2, t = t_c2 / c2;
+  const double inv_c = 1.0 / std::sqrt(c2);
+  const double signed_d = rc * inv_c;  // line-line distance along the common normal
+  if (std::abs(signed_d) - rsum >= max_gap) return false;
   Vec3 n = c * inv_c;
   // Crossing cores: the closest-point direction is noise, orient the common normal from B's centre to A's.
   const bool crossing = std::abs(signed_d) <= kCrossingTolerance * std::sqrt(std::max(aa, bb));
