@@ -1,5 +1,6 @@
 #pragma once
 // Scenes built in code for the physics tests: shapes, bodies and settings without YAML.
+#include <cmath>
 #include <vector>
 
 #include "polydem/scene.hpp"
@@ -88,6 +89,11 @@ inline ShapeLibrary library(std::vector<Shape> shapes) {
   ShapeLibrary lib;
   lib.shapes = std::move(shapes);
   return lib;
+}
+
+// Steps `sim` through `seconds` of simulated time (rounded to whole steps).
+inline void run_for(Simulation& sim, double seconds) {
+  for (long long s = std::llround(seconds / sim.dt()); s > 0; --s) sim.step();
 }
 
 }  // namespace polydem::test

@@ -28,10 +28,6 @@ DriverSpec drum(double radius, double omega) {
   return d;
 }
 
-void run_for(Simulation& sim, double seconds) {
-  for (long long s = std::llround(seconds / sim.dt()); s > 0; --s) sim.step();
-}
-
 }  // namespace
 
 TEST_CASE("a sphere rests inside a cylinder with the overlap it has on a plane", "[driver]") {

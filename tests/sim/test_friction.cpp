@@ -23,11 +23,6 @@ Simulation incline(double theta, double mu) {
                     {body("cube", {0, 0, 0.5 * kSide + kRound})});
 }
 
-void run_for(Simulation& sim, double seconds) {
-  const auto steps = std::llround(seconds / sim.dt());
-  for (long long s = 0; s < steps; ++s) sim.step();
-}
-
 }  // namespace
 
 TEST_CASE("a block on an incline stays put below the friction angle", "[friction]") {

@@ -16,10 +16,6 @@ namespace {
 
 constexpr double kG = 9.807, kRadius = 0.005, kKn = 1e5;
 
-void run_for(Simulation& sim, double seconds) {
-  for (long long s = std::llround(seconds / sim.dt()); s > 0; --s) sim.step();
-}
-
 // A sphere on the floor under a servo lid (normal -z) that starts 1 mm above it.
 Scene lid_scene(std::optional<double> force, std::optional<double> pressure) {
   Scene scene = base_scene(law(kKn, 0.3, 0.5, kKn), true, Vec3(0, 0, -kG));

@@ -16,10 +16,6 @@ namespace {
 
 constexpr double kG = 9.807, kRadius = 0.005, kKn = 1e5;
 
-void run_for(Simulation& sim, double seconds) {
-  for (long long s = std::llround(seconds / sim.dt()); s > 0; --s) sim.step();
-}
-
 // Steps until the body has touched and left every driver again (or max_steps).
 void run_through_impact(Simulation& sim, int max_steps) {
   bool touched = false;

@@ -18,11 +18,6 @@ constexpr double kG = 9.807;                  // m/s^2
 constexpr double kSide = 0.009, kRound = 0.0005;  // m: core side and rounding of the blocks
 constexpr double kDt = 2e-5;                  // s: w0 dt = 0.12 on a 2.7 g block, 0.27 on its corners
 
-void run_for(Simulation& sim, double seconds) {
-  const auto steps = std::llround(seconds / sim.dt());
-  for (long long s = 0; s < steps; ++s) sim.step();
-}
-
 // Largest displacement of any body over `seconds` and the largest speed at the end.
 std::pair<double, double> creep(Simulation& sim, double seconds) {
   const std::vector<Vec3> start = sim.bodies.position;
