@@ -29,4 +29,15 @@ struct Shape {
   bool is_sphere() const { return vertices.size() == 1; }
 };
 
+// A sphere as a spheropolyhedron: one vertex at the origin, rounded by `radius` (m); geometry
+// only (the mass properties are for the caller, a driver has none).
+inline Shape sphere_shape(const std::string& name, double radius) {
+  Shape s;
+  s.name = name;
+  s.radius = radius;
+  s.vertices = {Vec3::Zero()};
+  s.bounding_radius = radius;
+  return s;
+}
+
 }  // namespace polydem

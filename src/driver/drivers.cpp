@@ -51,7 +51,7 @@ Drivers::Drivers(const std::vector<DriverSpec>& specs) {
     d.center = s.center;
     d.axis = s.axis.normalized();
     d.pivot = s.motion.rotation_center;
-    if (s.kind == DriverSpec::Kind::ball) d.ball_shape = ball_shape(s.name, s.radius);
+    if (s.kind == DriverSpec::Kind::ball) d.ball_shape = sphere_shape(s.name, s.radius);
     if (s.kind == DriverSpec::Kind::cylinder && !s.inside) d.axis_shape = axis_shape(s.name, s.radius);
     if (s.kind == DriverSpec::Kind::stl) {
       d.mesh = load_mesh(s);

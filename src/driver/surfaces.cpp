@@ -68,21 +68,12 @@ bool cylinder_contact(const Driver& d, const PosedBody& a, FeaturePair f, double
   return true;
 }
 
-Shape ball_shape(const std::string& name, double radius) {
-  Shape s;
-  s.name = name;
-  s.radius = radius;
-  s.vertices = {Vec3::Zero()};
-  s.bounding_radius = radius;
-  return s;
-}
-
 PosedBody ball_pose(const Driver& d) {
   return PosedBody{&d.ball_shape, &d.center, Mat3::Identity(), d.center, d.spec.radius};
 }
 
 Shape axis_shape(const std::string& name, double radius) {
-  Shape s = ball_shape(name, radius);
+  Shape s = sphere_shape(name, radius);
   s.vertices.push_back(Vec3::Zero());
   s.edges = {{0, 1}};
   return s;

@@ -28,7 +28,6 @@ bool mesh_near(const Driver& d, const Vec3& center, double reach);
 void mesh_candidates(const Driver& d, const PosedBody& a, double range, std::vector<FeaturePair>& out);
 bool mesh_contact(const Driver& d, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out);
 
-Shape ball_shape(const std::string& name, double radius);
 Shape axis_shape(const std::string& name, double radius);  // outer cylinder: two vertices, one edge
 // The ball as a posed body: its one vertex at its current centre.
 PosedBody ball_pose(const Driver& d);

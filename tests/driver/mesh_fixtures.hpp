@@ -99,14 +99,7 @@ inline DriverSpec stl_spec(const std::string& file, const char* name = "mesh") {
   return d;
 }
 
-inline Shape one_vertex_shape(double radius) {
-  Shape s;
-  s.name = "sphere";
-  s.radius = radius;
-  s.vertices = {Vec3::Zero()};
-  s.bounding_radius = radius;
-  return s;
-}
+inline Shape one_vertex_shape(double radius) { return sphere_shape("sphere", radius); }
 
 // A cube particle of core half-side h rounded by r: vertices, edges, faces, outward normals.
 inline Shape cube_particle(double h, double r) {

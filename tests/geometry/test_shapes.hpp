@@ -95,14 +95,7 @@ inline Shape make_hex_prism(double half, double half_height, double radius) {
   return make_polytope("hex_prism", v, f, radius);
 }
 
-inline Shape make_sphere(double radius) {
-  Shape s;
-  s.name = "sphere";
-  s.radius = radius;
-  s.vertices = {Vec3::Zero()};
-  s.bounding_radius = radius;
-  return s;
-}
+inline Shape make_sphere(double radius) { return sphere_shape("sphere", radius); }
 
 // A shape placed in the world, owning its posed vertices.
 struct Posed {

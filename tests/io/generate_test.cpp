@@ -14,14 +14,6 @@ using test::contains;
 
 namespace {
 
-Shape sphere_shape(const std::string& name, double radius) {
-  Shape s;
-  s.name = name;
-  s.radius = radius;
-  s.vertices = {Vec3::Zero()};
-  s.bounding_radius = radius;
-  return s;
-}
 
 ShapeLibrary library() {
   ShapeLibrary lib;
