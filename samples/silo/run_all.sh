@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Runs the silo for several orifice sizes and fits Beverloo's law to the discharge rates:
-#   samples/silo/run_all.sh [POLYDEM] [D_mm ...]     (default: build/polydem, 45 50 60)
+#   samples/silo/run_all.sh [POLYDEM] [D_mm ...]     (default: build/polydem, 45 50 55 60)
 # Each size D gets meshes/plate_D<D>.stl, scene_D<D>.yaml (scene.yaml with that plate and
 # output folder out/D<D>) and a run with --threads 1; then beverloo_fit.py reads the folders.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 polydem=$(realpath "${1:-$here/../../build/polydem}")
 shift || true
-sizes=("${@:-45 50 60}")
+sizes=("${@:-45 50 55 60}")
 sizes=(${sizes[*]})
 /usr/bin/python3 "$here/make_meshes.py" "${sizes[@]}"
 folders=()

@@ -90,6 +90,8 @@ void print_counts(const Simulation& sim) {
   std::printf("drivers: %zu\n", sim.drivers.size());
   const TimeStepEstimate& t = sim.time_step();
   std::printf("critical time step: %.4g s (smallest contact-point mass %.4g kg)\n", t.critical, t.m_eff);
+  std::printf("  set by the %s mode (normal mode alone: %.4g s; tangential contact-point mass %.4g kg)\n",
+              step_mode_name(t.mode), t.critical_normal, t.m_tangential);
   std::printf("chosen time step:   %.4g s (%.3g x critical)%s\n", t.chosen, t.chosen / t.critical,
               sim.scene().simulation.dt ? "" : " [auto]");
   const double steps = sim.scene().simulation.duration / t.chosen;
@@ -102,6 +104,19 @@ void warn_unsafe_step(const Simulation& sim) {
     std::fprintf(stderr, "warning: dt = %.3g s is %.2g x the critical step %.3g s (above %.2g): the run may be "
                  "inaccurate or blow up; use dt: auto or dt <= %.3g s\n",
                  t.chosen, t.chosen / t.critical, t.critical, kUnsafeFraction, kAutoFraction * t.critical);
+}
+
+// N/m, kn of the particle law and of the driver law (config_driver, else config).
+std::pair<double, double> contact_stiffness(const Scene& scene) {
+  const ContactOperator& c = scene.forces.contact;
+  return {c.config.kn, c.has_config_driver ? c.config_driver.kn : c.config.kn};
+}
+
+void warn_fast_impacts(const Simulation& sim) {
+  if (!sim.scene().forces.contact.present) return;
+  const auto [kn, kn_driver] = contact_stiffness(sim.scene());
+  const std::string w = fast_impact_warning(sim.bodies, sim.shapes(), sim.drivers, kn, kn_driver, sim.dt());
+  if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
 }
 
 // Shapes, bodies and the simulation of a parsed scene (threads are set before: the first
@@ -121,6 +136,7 @@ int cmd_run(const std::vector<std::string>& args) {
   const auto built = build(scene);
   Simulation& sim = *built;
   warn_unsafe_step(sim);
+  warn_fast_impacts(sim);
   RunOptions o;
   o.out_dir = a.out ? *a.out : scene.output.dir;
   o.until = a.until;
@@ -144,6 +160,7 @@ int cmd_check(const std::vector<std::string>& args) {
   std::printf("scene: %s: valid\n", a.scene.c_str());
   print_counts(*sim);
   warn_unsafe_step(*sim);
+  warn_fast_impacts(*sim);
   return 0;
 }
 

@@ -1,5 +1,6 @@
 #include "driver/drivers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -84,7 +85,7 @@ Vec3 Drivers::servo_velocity(const Driver& d, std::uint32_t j, double dt) const 
     throw InputError(input_message(d.spec.loc.file, d.spec.loc.line, "gain",
                                    "driver '" + d.spec.name + "': a servo needs the contact stiffness or a gain "
                                    "(e.g. motion: {force: 10, gain: 0.001})"));
-  const double gain = m.gain ? *m.gain : kServoFraction / (stiffness_ * dt);  // m/(N s)
+  const double gain = m.gain ? *m.gain : kServoFraction / (stiffness_ * std::max(dt, servo_dt_min_));  // m/(N s)
   const Vec3 dir = servo_direction(j);
   const double push = -d.force.dot(dir);  // N, what the driver gives the particles along dir
   return gain * (servo_target(j) - push) * dir;

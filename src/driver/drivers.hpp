@@ -9,8 +9,8 @@
 //   v = velocity + gain (F - P) d,   P = -(force of the particles on the driver) . d,
 // P being the push the driver gives the particles along d, measured at the previous step. The
 // driver acts as a dashpot of coefficient 1/gain holding the load F: passive, and stable
-// while k gain dt < 2 for the stiffness k of its contacts. Default gain 0.1 / (kn dt)
-// (set_contact_stiffness): one contact's force error falls by 10% a step; stable with up to
+// while k gain dt < 2 for the stiffness k of its contacts. Default gain 0.1 / (kn dt), dt at
+// least 0.1 x the critical step (set_contact_stiffness): one contact's force error falls by 10% a step; stable with up to
 // 20 contacts in parallel on the driver (give motion.gain for more).
 #include <cstdint>
 #include <memory>
@@ -48,7 +48,10 @@ class Drivers {
   explicit Drivers(const std::vector<DriverSpec>& specs);
 
   // N/m, kn of config_driver: sets the default servo gain.
-  void set_contact_stiffness(double kn) { stiffness_ = kn; }
+  // kn (N/m) and the normal contact's critical step (s): the default servo gain is
+  // 0.1 / (kn max(dt, 0.1 critical)), so a small dt does not make the servo faster than the
+  // particles it presses can follow (at 0.07 x critical the lid of a sphere rattles).
+  void set_contact_stiffness(double kn, double critical_step = 0.0) { stiffness_ = kn; servo_dt_min_ = 0.1 * critical_step; }
 
   std::size_t size() const { return list_.size(); }
   bool empty() const { return list_.empty(); }
@@ -85,6 +88,7 @@ class Drivers {
 
   std::vector<Driver> list_;
   double stiffness_ = 0.0;  // N/m, for the default servo gain
+  double servo_dt_min_ = 0.0;  // s, the default gain reads max(dt, this)
 };
 
 }  // namespace polydem

@@ -97,8 +97,8 @@ void fail_count(const GeneratorSpec& g, const std::string& message) {
   throw InputError(input_message(g.loc.file, g.loc.line, "count", message));
 }
 
-void place_random(const GeneratorSpec& g, const Region& region, const ShapeLibrary& lib,
-                  std::vector<BodySpec>& bodies, std::mt19937_64& rng) {
+void place_random(const GeneratorSpec& g, const Region& region, const DriverClearance& drivers,
+                  const ShapeLibrary& lib, std::vector<BodySpec>& bodies, std::mt19937_64& rng) {
   std::vector<double> radii;
   for (const BodySpec& b : bodies) radii.push_back(bounding_radius(b, lib));
   // Largest first: a big body rarely finds a hole among many small ones.
@@ -113,32 +113,44 @@ void place_random(const GeneratorSpec& g, const Region& region, const ShapeLibra
     if (!region.fits(radius))
       fail_count(g, "a body of bounding radius " + std::to_string(radius) +
                         " m does not fit in the region: use a bigger region or a smaller scale");
+    auto free_at = [&](const Vec3& c) {
+      return !grid.overlaps(c, radius) && drivers.clear(c, radius);
+    };
     int attempt = 0;
     Vec3 center = region.sample(radius, rng);
-    while (grid.overlaps(center, radius) && ++attempt < kMaxAttempts)
-      center = region.sample(radius, rng);
+    while (!free_at(center) && ++attempt < kMaxAttempts) center = region.sample(radius, rng);
     if (attempt == kMaxAttempts)
       fail_count(g, "placed " + std::to_string(placed) + " of " + std::to_string(g.count) +
-                        " bodies without overlap (no free spot in " + std::to_string(kMaxAttempts) +
-                        " tries): use a bigger region or a smaller count");
+                        " bodies without overlap" +
+                        (drivers.empty() ? "" : " (with each other or a driver)") +
+                        ", then found no free spot in " + std::to_string(kMaxAttempts) +
+                        " tries: use a bigger region or a smaller count (about " +
+                        std::to_string(placed) + " fit)");
     grid.insert(center, radius);
     bodies[order[placed]].position = center;
   }
 }
 
-void place_lattice(const GeneratorSpec& g, const Region& region, const ShapeLibrary& lib,
-                   std::vector<BodySpec>& bodies) {
+void place_lattice(const GeneratorSpec& g, const Region& region, const DriverClearance& drivers,
+                   const ShapeLibrary& lib, std::vector<BodySpec>& bodies) {
   double spacing = 0.0;  // m, the largest bounding diameter the mix can draw
   for (const auto& entry : g.shapes)
     spacing =
         std::max(spacing, 2.0 * lib.shapes[lib.find(entry.first)].bounding_radius * g.scale_max);
   if (!(spacing > 0.0)) fail_count(g, "the shapes have no size (bounding radius 0)");
-  const std::vector<Vec3> sites = region.lattice(spacing);
+  const std::vector<Vec3> all = region.lattice(spacing);
+  std::vector<Vec3> sites;  // the sites whose sphere of diameter `spacing` overlaps no driver
+  for (const Vec3& site : all)
+    if (drivers.clear(site, 0.5 * spacing)) sites.push_back(site);
   if (sites.size() < bodies.size())
-    fail_count(g, "the region holds " + std::to_string(sites.size()) +
-                      " lattice sites of spacing " + std::to_string(spacing) +
-                      " m, fewer than count = " + std::to_string(g.count) +
-                      ": use a bigger region or a smaller count");
+    fail_count(g, "the region holds " + std::to_string(all.size()) +
+                      " lattice sites of spacing " + std::to_string(spacing) + " m" +
+                      (drivers.empty()
+                           ? ""
+                           : " (" + std::to_string(sites.size()) + " clear of the drivers)") +
+                      ", fewer than count = " + std::to_string(g.count) +
+                      ": use a bigger region or a smaller count (at most " +
+                      std::to_string(sites.size()) + ")");
   for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].position = sites[i];
 }
 
@@ -146,6 +158,9 @@ void place_lattice(const GeneratorSpec& g, const Region& region, const ShapeLibr
 
 std::vector<BodySpec> expand_bodies(const Scene& scene, const ShapeLibrary& lib) {
   std::vector<BodySpec> out;
+  // Built only when a generator needs it: a scene without generators reads no STL here.
+  const DriverClearance drivers(scene.generators.empty() ? std::vector<DriverSpec>{}
+                                                         : scene.drivers);
   for (const BodySpec& b : scene.bodies) {
     check_sphere(scene, lib.shapes[shape_index(lib, b.shape, b.loc, "shape")], b.loc, "shape");
     out.push_back(b);
@@ -156,9 +171,9 @@ std::vector<BodySpec> expand_bodies(const Scene& scene, const ShapeLibrary& lib)
     std::vector<BodySpec> bodies = draw_bodies(scene, g, lib, rng);
     const Region region(g.region);
     if (g.kind == GeneratorSpec::Kind::random)
-      place_random(g, region, lib, bodies, rng);
+      place_random(g, region, drivers, lib, bodies, rng);
     else
-      place_lattice(g, region, lib, bodies);
+      place_lattice(g, region, drivers, lib, bodies);
     out.insert(out.end(), bodies.begin(), bodies.end());
   }
   return out;

@@ -10,8 +10,10 @@ namespace polydem {
 // Explicit bodies, then each generator's bodies, in file order. Reproducible: generator k
 // draws from a stream seeded by (simulation.seed, k). `random` places non-overlapping
 // bounding spheres (bounding_radius x scale) fully inside the region by random sequential
-// insertion; `lattice` puts them on a cubic lattice of the largest bounding diameter.
-// Throws InputError for unknown shape names and for counts the region cannot hold.
+// insertion; `lattice` puts them on a cubic lattice of the largest bounding diameter. Both
+// keep the bounding spheres clear of the drivers present at t = 0 (random: draws again;
+// lattice: skips the site). Throws InputError for unknown shape names, for counts the region
+// cannot hold and for unreadable STL files.
 std::vector<BodySpec> expand_bodies(const Scene& scene, const ShapeLibrary& lib);
 
 }  // namespace polydem

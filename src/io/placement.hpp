@@ -1,6 +1,8 @@
 #pragma once
-// Geometry for body generators: where a sphere fits in a box or cylinder region, and a
-// uniform grid that answers "does this sphere overlap a placed one?" in O(1).
+// Geometry for body generators: where a sphere fits in a box or cylinder region, a uniform
+// grid that answers "does this sphere overlap a placed one?" in O(1), and the drivers a
+// generated body must stay clear of.
+#include <array>
 #include <random>
 #include <variant>
 #include <vector>
@@ -51,6 +53,34 @@ class SphereGrid {
   std::vector<int> next_;  // next sphere in the same cell
   std::vector<Vec3> centers_;
   std::vector<double> radii_;
+};
+
+// The drivers present at t = 0 (not removed at 0) as obstacles to generated bodies: walls
+// (half-spaces behind the plane), cylinders (inside: beyond R from the axis; outside: within R
+// of the axis segment), balls and STL meshes (the triangles, two-sided).
+class DriverClearance {
+ public:
+  // Reads the STL meshes; throws InputError (file, line, key) for a missing or broken one.
+  explicit DriverClearance(const std::vector<DriverSpec>& drivers);
+
+  // True when a sphere overlaps no driver (an overlap below 1e-9 x radius is a touch).
+  bool clear(const Vec3& center, double radius) const;
+  bool empty() const { return shapes_.empty() && meshes_.empty(); }
+
+ private:
+  struct Mesh {                   // world triangles binned in a uniform grid
+    std::vector<std::array<Vec3, 3>> triangles;  // m
+    Vec3 lower = Vec3::Zero();    // m, grid origin
+    double cell = 1.0;            // m
+    std::array<int, 3> dims{1, 1, 1};
+    std::vector<std::uint32_t> begin, entries;   // CSR: triangles of each cell
+  };
+  static Mesh load_mesh(const DriverSpec& s);
+  static bool mesh_clear(const Mesh& m, const Vec3& center, double radius, double touch);
+  static bool shape_clear(const DriverSpec& s, const Vec3& center, double radius, double touch);
+
+  std::vector<DriverSpec> shapes_;  // walls, cylinders, balls
+  std::vector<Mesh> meshes_;
 };
 
 }  // namespace polydem

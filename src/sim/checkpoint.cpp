@@ -10,7 +10,7 @@ namespace polydem {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '3'};  // 03: external work in the ledger
+constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '4'};  // 04: last dashpot force, gap, weight per contact
 
 struct Writer {
   std::ofstream out;
@@ -49,9 +49,10 @@ struct Reader {
 // field: no padding bytes in the file, so equal states give equal files.
 template <class IO, class Key, class Slot>
 void slot_fields(IO& io, Key& f, Slot& s) {
-  bool active = true;  // only active slots are stored: a constant byte, kept for format 03
+  bool active = true;  // only active slots are stored: a constant byte, kept from format 03
   io.pod(f.type); io.pod(f.a); io.pod(f.b); io.pod(active);
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
+  io.pod(s.history.fd); io.pod(s.history.gap); io.pod(s.history.weight);
 }
 
 // The moving state of a driver (placement, motion, reactions), one writer/reader for both ways.

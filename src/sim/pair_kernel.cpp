@@ -4,11 +4,12 @@
 
 namespace polydem {
 
-void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
-                       const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on) {
+double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
+                         const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
+                         const LawParams* law) {
   int still_active = 0;
   for (const FoundContact& c : found) still_active += list.active[c.slot];
-  if (still_active == was_active && still_active == int(found.size())) return;  // same contacts: keys keep history
+  if (still_active == was_active && still_active == int(found.size())) return 0.0;  // same contacts: keys keep history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
   // Contacts that start now (no history of their own) and those that just ended.
@@ -29,19 +30,23 @@ void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t s
         if (d2 < best) { best = d2; best_f = f; best_e = e; }
       }
     list.slots[found[fresh[best_f]].slot].history = list.slots[ended[best_e]].history;
+    list.slots[ended[best_e]].history = ContactHistory{};  // handed over: nothing released
     fresh[best_f] = fresh[--n_fresh];
     ended[best_e] = ended[--n_ended];
   }
+  double released = 0.0;  // J
   for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
     const bool on = now_on[s - slot_begin] != 0;
     if (list.active[s] && !on) {
       ContactSlot& slot = list.slots[s];
+      if (law) released += released_energy(*law, slot.history);
       slot.history = ContactHistory{};
       slot.fn = 0.0;
       slot.force = Vec3::Zero();
     }
     list.active[s] = on;
   }
+  return released;
 }
 
 }  // namespace polydem

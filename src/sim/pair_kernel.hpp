@@ -60,14 +60,17 @@ inline void patch_weights(const std::vector<FoundContact>& found, double band,
 // spring), matched closest pair first; each ended slot gives its history once. Beyond
 // kMaxHandOver changes in one step for one pair, the rest start from zero.
 constexpr int kMaxHandOver = 32;
-// `was_active`: how many slots of the pair were active before this step.
-void hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
-                       const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on);
+// `was_active`: how many slots of the pair were active before this step. Returns J, the
+// energy released by the contacts that ended with no successor (law.hpp, released_energy;
+// 0 without a law).
+double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
+                         const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
+                         const LawParams* law = nullptr);
 
 struct PairTotals {
   Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
   double elastic = 0.0;      // J stored in the pair's springs
-  double dissipated = 0.0;   // J dissipated this step
+  double dissipated = 0.0;   // J dissipated this step, less what patch weight changes added
   int contacts = 0;
 };
 
@@ -118,7 +121,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if (was_touching || !scratch.found.empty())
-    hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on);
+    totals.dissipated = hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on, &law);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
   const Vec3 xi = a.position, xj = partner.center(p.j);
@@ -139,7 +142,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
     totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
     totals.elastic += f.elastic;
-    totals.dissipated += f.dissipated;
+    totals.dissipated += f.dissipated - f.patch;  // the patch share is not conservative (law.hpp)
   }
   totals.contacts = int(scratch.found.size());
   return totals;

@@ -16,6 +16,7 @@
 #include "polydem/error.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim/probes.hpp"
+#include "sim/time_step.hpp"
 
 namespace polydem {
 
@@ -262,6 +263,15 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   auto last_print = start;
   const std::int64_t first_step = sim.step_index();
   RunSummary summary;
+  const ContactOperator& law = sim.scene().forces.contact;
+  const double kn = law.config.kn, kn_driver = law.has_config_driver ? law.config_driver.kn : law.config.kn;  // N/m
+  OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
+  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check
+    if (!law.present) return;
+    const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
+                                         kn_driver, sim.time());
+    if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
+  };
   while (sim.step_index() < last_step) {
     try {
       sim.step();
@@ -276,9 +286,13 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       if (bad >= 0) fail_non_finite(sim, bad, last_good, good_step, o.out_dir);
       last_good = sim.bodies;
       good_step = s;
+      check_overlaps();
     }
     if (vtk.due(sim.time(), dt)) writer.frame();
-    if (csv.due(sim.time(), dt)) writer.energy_row();
+    if (csv.due(sim.time(), dt)) {
+      writer.energy_row();
+      check_overlaps();
+    }
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
     if (g_interrupted) {
       const std::string path = writer.checkpoint(sim);

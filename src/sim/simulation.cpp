@@ -35,7 +35,6 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
     : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library) {
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
-  drivers.set_contact_stiffness(cs.driver.kn);  // a servo's default gain
   engine_ = std::make_unique<ContactEngine>(library_.shapes, bodies, cs);
   rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
@@ -44,6 +43,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   if (!contacts && !scene.simulation.dt)
     throw InputError(input_message(scene.path, 0, "dt", "'auto' needs a contact law to estimate the critical step; give a number"));
   dt_ = dt_estimate_.chosen;
+  drivers.set_contact_stiffness(cs.driver.kn, dt_estimate_.critical_normal);  // a servo's default gain
   if (!std::isfinite(dt_) || dt_ <= 0.0)
     throw InputError(input_message(scene.path, 0, "dt", "cannot choose a time step automatically for this scene; give simulation.dt"));
   for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];
@@ -64,19 +64,26 @@ void Simulation::external_forces() {
   if (external_) ledger.external_work += external_->add(bodies) * dt_;
 }
 
+// Particles get -force and -torque (about the centre) of each driver.
+void Simulation::driver_work_half() {
+  for (std::uint32_t j = 0; j < drivers.size(); ++j) {
+    const Driver& d = drivers[j];
+    ledger.driver_work -= 0.5 * (d.force.dot(drivers.velocity_at(j, drivers.center(j))) + d.torque.dot(d.omega)) * dt_;
+  }
+}
+
 void Simulation::step() {
   kick(bodies, 0.5 * dt_, rotors_);
   drift(bodies, dt_, rotors_);
   drivers.advance(time(), dt_);
   external_forces();
   if (scene_.forces.contact.present) {
+    // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half
+    // of the last step's reaction and half of this step's, on this step's driver motion.
+    driver_work_half();
     engine_->compute(bodies, drivers, dt_);
     ledger.dissipated += engine_->stats().dissipated;
-    for (std::uint32_t j = 0; j < drivers.size(); ++j) {  // particles get -force and -torque (about the centre)
-      const Driver& d = drivers[j];
-      const Vec3 c = drivers.center(j);
-      ledger.driver_work -= (d.force.dot(drivers.velocity_at(j, c)) + d.torque.dot(d.omega)) * dt_;
-    }
+    driver_work_half();
   }
   kick(bodies, 0.5 * dt_, rotors_);
   ++step_;

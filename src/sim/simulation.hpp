@@ -18,7 +18,7 @@ namespace polydem {
 
 // Energy accumulated over the run (J); the state energies are computed on demand.
 struct EnergyLedger {
-  double dissipated = 0.0;    // by dashpots, friction slip and rolling slip
+  double dissipated = 0.0;    // by dashpots, friction and rolling slip, less what patch weight changes add
   double driver_work = 0.0;   // done by moving drivers on the particles
   double external_work = 0.0; // done by drag and fluid forces on the particles
   Vec3 initial_mass_moment = Vec3::Zero();  // kg m, sum m x at t = 0: gravity work = m g . dx
@@ -57,6 +57,7 @@ class Simulation {
 
  private:
   void external_forces();
+  void driver_work_half();
 
   Scene scene_;
   ShapeLibrary library_;

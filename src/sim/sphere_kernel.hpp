@@ -20,6 +20,7 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   ContactSlot& slot = list.slots[s];
   if (dist2 >= reach * reach || dist2 == 0.0) {
     if (list.active[s]) {  // the contact ends: its springs let go
+      totals.dissipated = released_energy(law, slot.history);
       list.active[s] = 0;
       slot.history = ContactHistory{};
       slot.fn = 0.0;

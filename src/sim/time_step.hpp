@@ -1,6 +1,7 @@
 #pragma once
 // The critical time step of the contact law and the step a run uses.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "contact/law.hpp"
@@ -9,10 +10,17 @@
 
 namespace polydem {
 
+// Which oscillator of the contact law sets the critical step.
+enum class StepMode { kNormal, kTangential, kRolling };
+const char* step_mode_name(StepMode mode);  // "normal", "tangential", "rolling"
+
 struct TimeStepEstimate {
-  double critical = 0.0;  // s, stability limit of the stiffest damped contact on the lightest mass
-  double chosen = 0.0;    // s, the step the run uses
-  double m_eff = 0.0;     // kg, smallest effective mass at a contact point (rotational included)
+  double critical = 0.0;      // s, stability limit of the fastest contact oscillator (normal, tangential, rolling)
+  double critical_normal = 0.0;  // s, the limit of the normal spring-dashpot alone
+  double chosen = 0.0;        // s, the step the run uses
+  double m_eff = 0.0;         // kg, smallest effective mass of a normal force at a contact point (rotation included)
+  double m_tangential = 0.0;  // kg, smallest effective mass of a tangential force (lever to the rounded surface)
+  StepMode mode = StepMode::kNormal;
 };
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
@@ -21,10 +29,46 @@ struct TimeStepEstimate {
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;
 
-// The smallest mass a contact force meets at any vertex of any body (a vertex far from the
-// centre is lighter than the body); pairs of bodies halve it.
+// The smallest of the velocity Verlet limits of the normal spring-dashpot, the tangential
+// spring and the rolling spring, each on the smallest mass (or inertia) it meets at any
+// contact point of any body; pairs of bodies halve it, a driver does not.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt);
+
+// Impacts too fast for the contact law: a body hitting at speed v overlaps about
+// v sqrt(m/kn) (the undamped bound, m_eff <= m); beyond kOverlapFraction of its inscribed
+// radius the contact is unphysical (tools/stress: a sphere of radius 5 mm at 100 m/s overlaps
+// 8.5 mm) and a body past its centre goes through a thin STL sheet.
+constexpr double kOverlapFraction = 0.5;
+
+// m, radius of the largest ball centred at the centre of mass inside the rounded body:
+// the rounding plus the distance to the nearest face plane (0 for a body without faces).
+double inscribed_radius(const Shape& shape, double scale);
+
+class Drivers;
+struct PairList;
+
+// A start-up warning line ("" when none) for the body whose closing speed is furthest above
+// the speed its contacts allow: its surface speed |v| + |w| r_bound plus the fastest other
+// body or the driver surface at its centre. Allowed: kOverlapFraction r_in sqrt(kn/m)
+// (overlap), and r_in/dt (the body moves its inscribed radius in one step: nothing stops it
+// before its centre is past a thin sheet).
+std::string fast_impact_warning(const Bodies& bodies, const std::vector<Shape>& shapes, const Drivers& drivers,
+                                double kn_particle, double kn_driver, double dt);
+
+// The run-time watch: scans the active contacts (every output row, not every step) and
+// reports once an overlap deeper than kOverlapFraction of the smaller inscribed radius.
+class OverlapWatch {
+ public:
+  OverlapWatch(const Bodies& bodies, const std::vector<Shape>& shapes);
+  // A warning line the first time an active contact of the lists is too deep, else "".
+  std::string check(const PairList& body_pairs, const PairList& driver_pairs, const Drivers& drivers, double kn_particle,
+                    double kn_driver, double time);
+
+ private:
+  std::vector<double> radius_;  // m, inscribed radius per body
+  bool warned_ = false;
+};
 
 }  // namespace polydem

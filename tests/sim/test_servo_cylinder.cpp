@@ -49,7 +49,6 @@ TEST_CASE("a servo wall settles at the requested force", "[driver][servo]") {
     Simulation sim(lid_scene(by_pressure ? std::nullopt : std::optional(target),
                              by_pressure ? std::optional(target / 0.01) : std::nullopt),
                    library({sphere_shape(kRadius)}), {body("sphere", {0, 0, kRadius})});
-    sim.drivers.set_contact_stiffness(kKn);
     CHECK(sim.drivers.servo_target(1) == Approx(target));
     run_for(sim, 0.05);
     const double push = -sim.drivers[1].force.dot(sim.drivers.servo_direction(1));  // N, lid on the sphere
@@ -78,13 +77,11 @@ TEST_CASE("a servo wall resumed from a checkpoint continues bit for bit", "[driv
   const Scene scene = lid_scene(0.5, std::nullopt);
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
   Simulation first(scene, lib, {body("sphere", {0, 0, kRadius})});
-  first.drivers.set_contact_stiffness(kKn);
   for (int s = 0; s < 3000; ++s) first.step();  // the lid is moving and pressing
   write_checkpoint(path, first, OutputProgress{});
   first.engine().force_rebuild();  // as the runner does at every checkpoint
   for (int s = 0; s < 3000; ++s) first.step();
   Simulation resumed(scene, lib, {body("sphere", {0, 0, kRadius})});
-  resumed.drivers.set_contact_stiffness(kKn);
   OutputProgress progress;
   read_checkpoint(path, resumed, progress);
   for (int s = 0; s < 3000; ++s) resumed.step();

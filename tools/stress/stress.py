@@ -1,6 +1,6 @@
 """Stress tests of polydem: where the integration breaks, and what long runs do.
 
-usage: stress.py POLYDEM OUT_DIR [dt|impact|rest|extreme ...]   (default: all four)
+usage: stress.py POLYDEM OUT_DIR [dt[:SHAPE,..]|impact|sheet|rest|extreme ...]   (default: all five)
 Writes the scenes it runs under OUT_DIR and one row per run to tools/stress/results.csv
 (family, case, parameter, value, outcome, figures). Runs use --threads 1, one at a time.
 """
@@ -55,11 +55,16 @@ class Runner:
 
     def check(self, name, s):
         """(critical step s, smallest contact-point mass kg) printed by polydem check."""
+        return self.check_modes(name, s)[:2]
+
+    def check_modes(self, name, s):
+        """(critical step s, normal contact-point mass kg, mode setting it, normal mode alone s)."""
         p = subprocess.run([self.polydem, "check", self.write(name, s)], capture_output=True, text=True)
-        m = re.search(r"critical time step: (\S+) s \(smallest contact-point mass (\S+) kg\)", p.stdout)
+        m = re.search(r"critical time step: (\S+) s \(smallest contact-point mass (\S+) kg\)\n"
+                      r"  set by the (\w+) mode \(normal mode alone: (\S+) s", p.stdout)
         if not m:
             sys.exit(f"polydem check {name}: {p.stderr.strip()}")
-        return float(m.group(1)), float(m.group(2))
+        return float(m.group(1)), float(m.group(2)), m.group(3), float(m.group(4))
 
     def run(self, name, s):
         """Runs a scene with one thread: exit code, wall s, energy rows, stderr, output folder."""
@@ -121,20 +126,20 @@ def shape_mass(name, density=2700.0):
     raise KeyError(name)
 
 
-def dt_sweep(rows_out):
+def dt_sweep(rows_out, shapes=("sphere", "cube", "plate", "needle")):
     """Eight bodies of one shape thrown into a 7 cm box at 0.6 m/s, 0.15 s, dt = f x critical.
     Unstable: a non-finite state, or more mechanical energy than was put in (by 1%)."""
     fractions = [0.1, 0.3, 0.5, 0.7, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4, 1.6, 1.8, 2.0, 2.5, 3.0]
-    for shape in ("sphere", "cube", "plate", "needle"):
+    for shape in shapes:
         bodies = [{"generate": "lattice", "shapes": shape, "count": 8,
                    "region": {"box": {"min": [-0.03, -0.03, 0.015], "max": [0.03, 0.03, 0.12]}},
                    "orientation": "random", "velocity": [0.3, -0.2, -0.5]}]
         base = scene(bodies, box_walls(0.035), 0.15)
-        critical, m_point = RUNNER.check(f"dt_{shape}_check", base)
+        critical, m_point, mode, critical_normal = RUNNER.check_modes(f"dt_{shape}_check", base)
         m_body = shape_mass(shape)
-        # The printed step is for the lightest contact point (rotation included) of a pair;
-        # the translational one uses the body mass: same formula, sqrt of the mass ratio.
-        critical_translational = critical * math.sqrt(m_body / m_point)
+        # The printed normal step is for the lightest contact point (rotation included) of a
+        # pair; the translational one uses the body mass: same formula, sqrt of the mass ratio.
+        critical_translational = critical_normal * math.sqrt(m_body / m_point)
         for f in fractions:
             s = dict(base)
             s["simulation"] = dict(base["simulation"], dt=f * critical)
@@ -143,7 +148,7 @@ def dt_sweep(rows_out):
             ledger = balance(rows) / energy_scale(rows) if rows else float("nan")
             outcome = "non-finite (exit 2)" if code == 2 else ("energy gain" if gain > 0.01 else "ok")
             rows_out.append(["dt sweep", shape, "dt/critical", f"{f:g}", outcome,
-                             f"dt {f * critical:.3g} s; critical {critical:.3g} s (rotational, m* {m_point:.3g} kg), "
+                             f"dt {f * critical:.3g} s; critical {critical:.3g} s ({mode} mode; normal {critical_normal:.3g} s, m* {m_point:.3g} kg), "
                              f"translational {critical_translational:.3g} s; energy created {gain:+.2e} of input; "
                              f"ledger (stored + dissipated - input) {ledger:+.2e}; wall {wall:.1f} s{crash_note(code)}"])
             print(rows_out[-1], flush=True)
@@ -177,6 +182,46 @@ def impacts(rows_out):
             rows_out.append(["impact", shape, "speed m/s", v, outcome,
                              f"max overlap {depth * 1e3:.3g} mm; final z {zmin:.4g}..{zmax:.4g} m; energy restitution {e:.3f}; "
                              f"warning: {'yes' if warned else 'no'}; wall {wall:.1f} s{crash}"])
+            print(rows_out[-1], flush=True)
+
+
+def write_sheet(path, half=0.1):
+    """A flat square sheet of two triangles in the plane z = 0 (ASCII STL), half side `half` m."""
+    a, b, c, d = (-half, -half, 0), (half, -half, 0), (half, half, 0), (-half, half, 0)
+    with open(path, "w") as f:
+        f.write("solid sheet\n")
+        for tri in ((a, b, c), (a, c, d)):
+            f.write("facet normal 0 0 1\nouter loop\n")
+            f.write("".join(f"vertex {x:g} {y:g} {z:g}\n" for x, y, z in tri))
+            f.write("endloop\nendfacet\n")
+        f.write("endsolid sheet\n")
+
+
+def sheet_impacts(rows_out):
+    """A sphere and a cube (corner first) shot at a thin STL sheet (two triangles, zero thickness)
+    at increasing speed, dt auto: does the body pass through, and was it warned?"""
+    sheet = os.path.join(RUNNER.out, "sheet.stl")
+    write_sheet(sheet)
+    for shape, q in (("sphere", None), ("cube", {"axis": [1, 1, 0], "angle": 0.9553166})):
+        for v in (1, 10, 20, 30, 40, 50, 60, 80, 100, 300, 1000, 3000):
+            body = {"shape": shape, "position": [0, 0, 0.02], "velocity": [0, 0, -v]}
+            if q:
+                body["orientation"] = q
+            duration = 0.04 / v + 0.005
+            s = scene([body], [{"stl": {"name": "sheet", "file": sheet}}], duration, csv_every=duration / 2000,
+                      vtk_every=duration)
+            code, wall, rows, err, out = RUNNER.run(f"sheet_{shape}_{v}", s)
+            if not rows or not glob.glob(os.path.join(out, "bodies_000001.vtu")):
+                rows_out.append(["stl sheet", shape, "speed m/s", v, f"exit {code}", err.strip().splitlines()[-1][:200]])
+                continue
+            zmin, zmax = bounds(out)[4:6]
+            depth = math.sqrt(2.0 * max(r["elastic"] for r in rows) / LAW["kn"])  # m, one contact
+            outcome = "tunnelled" if (zmin + zmax) / 2 < 0 else "rebounds"
+            warned = re.search(r"above (\S+) m/s", err)
+            rows_out.append(["stl sheet", shape, "speed m/s", v, outcome,
+                             f"max overlap {depth * 1e3:.3g} mm; final centre z {(zmin + zmax) / 2:.4g} m; "
+                             f"start-up warning: {'yes (above ' + warned.group(1) + ' m/s)' if warned else 'no'}; "
+                             f"run-time warning: {'yes' if 'an overlap of' in err else 'no'}; wall {wall:.1f} s{crash_note(code)}"])
             print(rows_out[-1], flush=True)
 
 
@@ -240,16 +285,25 @@ RUNNER = None
 def main():
     global RUNNER
     RUNNER = Runner(os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]))
-    families = sys.argv[3:] or ["dt", "impact", "rest", "extreme"]
+    # FAMILY or FAMILY:CASE,CASE (dt:sphere reruns the spheres of the dt sweep only)
+    families = [a.split(":") + [""] if ":" not in a else a.split(":") for a in sys.argv[3:]] or \
+        [[f, ""] for f in ("dt", "impact", "sheet", "rest", "extreme")]
     results = os.path.join(HERE, "results.csv")
     old = []
-    if os.path.exists(results):  # keep the rows of the families not rerun
+    if os.path.exists(results):  # keep the rows of the families (and cases) not rerun
         with open(results) as f:
             old = [r for r in csv.reader(f)][1:]
-    names = {"dt": "dt sweep", "impact": "impact", "rest": "rest", "extreme": "extreme"}
-    rows = [r for r in old if r and r[0] not in {names[f] for f in families}]
-    for family in families:
-        {"dt": dt_sweep, "impact": impacts, "rest": rest, "extreme": extreme}[family](rows)
+    names = {"dt": "dt sweep", "impact": "impact", "rest": "rest", "extreme": "extreme", "sheet": "stl sheet"}
+    rerun = lambda r: any(names[f] == r[0] and (not cases or r[1] in cases.split(",")) for f, cases in families)
+    rows = [r for r in old if r and not rerun(r)]
+    runners = {"dt": dt_sweep, "impact": impacts, "rest": rest, "extreme": extreme, "sheet": sheet_impacts}
+    for family, cases in families:
+        if family not in runners:
+            sys.exit(f"unknown family '{family}': expected one of {', '.join(runners)}")
+        if cases and family == "dt":
+            dt_sweep(rows, cases.split(","))
+        else:
+            runners[family](rows)
         with open(results, "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(["family", "case", "parameter", "value", "outcome", "figures"])
