@@ -114,7 +114,11 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   for (std::uint32_t s = s0; s < s1; ++s) {
     if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
     ContactPoint cp;
-    if (partner.contact(a, p.j, list.features[s], band, cp)) scratch.found.push_back({s, cp});
+    if (!partner.contact(a, p.j, list.features[s], band, cp)) continue;
+    scratch.found.push_back({s, cp});
+    // The slot's state is read and written below, after the pair's other candidates: fetch it now.
+    __builtin_prefetch(&list.slots[s], 1);
+    __builtin_prefetch(reinterpret_cast<const char*>(&list.slots[s]) + 64, 1);
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if (was_touching || !scratch.found.empty())
