@@ -17,6 +17,20 @@ struct BodyPartner {
   const PosedBody* posed;
   const Bodies* bodies;
   const double* displacement;  // m, per body since the lists were built
+  const Vec3* world_vertices;
+  const std::uint32_t* vertex_offset;  // body j's vertices: world_vertices[vertex_offset[j] ...]
+  // Starts loading what the kernels will read of body j: its pose, vertices and velocities
+  // sit anywhere in memory, and the next pair's loads would otherwise stall.
+  void prefetch(std::uint32_t j) const {
+    const char* pose = reinterpret_cast<const char*>(&posed[j]);
+    __builtin_prefetch(pose);
+    __builtin_prefetch(pose + 64);
+    const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
+    const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
+    for (; v < v_end; v += 64) __builtin_prefetch(v);
+    __builtin_prefetch(&bodies->velocity[j]);
+    __builtin_prefetch(&bodies->angular_velocity[j]);
+  }
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
@@ -60,6 +74,7 @@ struct DriverPartner {
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
   Vec3 angular_velocity(std::uint32_t j) const { return drivers->angular_velocity(j); }
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
+  void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
 // m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
@@ -293,7 +308,8 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
       return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
     }, pair_elastic_, pair_dissipated_, pair_contacts_);
   } else {
-    const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data()};
+    const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
+                              vertex_offset_.data()};
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
     }, pair_elastic_, pair_dissipated_, pair_contacts_);
