@@ -80,7 +80,12 @@ struct ContactKinematics {
   double m_eff;   // kg, m_i m_j/(m_i + m_j) (a driver: m_i)
   double lever;   // m, from i's centre to the contact point (rolling cap)
   double weight;  // -, patch share in (0, 1]: scales kn, kt, kr, nu and fc (1 for a lone contact)
+  double nu = -1.0;  // N s/m, the pair's dashpot 2 alpha_n sqrt(kn m_eff) before the weight, set once
+                     // per pair by the caller (one square root per pair, not per sub-contact); < 0: from m_eff
 };
+
+// N s/m, the dashpot coefficient of a pair of effective mass m_eff (kg), before patch weights.
+inline double pair_damping(const LawParams& law, double m_eff) { return 2.0 * law.alpha_n * std::sqrt(law.kn * m_eff); }
 
 struct ContactForce {
   Vec3 force;         // N, on i (j gets the opposite)
@@ -150,6 +155,7 @@ inline double spring_energy(const Vec3& f, double k) { return k > 0.0 ? 0.5 * f.
 // J, what a weight change from w_old to w_new adds to a spring of base stiffness k holding
 // f at fixed f: |f|^2/(2 k w_new) - |f|^2/(2 k w_old) (0 when the weight stays).
 inline double reweighted(const Vec3& f, double k, double w_old, double w_new) {
+  if (w_old == w_new) return 0.0;  // a lone contact, a steady patch: no division
   return 0.5 * f.squaredNorm() * (w_old - w_new) / (k * w_old * w_new);
 }
 
@@ -196,7 +202,7 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
   const double vn = k.v_rel.dot(k.normal);       // m/s, > 0 when separating
   law_slot::NormalPart normal{0.0, 0.0};  // normal.fn is fp, the force the caps scale with
   if (overlap > 0.0) {
-    const double nu_w = w * 2.0 * law.alpha_n * std::sqrt(law.kn * k.m_eff);  // N s/m
+    const double nu_w = w * (k.nu >= 0.0 ? k.nu : pair_damping(law, k.m_eff));  // N s/m
     normal = law_slot::normal_damped(kn_w, nu_w, overlap, vn);
   }
   out.fn = normal.fn;

@@ -11,12 +11,21 @@
 namespace polydem {
 namespace {
 
-// Features of one body that come within `cutoff` of the other body's core bounding sphere;
-// only those can come within `cutoff` of the other body's features (an exact, cheap pre-filter).
+// Features of one body that may come within `cutoff` of the other body's core, with their
+// reach towards it: the largest (x - own centre) . u over the feature's vertices, u the unit
+// vector from the own centre to the other's. Two features are at least
+// L - reach_a - reach_b apart (L the distance between the centres: both project on the line
+// of centres), an exact lower bound as cheap as a subtraction.
 struct NearFeatures {
   std::vector<std::uint16_t> vertices, edges, faces;
+  std::vector<double> vertex_reach, edge_reach, face_reach;  // m, one per entry
   std::vector<Vec3> face_normals;  // world, outward, one per entry of `faces`
+  std::vector<double> projection;  // m, (vertex - own centre) . u per vertex of the body (scratch)
+  double support = 0.0;            // m, largest projection: the body's reach towards the other
 };
+
+// Relative margin on the projection bound: round-off must never drop a true candidate.
+constexpr double kProjectionMargin = 1e-9;
 
 // m, radius of the sphere about the centre of mass holding the core (unrounded) polyhedron.
 double core_bounding_radius(const PosedBody& body) {
@@ -35,25 +44,53 @@ double face_distance_sq(const Vec3& p, const PosedBody& body, int face, const Ve
   return point_polygon_distance_sq(p, body.vertices, f, n);
 }
 
-// Fills `near` with the features of `body` closer than `reach` to `centre`, in index order.
-void collect_near(const PosedBody& body, const Vec3& centre, double reach, NearFeatures& near) {
+// Projections of the body's vertices on u (towards the other body) and their largest.
+void project(const PosedBody& body, const Vec3& u, NearFeatures& near) {
+  const std::size_t n = body.shape->vertices.size();
+  near.projection.resize(n);
+  near.support = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    near.projection[i] = (body.vertices[i] - body.position).dot(u);
+    near.support = std::max(near.support, near.projection[i]);
+  }
+}
+
+// Fills `near` with the features of `body` that reach at least `floor` towards the other body
+// (the slab test) and lie closer than `reach` to its centre `centre` (the sphere test), in
+// index order. The slab test is cheap and runs first.
+void collect_near(const PosedBody& body, const Vec3& centre, double reach, double floor, NearFeatures& near) {
   const Shape& s = *body.shape;
   const double reach2 = reach * reach;
+  const std::vector<double>& proj = near.projection;
   near.vertices.clear();
   near.edges.clear();
   near.faces.clear();
+  near.vertex_reach.clear();
+  near.edge_reach.clear();
+  near.face_reach.clear();
   near.face_normals.clear();
   for (std::size_t i = 0; i < s.vertices.size(); ++i)
-    if ((body.vertices[i] - centre).squaredNorm() < reach2) near.vertices.push_back(static_cast<std::uint16_t>(i));
+    if (proj[i] >= floor && (body.vertices[i] - centre).squaredNorm() < reach2) {
+      near.vertices.push_back(static_cast<std::uint16_t>(i));
+      near.vertex_reach.push_back(proj[i]);
+    }
   for (std::size_t i = 0; i < s.edges.size(); ++i) {
+    const double edge_reach = std::max(proj[s.edges[i][0]], proj[s.edges[i][1]]);
+    if (edge_reach < floor) continue;
     const Vec3& p0 = body.vertices[s.edges[i][0]];
-    if (point_segment_distance_sq(centre, p0, body.vertices[s.edges[i][1]] - p0) < reach2)
+    if (point_segment_distance_sq(centre, p0, body.vertices[s.edges[i][1]] - p0) < reach2) {
       near.edges.push_back(static_cast<std::uint16_t>(i));
+      near.edge_reach.push_back(edge_reach);
+    }
   }
   for (std::size_t i = 0; i < s.faces.size(); ++i) {
+    double face_reach = -std::numeric_limits<double>::infinity();
+    for (int v : s.faces[i]) face_reach = std::max(face_reach, proj[v]);
+    if (face_reach < floor) continue;
     const Vec3 n = body.rotation * s.face_normals[i];
     if (face_distance_sq(centre, body, static_cast<int>(i), n, reach2) < reach2) {
       near.faces.push_back(static_cast<std::uint16_t>(i));
+      near.face_reach.push_back(face_reach);
       near.face_normals.push_back(n);
     }
   }
@@ -63,6 +100,7 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, NearF
 struct CandidateSink {
   std::vector<FeaturePair>& pairs;
   std::vector<double>* distances2;  // m^2, or null
+  double slab;                      // m, two features whose reaches sum below it are too far apart
   double nearest2 = std::numeric_limits<double>::infinity();
 };
 
@@ -76,21 +114,26 @@ inline void keep_if_near(FeaturePair pair, double d2, double cutoff2, CandidateS
 
 void append_vertex_pairs(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
                          double cutoff2, CandidateSink& out) {
-  for (std::uint16_t va : na.vertices)
-    for (std::uint16_t vb : nb.vertices)
+  for (std::size_t i = 0; i < na.vertices.size(); ++i)
+    for (std::size_t j = 0; j < nb.vertices.size(); ++j) {
+      if (na.vertex_reach[i] + nb.vertex_reach[j] < out.slab) continue;
+      const std::uint16_t va = na.vertices[i], vb = nb.vertices[j];
       keep_if_near({PairType::vertex_vertex, va, vb}, (A.vertices[va] - B.vertices[vb]).squaredNorm(), cutoff2, out);
+    }
 }
 
 // Vertices of V against edges of E; `type` says which body is A.
 void append_vertex_edge(const PosedBody& V, const PosedBody& E, const NearFeatures& nv, const NearFeatures& ne,
                         double cutoff2, PairType type, CandidateSink& out) {
   const bool v_is_a = type == PairType::vertex_edge;
-  const std::vector<std::uint16_t>& outer = v_is_a ? nv.vertices : ne.edges;
-  const std::vector<std::uint16_t>& inner = v_is_a ? ne.edges : nv.vertices;
-  for (std::uint16_t i : outer)
-    for (std::uint16_t j : inner) {
-      const std::uint16_t v = v_is_a ? i : j;
-      const std::uint16_t e = v_is_a ? j : i;
+  const std::size_t outer_count = v_is_a ? nv.vertices.size() : ne.edges.size();
+  const std::size_t inner_count = v_is_a ? ne.edges.size() : nv.vertices.size();
+  for (std::size_t oi = 0; oi < outer_count; ++oi)
+    for (std::size_t ij = 0; ij < inner_count; ++ij) {
+      const std::size_t iv = v_is_a ? oi : ij, ie = v_is_a ? ij : oi;
+      if (nv.vertex_reach[iv] + ne.edge_reach[ie] < out.slab) continue;
+      const std::uint16_t v = nv.vertices[iv], e = ne.edges[ie];
+      const std::uint16_t i = v_is_a ? v : e, j = v_is_a ? e : v;
       const Vec3& p0 = E.vertices[E.shape->edges[e][0]];
       keep_if_near({type, i, j}, point_segment_distance_sq(V.vertices[v], p0, E.vertices[E.shape->edges[e][1]] - p0),
                    cutoff2, out);
@@ -107,6 +150,7 @@ void append_vertex_face(const PosedBody& V, const PosedBody& F, const NearFeatur
     for (std::size_t j = 0; j < inner_count; ++j) {
       const std::size_t iv = v_is_a ? i : j;
       const std::size_t jf = v_is_a ? j : i;
+      if (nv.vertex_reach[iv] + nf.face_reach[jf] < out.slab) continue;
       const std::uint16_t v = nv.vertices[iv];
       const std::uint16_t f = nf.faces[jf];
       keep_if_near(v_is_a ? FeaturePair{type, v, f} : FeaturePair{type, f, v},
@@ -116,10 +160,13 @@ void append_vertex_face(const PosedBody& V, const PosedBody& F, const NearFeatur
 
 void append_edge_edge(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
                       double cutoff2, CandidateSink& out) {
-  for (std::uint16_t ea : na.edges) {
+  for (std::size_t i = 0; i < na.edges.size(); ++i) {
+    const std::uint16_t ea = na.edges[i];
     const Vec3& pa = A.vertices[A.shape->edges[ea][0]];
     const Vec3 da = A.vertices[A.shape->edges[ea][1]] - pa;
-    for (std::uint16_t eb : nb.edges) {
+    for (std::size_t j = 0; j < nb.edges.size(); ++j) {
+      if (na.edge_reach[i] + nb.edge_reach[j] < out.slab) continue;
+      const std::uint16_t eb = nb.edges[j];
       const Vec3& pb = B.vertices[B.shape->edges[eb][0]];
       keep_if_near({PairType::edge_edge, ea, eb},
                    segment_segment_distance_sq(pa, da, pb, B.vertices[B.shape->edges[eb][1]] - pb), cutoff2, out);
@@ -158,10 +205,19 @@ double candidate_features(const PosedBody& A, const PosedBody& B, double range, 
   constexpr double kNone = std::numeric_limits<double>::infinity();
   // Reused per thread: rebuilds visit many body pairs, one allocation each would dominate.
   thread_local NearFeatures na, nb;
-  collect_near(A, B.position, core_bounding_radius(B) + cutoff, na);
+  const Vec3 axis = B.position - A.position;  // m
+  const double length = axis.norm();
+  // Slab: features of A and B reaching less than `slab` together along the line of centres are
+  // farther apart than the cutoff (margin for round-off; no slab for coincident centres).
+  const Vec3 u = length > 0.0 ? Vec3(axis / length) : Vec3::UnitZ();
+  const double slab = length > 0.0 ? length - cutoff - kProjectionMargin * (length + cutoff)
+                                   : -std::numeric_limits<double>::infinity();
+  project(A, u, na);
+  project(B, -u, nb);
+  collect_near(A, B.position, core_bounding_radius(B) + cutoff, slab - nb.support, na);
   if (na.vertices.empty() && na.edges.empty() && na.faces.empty()) return kNone;
-  collect_near(B, A.position, core_bounding_radius(A) + cutoff, nb);
-  CandidateSink out{pairs, distances2};
+  collect_near(B, A.position, core_bounding_radius(A) + cutoff, slab - na.support, nb);
+  CandidateSink out{pairs, distances2, slab};
   append_vertex_pairs(A, B, na, nb, cutoff2, out);
   append_vertex_edge(A, B, na, nb, cutoff2, PairType::vertex_edge, out);
   append_vertex_edge(B, A, nb, na, cutoff2, PairType::edge_vertex, out);

@@ -17,6 +17,20 @@ struct BodyPartner {
   const PosedBody* posed;
   const Bodies* bodies;
   const double* displacement;  // m, per body since the lists were built
+  const Vec3* world_vertices;
+  const std::uint32_t* vertex_offset;  // body j's vertices: world_vertices[vertex_offset[j] ...]
+  // Starts loading what the kernels will read of body j: its pose, vertices and velocities
+  // sit anywhere in memory, and the next pair's loads would otherwise stall.
+  void prefetch(std::uint32_t j) const {
+    const char* pose = reinterpret_cast<const char*>(&posed[j]);
+    __builtin_prefetch(pose);
+    __builtin_prefetch(pose + 64);
+    const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
+    const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
+    for (; v < v_end; v += 64) __builtin_prefetch(v);
+    __builtin_prefetch(&bodies->velocity[j]);
+    __builtin_prefetch(&bodies->angular_velocity[j]);
+  }
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
@@ -60,6 +74,7 @@ struct DriverPartner {
   Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
   Vec3 angular_velocity(std::uint32_t j) const { return drivers->angular_velocity(j); }
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
+  void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
 // m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
@@ -169,7 +184,8 @@ void ContactEngine::pose(const Bodies& bodies) {
     parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = bodies.position[b]; });
     return;
   }
-  parallel_for(n, [&](std::size_t b) {
+  parallel_for(listed_.size(), [&](std::size_t e) {
+    const std::uint32_t b = listed_[e];
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
     pose_vertices(s, bodies.scale[b], bodies.position[b], bodies.orientation[b], v);
@@ -178,12 +194,29 @@ void ContactEngine::pose(const Bodies& bodies) {
   });
 }
 
+// Bodies far from every other body and driver (falling in a pour) need no world vertices.
+void ContactEngine::mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs,
+                                const std::vector<BodyPair>& driver_pairs) {
+  std::vector<std::uint8_t> in_pair(n_bodies, 0);
+  for (const BodyPair& p : body_pairs) in_pair[p.i] = in_pair[p.j] = 1;
+  for (const BodyPair& p : driver_pairs) in_pair[p.i] = 1;
+  listed_.clear();
+  for (std::uint32_t b = 0; b < n_bodies; ++b)
+    if (in_pair[b]) listed_.push_back(b);
+}
+
 void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   PairList fresh;
   std::vector<BodyPair> near;
   cells_.build_pairs(bodies.position, bounding_, range_p, near);
+  PairList fresh_d;
+  for (std::uint32_t i = 0; i < bodies.size(); ++i)
+    for (std::uint32_t j = 0; j < drivers.size(); ++j)
+      if (drivers.near(j, bodies.position[i], bounding_[i] + range_d)) fresh_d.pairs.push_back({i, j});
+  mark_listed(bodies.size(), near, fresh_d.pairs);
+  pose(bodies);
   BodyCandidates found = body_candidates(near, posed_, range_p);
   fresh.pairs = std::move(found.pairs);
   fresh.gap_at_build = std::move(found.pair_gap);
@@ -192,20 +225,15 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   body_list_ = std::move(fresh);
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
-  PairList fresh_d;
-  std::vector<std::vector<FeaturePair>> per_pair;
-  for (std::uint32_t i = 0; i < bodies.size(); ++i)
-    for (std::uint32_t j = 0; j < drivers.size(); ++j)
-      if (drivers.near(j, bodies.position[i], bounding_[i] + range_d)) {
-        fresh_d.pairs.push_back({i, j});
-        per_pair.emplace_back();
-        drivers.candidates(posed_[i], j, range_d, per_pair.back());
-      }
+  std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
+  for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k)
+    drivers.candidates(posed_[fresh_d.pairs[k].i], fresh_d.pairs[k].j, range_d, per_pair[k]);
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_slots(per_pair, nullptr, fresh_d);
   carry_history(driver_list_, fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
+  mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
   trigger_.mark_built(bodies.position, bodies.orientation);
   mark_drivers(bodies, drivers);
@@ -272,10 +300,11 @@ static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<do
 }
 
 void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
-  pose(bodies);
   if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin) ||
       drivers_moved(drivers))
-    rebuild(bodies, drivers);
+    rebuild(bodies, drivers);  // poses the bodies it pairs
+  else
+    pose(bodies);
   const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
                       bodies.angular_velocity.data(), bodies.mass.data()};
   stats_.elastic = stats_.dissipated = 0.0;
@@ -293,7 +322,8 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
       return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
     }, pair_elastic_, pair_dissipated_, pair_contacts_);
   } else {
-    const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data()};
+    const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
+                              vertex_offset_.data()};
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
     }, pair_elastic_, pair_dissipated_, pair_contacts_);

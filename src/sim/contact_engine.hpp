@@ -46,6 +46,7 @@ class ContactEngine {
 
  private:
   void pose(const Bodies& bodies);
+  void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void rebuild(const Bodies& bodies, const Drivers& drivers);
   void body_pair_forces(const Bodies& bodies, double dt);
   void driver_pair_forces(const Bodies& bodies, const Drivers& drivers, double dt);
@@ -59,6 +60,7 @@ class ContactEngine {
   std::vector<std::uint32_t> vertex_offset_;
   std::vector<Vec3> world_vertices_;
   std::vector<PosedBody> posed_;
+  std::vector<std::uint32_t> listed_;      // bodies in some pair: the only ones posed each step
   std::vector<double> bounding_;           // m, scaled bounding radius per body
   std::vector<double> radius_;             // m, scaled Minkowski radius per body
   CellList cells_;

@@ -52,7 +52,9 @@ inline void patch_weights(const std::vector<FoundContact>& found, double band,
     weight[k] = band - found[k].geometry.gap;
     total += weight[k];
   }
-  for (double& w : weight) w = total > 0.0 ? w / total : 1.0 / double(found.size());
+  if (found.size() == 1) { weight[0] = 1.0; return; }  // the common lone contact: no division
+  const double scale = total > 0.0 ? 1.0 / total : 0.0;
+  for (double& w : weight) w = total > 0.0 ? w * scale : 1.0 / double(found.size());
 }
 
 // A slot that starts touching inherits the history of the nearest slot of the same pair
@@ -102,6 +104,7 @@ inline void drop_shadowed(const PairList& list, double radii, PairScratch& scrat
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
 //   double radius(j): the partner's rounding radius (m)
 //   Vec3 center(j), Vec3 velocity_at(j, point), Vec3 angular_velocity(j), double m_eff(i, j)
+//   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 template <class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
                        const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
@@ -109,6 +112,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   const PosedBody& a = bodies.posed[p.i];
   const std::uint32_t s0 = list.slot_begin[k], s1 = list.slot_begin[k + 1];
   PairTotals totals;
+  if (k + 1 < list.size()) partner.prefetch(list.pairs[k + 1].j);
   const int was_touching = list.touching[k];
   if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
     return totals;  // most listed pairs, at a glance
@@ -117,7 +121,13 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   for (std::uint32_t s = s0; s < s1; ++s) {
     if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
     ContactPoint cp;
-    if (partner.contact(a, p.j, list.features[s], band, cp)) scratch.found.push_back({s, cp});
+    if (!partner.contact(a, p.j, list.features[s], band, cp)) continue;
+    scratch.found.push_back({s, cp});
+    // The slot's state is read and written below, after the pair's other candidates: fetch it now.
+    const char* state = reinterpret_cast<const char*>(&list.slots[s]);
+    __builtin_prefetch(state, 1);
+    __builtin_prefetch(state + 64, 1);
+    __builtin_prefetch(state + sizeof(ContactSlot) - 1, 1);  // 136 bytes: up to three lines
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if (was_touching || !scratch.found.empty())
@@ -126,13 +136,14 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   patch_weights(scratch.found, band, scratch.weight);
   const Vec3 xi = a.position, xj = partner.center(p.j);
   const double m_eff = partner.m_eff(p.i, p.j);
+  const double nu = pair_damping(law, m_eff);  // N s/m
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 vi = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(g.point - xi);
     ContactKinematics kin{g.normal, g.gap, vi - partner.velocity_at(p.j, g.point),
                           bodies.angular_velocity[p.i] - partner.angular_velocity(p.j), m_eff,
-                          (g.point - xi).norm(), scratch.weight[c]};
+                          law.rolling ? (g.point - xi).norm() : 0.0, scratch.weight[c], nu};
     const ContactForce f = contact_force(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;
