@@ -11,6 +11,9 @@ namespace polydem {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '4'};  // 04: last dashpot force, gap, weight per contact
+// Format 03 differs only by those three fields, which only the energy ledger reads: it still
+// resumes, its contacts' ledgers restarting as new contacts (forces and motion unchanged).
+constexpr char kMagic03[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '3'};
 
 struct Writer {
   std::ofstream out;
@@ -25,6 +28,7 @@ struct Writer {
 struct Reader {
   std::ifstream in;
   std::string path;
+  bool last_step_fields = true;  // false for format 03
   void fail() const { throw InputError(path + ": truncated or damaged checkpoint"); }
   template <class T> void pod(T& v) { if (!in.read(reinterpret_cast<char*>(&v), sizeof(T))) fail(); }
   template <class T> void array(std::vector<T>& v, std::size_t expected) {
@@ -48,10 +52,11 @@ struct Reader {
 // Active slots with their pair, so the next rebuild hands their history over by key. Field by
 // field: no padding bytes in the file, so equal states give equal files.
 template <class IO, class Key, class Slot>
-void slot_fields(IO& io, Key& f, Slot& s) {
+void slot_fields(IO& io, Key& f, Slot& s, bool last_step_fields = true) {
   bool active = true;  // only active slots are stored: a constant byte, kept from format 03
   io.pod(f.type); io.pod(f.a); io.pod(f.b); io.pod(active);
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
+  if (!last_step_fields) return;
   io.pod(s.history.fd); io.pod(s.history.gap); io.pod(s.history.weight);
 }
 
@@ -87,7 +92,7 @@ void read_active(Reader& r, PairList& list) {
     ContactSlot slot;
     r.pod(pair.i);
     r.pod(pair.j);
-    slot_fields(r, key, slot);
+    slot_fields(r, key, slot, r.last_step_fields);
     if (list.pairs.empty() || list.pairs.back().i != pair.i || list.pairs.back().j != pair.j) {
       list.pairs.push_back(pair);
       list.slot_begin.push_back(list.slot_begin.back());
@@ -137,7 +142,9 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   Reader r{std::ifstream(path, std::ios::binary), path};
   if (!r.in) throw InputError(path + ": cannot open checkpoint");
   char magic[sizeof(kMagic)];
-  if (!r.in.read(magic, sizeof(magic)) || std::memcmp(magic, kMagic, sizeof(kMagic)) != 0)
+  const bool read = bool(r.in.read(magic, sizeof(magic)));
+  r.last_step_fields = !(read && std::memcmp(magic, kMagic03, sizeof(kMagic03)) == 0);
+  if (!read || (r.last_step_fields && std::memcmp(magic, kMagic, sizeof(kMagic)) != 0))
     throw InputError(path + ": not a polydem checkpoint of this version (format " + std::string(kMagic + 6, 2) + ")");
   std::int64_t step = 0;
   double dt = 0.0;
