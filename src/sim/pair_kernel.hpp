@@ -46,15 +46,16 @@ struct FoundContact {
 // that appears at the band edge has w = 0, so forces stay continuous.
 inline void patch_weights(const std::vector<FoundContact>& found, double band,
                           std::vector<double>& weight) {
+  if (found.size() == 1) { weight.assign(1, 1.0); return; }  // the common lone contact
   weight.resize(found.size());
   double total = 0.0;
   for (std::size_t k = 0; k < found.size(); ++k) {
     weight[k] = band - found[k].geometry.gap;
     total += weight[k];
   }
-  if (found.size() == 1) { weight[0] = 1.0; return; }  // the common lone contact: no division
-  const double scale = total > 0.0 ? 1.0 / total : 0.0;
-  for (double& w : weight) w = total > 0.0 ? w * scale : 1.0 / double(found.size());
+  if (!(total > 0.0)) { weight.assign(found.size(), 1.0 / double(found.size())); return; }
+  const double scale = 1.0 / total;  // one division per pair
+  for (double& w : weight) w *= scale;
 }
 
 // A slot that starts touching inherits the history of the nearest slot of the same pair
