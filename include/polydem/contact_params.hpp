@@ -11,6 +11,7 @@ struct ContactParams {
   double mu = 0.0;         // -, Coulomb friction coefficient
   double en = -1.0;        // -, normal restitution in (0, 1]; < 0 when damp_rate is given
   double damp_rate = -1.0; // -, damping ratio alpha_n in [0, 1); < 0 when en is given
+  double damp_tangential = 0.0;  // -, tangential damping ratio alpha_t in [0, 1) (0: SPEC's spring alone)
   double fc = 0.0;         // N, cohesion force at touching (0: no cohesion)
   double dncut = 0.0;      // m, width of the cohesion band beyond touching
 };

@@ -47,6 +47,8 @@ LawParams prepare_law(const ContactParams& p) {
   if (p.mu > 0.0 && p.kt == 0.0)
     reject("kt", "must be > 0 when mu > 0, or friction is lost (kt = kn is common)");
   if (p.mur > 0.0 && p.kr == 0.0) reject("kr", "must be > 0 when mur > 0 (rolling stiffness, N m/rad)");
+  if (!(p.damp_tangential >= 0.0 && p.damp_tangential < 1.0))
+    reject("damp_tangential", "must be in [0, 1), got " + std::to_string(p.damp_tangential));
   if (p.fc > 0.0 && p.dncut == 0.0)
     reject("dncut", "must be > 0 when fc > 0 (width of the cohesion band, m)");
   LawParams law{};
@@ -56,6 +58,8 @@ LawParams prepare_law(const ContactParams& p) {
   law.mur = p.mur;
   law.mu = p.mu;
   law.alpha_n = damping_ratio(p);
+  law.tangential_damping = p.damp_tangential > 0.0 && p.mu > 0.0 && p.kt > 0.0;
+  law.alpha_t = law.tangential_damping ? p.damp_tangential : 0.0;
   law.fc = p.fc;
   law.dncut = p.fc > 0.0 ? p.dncut : 0.0;
   law.cohesion = p.fc > 0.0;

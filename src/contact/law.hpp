@@ -46,8 +46,9 @@ namespace polydem {
 struct LawParams {
   double kn, kt, kr, mur, mu;  // N/m, N/m, N m/rad, -, -
   double alpha_n;              // -, damping ratio: from damp_rate, or solved so the clamped law returns en
+  double alpha_t;              // -, tangential damping ratio (damp_tangential; 0: none)
   double fc, dncut;            // N, m (fc = 0: no cohesion)
-  bool cohesion, rolling;      // chosen once: skip the branches the scene does not need
+  bool cohesion, rolling, tangential_damping;  // chosen once: skip the branches the scene does not need
 };
 
 // Validates p (InputError naming the key) and solves alpha_n from en when en is given.
@@ -82,10 +83,15 @@ struct ContactKinematics {
   double weight;  // -, patch share in (0, 1]: scales kn, kt, kr, nu and fc (1 for a lone contact)
   double nu = -1.0;  // N s/m, the pair's dashpot 2 alpha_n sqrt(kn m_eff) before the weight, set once
                      // per pair by the caller (one square root per pair, not per sub-contact); < 0: from m_eff
+  double nu_t = -1.0;  // N s/m, the pair's tangential dashpot 2 alpha_t sqrt(kt m_eff), likewise
 };
 
 // N s/m, the dashpot coefficient of a pair of effective mass m_eff (kg), before patch weights.
 inline double pair_damping(const LawParams& law, double m_eff) { return 2.0 * law.alpha_n * std::sqrt(law.kn * m_eff); }
+// N s/m, the tangential dashpot of that pair (0 without damp_tangential).
+inline double pair_tangential_damping(const LawParams& law, double m_eff) {
+  return law.tangential_damping ? 2.0 * law.alpha_t * std::sqrt(law.kt * m_eff) : 0.0;
+}
 
 struct ContactForce {
   Vec3 force;         // N, on i (j gets the opposite)
@@ -139,14 +145,29 @@ inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffnes
 
 // Tangential slot: rotate ft into the plane normal to n keeping its length, add -kt_w vt dt,
 // cap |ft| <= ft_max = mu fp (LAMMPS granular "linear_history" tangential model). Returns J, slip.
-inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& v_rel, double kt_w,
-                                double ft_max, double dt) {
+inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& vt, double kt_w, double ft_max, double dt) {
   const double length2 = ft.squaredNorm();
   ft -= ft.dot(n) * n;
   const double in_plane2 = ft.squaredNorm();
   if (in_plane2 > 0.0) ft *= std::sqrt(length2 / in_plane2);
-  const Vec3 vt = v_rel - v_rel.dot(n) * n;  // m/s, tangential relative velocity
   return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max);
+}
+
+// Tangential dashpot -nu_t_w vt beside the spring (damp_tangential), N. Spring plus dashpot stay
+// within the Coulomb cap: the dashpot takes its share first (at most all of it) and the spring
+// is capped at what is left, so steady sliding still carries exactly mu fp. Adds the dashpot's
+// work nu_t_w |vt|^2 dt (J, the half-step velocity on the force it makes; over a contact's life
+// it differs from the kicks' trapezoid by nu_t dt (|vt_first|^2 - |vt_after|^2)/4, as no
+// history keeps the last step's dashpot force) to `dissipated` and leaves the spring's cap in
+// `ft_max`.
+inline Vec3 tangential_dashpot(const Vec3& vt, double nu_t_w, double& ft_max, double& dissipated, double dt) {
+  Vec3 damper = -nu_t_w * vt;
+  const double size2 = damper.squaredNorm();
+  if (size2 > ft_max * ft_max) damper *= ft_max / std::sqrt(size2);
+  const double size = std::min(std::sqrt(size2), ft_max);
+  ft_max -= size;
+  dissipated -= damper.dot(vt) * dt;
+  return damper;
 }
 
 // J, energy held by a spring of stiffness k (0 for k = 0: that spring is off).
@@ -218,9 +239,16 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
     out.elastic += law_slot::cohesion_potential(w * law.fc, law.dncut, k.dn);
     out.dissipated += law_slot::cohesion_dissipated(law, h.weight, h.gap, w, k.dn);
   }
+  Vec3 damper = Vec3::Zero();  // N, tangential dashpot
   if (law.mu > 0.0 && kt_w > 0.0) {
     out.patch += law_slot::reweighted(h.ft, law.kt, h.weight, w);
-    out.dissipated += law_slot::tangential_spring(h.ft, k.normal, k.v_rel, kt_w, law.mu * normal.fn, dt);
+    const Vec3 vt = k.v_rel - vn * k.normal;  // m/s, tangential relative velocity
+    double ft_max = law.mu * normal.fn;       // N
+    if (law.tangential_damping) {
+      const double nu_t_w = w * (k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff));  // N s/m
+      damper = law_slot::tangential_dashpot(vt, nu_t_w, ft_max, out.dissipated, dt);
+    }
+    out.dissipated += law_slot::tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt);
     out.elastic += law_slot::spring_energy(h.ft, kt_w);
   }
   if (law.rolling) {
@@ -234,6 +262,7 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
   h.gap = k.dn;
   h.weight = w;
   out.force = out.fn * k.normal + h.ft;
+  if (law.tangential_damping) out.force += damper;
   return out;
 }
 

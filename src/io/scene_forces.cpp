@@ -23,7 +23,7 @@ const std::vector<std::string> kForceNames = {"gravity_force",
                                               "archimedes_force",
                                               "void_fraction"};
 const std::vector<std::string> kConfigKeys = {"kn", "kt",        "kr", "mur",  "mu",
-                                              "en", "damp_rate", "fc", "dncut"};
+                                              "en", "damp_rate", "damp_tangential", "fc", "dncut"};
 
 void read_damping(const YamlMap& m, ContactParams& p) {
   if (m.has("en") == m.has("damp_rate"))
@@ -38,6 +38,15 @@ void read_damping(const YamlMap& m, ContactParams& p) {
     if (!(p.damp_rate >= 0.0 && p.damp_rate < 1.0))
       m.fail("damp_rate", "must be in [0, 1), got " + m.scalar("damp_rate"));
   }
+}
+
+void read_tangential_damping(const YamlMap& m, ContactParams& p) {
+  if (!m.has("damp_tangential")) return;
+  p.damp_tangential = m.quantity("damp_tangential", Dimension::dimensionless);
+  if (!(p.damp_tangential >= 0.0 && p.damp_tangential < 1.0))
+    m.fail("damp_tangential", "must be in [0, 1), got " + m.scalar("damp_tangential"));
+  if (p.damp_tangential > 0.0 && !(p.mu > 0.0 && p.kt > 0.0))
+    m.fail("damp_tangential", "needs friction to act on (mu > 0 and kt > 0)");
 }
 
 void read_cohesion(const YamlMap& m, ContactParams& p, const std::string& op, bool cohesion) {
@@ -63,6 +72,7 @@ ContactParams read_params(const YamlMap& op_map, const std::string& key, const s
   if (!m.has("mu")) m.fail("mu", "missing in '" + key + "' (give mu: 0 for frictionless contacts)");
   p.mu = check_positive(m, "mu", m.quantity("mu", Dimension::dimensionless), true);
   read_damping(m, p);
+  read_tangential_damping(m, p);
   read_cohesion(m, p, op, cohesion);
   return p;
 }

@@ -137,14 +137,14 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   patch_weights(scratch.found, band, scratch.weight);
   const Vec3 xi = a.position, xj = partner.center(p.j);
   const double m_eff = partner.m_eff(p.i, p.j);
-  const double nu = pair_damping(law, m_eff);  // N s/m
+  const double nu = pair_damping(law, m_eff), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 vi = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(g.point - xi);
     ContactKinematics kin{g.normal, g.gap, vi - partner.velocity_at(p.j, g.point),
                           bodies.angular_velocity[p.i] - partner.angular_velocity(p.j), m_eff,
-                          law.rolling ? (g.point - xi).norm() : 0.0, scratch.weight[c], nu};
+                          law.rolling ? (g.point - xi).norm() : 0.0, scratch.weight[c], nu, nu_t};
     const ContactForce f = contact_force(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;

@@ -67,13 +67,16 @@ struct Limit {
 
 // The limits of one law on the smallest masses m_n, m_t (kg) and inertia i_r (kg m^2) its
 // contacts meet. Normal: the damped limit 2/w0 (sqrt(1 + a^2) - a), w0 = sqrt(kn/m_n).
-// Tangential: the spring kt on m_t has no dashpot (law.hpp: only the Coulomb cap, which
-// softens it), so 2 sqrt(m_t/kt); active only with friction (mu > 0). Rolling: the spring kr
-// (N m/rad) on i_r, no dashpot: 2 sqrt(i_r/kr). `normal` keeps the normal mode alone (polydem check).
-void take_law(Limit& limit, Limit& normal, const LawParams& law, double m_n, double m_t, double i_r) {
+// Tangential: the spring kt on m_t (the Coulomb cap only softens it), active only with
+// friction (mu > 0), with the dashpot 2 alpha_t sqrt(kt m) of damp_tangential (m the pair's
+// mass, kg) acting on m_t: ratio alpha_t sqrt(m/m_t); 2 sqrt(m_t/kt) without it. Rolling: the
+// spring kr (N m/rad) on i_r, no dashpot: 2 sqrt(i_r/kr). `normal` keeps the normal mode alone
+// (polydem check).
+void take_law(Limit& limit, Limit& normal, const LawParams& law, double m, double m_n, double m_t, double i_r) {
   if (law.kn > 0.0) normal.take(critical_time_step(law.kn, m_n, law.alpha_n), StepMode::kNormal);
   limit.take(normal.dt, StepMode::kNormal);
-  if (law.kt > 0.0 && law.mu > 0.0) limit.take(critical_time_step(law.kt, m_t), StepMode::kTangential);
+  if (law.kt > 0.0 && law.mu > 0.0)
+    limit.take(critical_time_step(law.kt, m_t, law.alpha_t * std::sqrt(m / m_t)), StepMode::kTangential);
   if (law.rolling) limit.take(critical_time_step(law.kr, i_r), StepMode::kRolling);
 }
 
@@ -92,17 +95,19 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt) {
   Compliance worst;
+  double lightest = std::numeric_limits<double>::infinity();  // kg
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Compliance c = body_compliance(shapes[bodies.shape[b]], bodies.scale[b], bodies.mass[b], bodies.inertia[b]);
     worst.normal = std::max(worst.normal, c.normal);
     worst.tangential = std::max(worst.tangential, c.tangential);
     worst.rolling = std::max(worst.rolling, c.rolling);
+    lightest = std::min(lightest, bodies.mass[b]);
   }
   const double m_n = 1.0 / worst.normal, m_t = 1.0 / worst.tangential, i_r = 1.0 / worst.rolling;
   Limit limit, normal;
   // Two bodies of the smallest mass in contact: the relative motion meets half of it.
-  if (bodies.size() > 1) take_law(limit, normal, particle, 0.5 * m_n, 0.5 * m_t, 0.5 * i_r);
-  if (driver) take_law(limit, normal, *driver, m_n, m_t, i_r);  // a driver has infinite mass
+  if (bodies.size() > 1) take_law(limit, normal, particle, 0.5 * lightest, 0.5 * m_n, 0.5 * m_t, 0.5 * i_r);
+  if (driver) take_law(limit, normal, *driver, lightest, m_n, m_t, i_r);  // a driver has infinite mass
   TimeStepEstimate e;
   e.m_eff = m_n;
   e.m_tangential = m_t;
