@@ -120,6 +120,12 @@ TEST_CASE("restitution, damping and cohesion parameters", "[scene][errors]") {
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5}"), 5, "en", "damp_rate");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, damp_rate: 1}"), 5,
               "damp_rate", "[0, 1)");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, damp_tangential: 1}"), 5,
+              "damp_tangential", "[0, 1)");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0, en: 0.5, damp_tangential: 0.2}"), 5,
+              "damp_tangential", "mu > 0");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, damp_tangental: 0.2}"), 5,
+              "damp_tangental", "did you mean 'damp_tangential'?");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, fc: 0.05}"), 5, "fc",
               "contact_polyhedron_with_cohesion");
   check_error(edited({{4, "  - contact_sphere_with_cohesion:"},
