@@ -40,7 +40,8 @@ struct Pile {
   Scene scene = base_scene(law(1e5, 0.5, 0.4, 1e5), true, Vec3(0, 0, -9.807));
   ShapeLibrary lib = library({cube_shape(0.009, 0.0005), sphere_shape(0.005)});
   std::vector<BodySpec> specs;
-  Pile() {
+  explicit Pile(double damp_tangential = 0.0) {
+    scene.forces.contact.config.damp_tangential = scene.forces.contact.config_driver.damp_tangential = damp_tangential;
     for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
                                  {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
       DriverSpec d;
@@ -61,9 +62,9 @@ struct Pile {
   }
 };
 
-std::uint64_t run_pile(int threads, int steps) {
+std::uint64_t run_pile(int threads, int steps, double damp_tangential = 0.0) {
   omp_set_num_threads(threads);
-  Pile p;
+  Pile p(damp_tangential);
   Simulation sim(p.scene, p.lib, p.specs);
   for (int s = 0; s < steps; ++s) sim.step();
   omp_set_num_threads(2);
@@ -76,6 +77,9 @@ TEST_CASE("final state is bitwise identical for 1 and 2 threads and run to run",
   const std::uint64_t one = run_pile(1, 3000), two = run_pile(2, 3000), again = run_pile(2, 3000);
   CHECK(one == two);
   CHECK(two == again);
+  const std::uint64_t damped = run_pile(1, 3000, 0.3);
+  CHECK(damped == run_pile(2, 3000, 0.3));
+  CHECK(damped != one);  // the tangential dashpot acts
 }
 
 TEST_CASE("a resumed checkpoint continues bit for bit", "[checkpoint]") {
