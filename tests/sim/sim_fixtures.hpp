@@ -96,4 +96,15 @@ inline void run_for(Simulation& sim, double seconds) {
   for (long long s = std::llround(seconds / sim.dt()); s > 0; --s) sim.step();
 }
 
+// Steps until the bodies have touched and every contact has ended again (an impact and its
+// rebound), at most max_steps. Returns false when nothing touched.
+inline bool run_through_impact(Simulation& sim, int max_steps) {
+  bool touched = false;
+  for (int s = 0; s < max_steps && !(touched && sim.engine().stats().contacts == 0); ++s) {
+    sim.step();
+    touched = touched || sim.engine().stats().contacts > 0;
+  }
+  return touched;
+}
+
 }  // namespace polydem::test

@@ -19,14 +19,8 @@ double flat_restitution(const Shape& prism, double en, double v0) {
   scene.simulation.dt = kPi * std::sqrt(2700.0 * prism.volume / 1e5) / 400.0;  // resolve the impact: test the patch, not dt
   const double half_height = prism.vertices[0].z() < 0 ? -prism.vertices[0].z() : prism.vertices[0].z();
   Simulation sim(scene, library({prism}), {body(prism.name.c_str(), {0, 0, half_height + prism.radius + 1e-5}, {0, 0, -v0})});
-  bool touched = false;
-  for (int s = 0; s < 100000; ++s) {
-    sim.step();
-    const std::size_t n = sim.engine().stats().contacts;
-    if (n) touched = true;
-    if (touched && !n) return sim.bodies.velocity[0].z() / v0;
-  }
-  return -1.0;
+  if (!run_through_impact(sim, 100000) || sim.engine().stats().contacts) return -1.0;  // never touched, or still touching
+  return sim.bodies.velocity[0].z() / v0;
 }
 
 // Rests a prism on the floor under gravity and returns its settled overlap.
