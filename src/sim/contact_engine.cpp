@@ -270,19 +270,17 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
 
 // Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results.
 template <class Kernel>
-static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<double>& elastic,
-                            std::vector<double>& dissipated, std::vector<int>& contacts) {
+static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<double>& dissipated,
+                            std::vector<int>& contacts) {
   const std::size_t n = list.size();
-  elastic.assign(n, 0.0);
-  dissipated.assign(n, 0.0);
-  contacts.assign(n, 0);
+  dissipated.resize(n);  // one_pair writes every entry
+  contacts.resize(n);
   auto one_pair = [&](std::size_t k, PairScratch& scratch) {
     const PairTotals t = kernel(std::uint32_t(k), scratch);
     list.force_i[k] = t.force_i;
     list.torque_i[k] = t.torque_i;
     list.torque_j[k] = t.torque_j;
     list.touching[k] = std::uint16_t(t.contacts);
-    elastic[k] = t.elastic;
     dissipated[k] = t.dissipated;
     contacts[k] = t.contacts;
   };
@@ -307,12 +305,11 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
     pose(bodies);
   const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
                       bodies.angular_velocity.data(), bodies.mass.data()};
-  stats_.elastic = stats_.dissipated = 0.0;
+  stats_.dissipated = 0.0;
   stats_.contacts = 0;
   // Energies are summed serially in pair order: repeatable whatever the thread count.
   auto add_totals = [this]() {
-    for (std::size_t k = 0; k < pair_elastic_.size(); ++k) {
-      stats_.elastic += pair_elastic_[k];
+    for (std::size_t k = 0; k < pair_dissipated_.size(); ++k) {
       stats_.dissipated += pair_dissipated_[k];
       stats_.contacts += std::size_t(pair_contacts_[k]);
     }
@@ -320,23 +317,41 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   if (spheres_only_) {
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch&) {
       return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
-    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+    }, pair_dissipated_, pair_contacts_);
   } else {
     const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
                               vertex_offset_.data()};
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+    }, pair_dissipated_, pair_contacts_);
   }
   add_totals();
   if (!driver_list_.pairs.empty()) {
     const DriverPartner partner{&drivers, &bodies};
     all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
-    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+    }, pair_dissipated_, pair_contacts_);
     add_totals();
   }
   reduce(bodies, drivers);
+}
+
+// Sums per pair, then pairs in order onto `total`, as the pair kernels summed it when they
+// returned it every step: the same bits.
+static void add_stored_energy(const PairList& list, const LawParams& law, double& total) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    double pair = 0.0;  // J
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+      if (list.active[s]) pair += stored_energy(law, list.slots[s].history);
+    total += pair;
+  }
+}
+
+double ContactEngine::elastic() const {
+  double total = 0.0;  // J
+  add_stored_energy(body_list_, settings_.particle, total);
+  add_stored_energy(driver_list_, settings_.driver, total);
+  return total;
 }
 
 void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {

@@ -72,7 +72,6 @@ double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t
 
 struct PairTotals {
   Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
-  double elastic = 0.0;      // J stored in the pair's springs
   double dissipated = 0.0;   // J dissipated this step, less what patch weight changes added
   int contacts = 0;
 };
@@ -153,7 +152,6 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     totals.force_i += f.force;
     totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
     totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
-    totals.elastic += f.elastic;
     totals.dissipated += f.dissipated - f.patch;  // the patch share is not conservative (law.hpp)
   }
   totals.contacts = int(scratch.found.size());

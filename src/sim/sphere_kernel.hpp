@@ -48,7 +48,6 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   totals.force_i = f.force;
   totals.torque_i = arm_i.cross(f.force) + f.moment;
   totals.torque_j = -(arm_j.cross(f.force) + f.moment);
-  totals.elastic = f.elastic;
   totals.dissipated = f.dissipated;
   totals.contacts = 1;
   return totals;
