@@ -126,8 +126,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     // The slot's state is read and written below, after the pair's other candidates: fetch it now.
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
-    __builtin_prefetch(state + 64, 1);
-    __builtin_prefetch(state + sizeof(ContactSlot) - 1, 1);  // 136 bytes: up to three lines
+    __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if (was_touching || !scratch.found.empty())
@@ -148,7 +147,6 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     slot.point = g.point;
     slot.force = f.force;
     slot.fn = f.fn;
-    slot.gap = g.gap;
     totals.force_i += f.force;
     totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
     totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;

@@ -44,7 +44,6 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   slot.point = point;
   slot.force = f.force;
   slot.fn = f.fn;
-  slot.gap = gap;
   totals.force_i = f.force;
   totals.torque_i = arm_i.cross(f.force) + f.moment;
   totals.torque_j = -(arm_j.cross(f.force) + f.moment);
