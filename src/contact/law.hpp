@@ -121,7 +121,7 @@ inline double cohesion_potential(double fc_w, double dncut, double dn) {
 // trapezoid rule velocity Verlet applies) minus the change of its energy, which reduces to
 // (|trial| - cap)(old . trial/|trial| + cap)/(2k): cap times the slip when sliding steadily,
 // the stored energy when the cap drops to 0, and 0 while sticking.
-inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+[[gnu::always_inline]] inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
   const Vec3 old = spring;
   spring += increment;
   const double trial2 = spring.squaredNorm();
@@ -134,7 +134,7 @@ inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffnes
 
 // Tangential slot: rotate ft into the plane normal to n keeping its length, add -kt_w vt dt,
 // cap |ft| <= ft_max = mu fp (LAMMPS granular "linear_history" tangential model). Returns J, slip.
-inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& v_rel, double kt_w,
+[[gnu::always_inline]] inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& v_rel, double kt_w,
                                 double ft_max, double dt) {
   const double length2 = ft.squaredNorm();
   ft -= ft.dot(n) * n;

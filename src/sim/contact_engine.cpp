@@ -188,9 +188,9 @@ void ContactEngine::pose(const Bodies& bodies) {
     const std::uint32_t b = listed_[e];
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
-    pose_vertices(s, bodies.scale[b], bodies.position[b], bodies.orientation[b], v);
-    posed_[b] = PosedBody{&s, v, bodies.orientation[b].toRotationMatrix(), bodies.position[b],
-                          s.radius * bodies.scale[b]};
+    const Mat3 rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
+    pose_vertices(s, bodies.scale[b], bodies.position[b], rotation, v);
+    posed_[b] = PosedBody{&s, v, rotation, bodies.position[b], s.radius * bodies.scale[b]};
   });
 }
 
