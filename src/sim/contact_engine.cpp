@@ -77,6 +77,13 @@ struct DriverPartner {
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
+// m, the farthest core vertex from the centre of mass, unscaled.
+double core_reach(const Shape& s) {
+  double r = 0.0;
+  for (const Vec3& v : s.vertices) r = std::max(r, v.norm());
+  return r;
+}
+
 // m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
 float gap_below(double core_distance2, double radii) {
   const double gap = std::sqrt(core_distance2) - radii;
@@ -161,10 +168,12 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
   const std::size_t n = bodies.size();
   vertex_offset_.assign(n + 1, 0);
   bounding_.resize(n);
+  core_reach_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
     const Shape& s = shapes_[bodies.shape[b]];
     vertex_offset_[b + 1] = vertex_offset_[b] + std::uint32_t(s.vertices.size());
     bounding_[b] = s.bounding_radius * bodies.scale[b];
+    core_reach_[b] = core_reach(s) * bodies.scale[b];
   }
   world_vertices_.resize(vertex_offset_[n]);
   posed_.resize(n);
@@ -298,7 +307,7 @@ static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<do
 }
 
 void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
-  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin) ||
+  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, core_reach_, settings_.skin) ||
       drivers_moved(drivers))
     rebuild(bodies, drivers);  // poses the bodies it pairs
   else

@@ -63,6 +63,9 @@ class ContactEngine {
   std::vector<PosedBody> posed_;
   std::vector<std::uint32_t> listed_;      // bodies in some pair: the only ones posed each step
   std::vector<double> bounding_;           // m, scaled bounding radius per body
+  // m, per body, the farthest core point from the centre: gaps are core distances less the
+  // radii, so turning moves no feature farther than this times the chord (0 for a sphere).
+  std::vector<double> core_reach_;
   std::vector<double> radius_;             // m, scaled Minkowski radius per body
   CellList cells_;
   RebuildTrigger trigger_;
