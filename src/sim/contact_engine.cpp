@@ -277,21 +277,17 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   return false;
 }
 
-// Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results.
+// Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results in the list.
 template <class Kernel>
-static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<double>& dissipated,
-                            std::vector<int>& contacts) {
+static void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size();
-  dissipated.resize(n);  // one_pair writes every entry
-  contacts.resize(n);
   auto one_pair = [&](std::size_t k, PairScratch& scratch) {
     const PairTotals t = kernel(std::uint32_t(k), scratch);
     list.force_i[k] = t.force_i;
     list.torque_i[k] = t.torque_i;
     list.torque_j[k] = t.torque_j;
     list.touching[k] = std::uint16_t(t.contacts);
-    dissipated[k] = t.dissipated;
-    contacts[k] = t.contacts;
+    list.dissipated[k] = t.dissipated;
   };
   if (n < kParallelMinItems) {  // small scenes: no thread wake-up
     PairScratch scratch;
@@ -317,30 +313,30 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   stats_.dissipated = 0.0;
   stats_.contacts = 0;
   // Energies are summed serially in pair order: repeatable whatever the thread count.
-  auto add_totals = [this]() {
-    for (std::size_t k = 0; k < pair_dissipated_.size(); ++k) {
-      stats_.dissipated += pair_dissipated_[k];
-      stats_.contacts += std::size_t(pair_contacts_[k]);
+  auto add_totals = [this](const PairList& list) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      stats_.dissipated += list.dissipated[k];
+      stats_.contacts += list.touching[k];
     }
   };
   if (spheres_only_) {
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch&) {
       return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
-    }, pair_dissipated_, pair_contacts_);
+    });
   } else {
     const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
                               vertex_offset_.data()};
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-    }, pair_dissipated_, pair_contacts_);
+    });
   }
-  add_totals();
+  add_totals(body_list_);
   if (!driver_list_.pairs.empty()) {
     const DriverPartner partner{&drivers, &bodies};
     all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
-    }, pair_dissipated_, pair_contacts_);
-    add_totals();
+    });
+    add_totals(driver_list_);
   }
   reduce(bodies, drivers);
 }

@@ -75,8 +75,6 @@ class ContactEngine {
   std::vector<Driver> drivers_at_build_;   // driver placements when the lists were built
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
-  std::vector<double> pair_dissipated_;
-  std::vector<int> pair_contacts_;
   ContactStats stats_;
 };
 
