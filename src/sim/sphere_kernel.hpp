@@ -5,8 +5,9 @@
 
 namespace polydem {
 
-inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
-                                     PairList& list, std::uint32_t k) {
+// Always inlined into the pair loop: the totals go straight into the list, not through memory.
+[[gnu::always_inline]] inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt,
+                                                            const BodyView& bodies, PairList& list, std::uint32_t k) {
   PairTotals totals;
   if (list.slot_begin[k] == list.slot_begin[k + 1]) return totals;  // out of reach at the rebuild
   const BodyPair p = list.pairs[k];
