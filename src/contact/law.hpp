@@ -104,14 +104,9 @@ struct ContactForce {
 
 namespace law_slot {
 
-// Normal + damping slots for overlap x = -dn > 0: fn = max(kn_w x - nu_w vn, 0) (no pull).
-struct NormalPart {
-  double fn;          // N
-  double elastic;     // J, 1/2 kn_w x^2
-};
-inline NormalPart normal_damped(double kn_w, double nu_w, double overlap, double vn) {
-  const double spring = kn_w * overlap;
-  return {std::max(spring - nu_w * vn, 0.0), 0.5 * spring * overlap};
+// Normal + damping slots for overlap x = -dn > 0, N: fn = max(kn_w x - nu_w vn, 0) (no pull).
+inline double normal_damped(double kn_w, double nu_w, double overlap, double vn) {
+  return std::max(kn_w * overlap - nu_w * vn, 0.0);
 }
 
 // Cohesion slot, N (negative: attractive): -fc_w in the overlap, fc_w (dn/dncut - 1) in the band.
@@ -132,7 +127,7 @@ inline double cohesion_potential(double fc_w, double dncut, double dn) {
 // trapezoid rule velocity Verlet applies) minus the change of its energy, which reduces to
 // (|trial| - cap)(old . trial/|trial| + cap)/(2k): cap times the slip when sliding steadily,
 // the stored energy when the cap drops to 0, and 0 while sticking.
-inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+[[gnu::always_inline]] inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
   const Vec3 old = spring;
   spring += increment;
   const double trial2 = spring.squaredNorm();
@@ -145,7 +140,8 @@ inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffnes
 
 // Tangential slot: rotate ft into the plane normal to n keeping its length, add -kt_w vt dt,
 // cap |ft| <= ft_max = mu fp (LAMMPS granular "linear_history" tangential model). Returns J, slip.
-inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& vt, double kt_w, double ft_max, double dt) {
+[[gnu::always_inline]] inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& vt, double kt_w,
+                                                       double ft_max, double dt) {
   const double length2 = ft.squaredNorm();
   ft -= ft.dot(n) * n;
   const double in_plane2 = ft.squaredNorm();
@@ -195,6 +191,19 @@ inline double cohesion_dissipated(const LawParams& law, double w0, double dn0, d
 
 }  // namespace law_slot
 
+// J, stored in the normal, cohesion, tangential and rolling springs of a contact whose last
+// step left h (0 for one with no last step): the ledger's `elastic`, wanted on output steps only.
+inline double stored_energy(const LawParams& law, const ContactHistory& h) {
+  const double w = h.weight;
+  const double overlap = std::max(-h.gap, 0.0);  // m
+  const double spring = w * law.kn * overlap;    // N
+  double elastic = 0.5 * spring * overlap;
+  if (law.cohesion) elastic += law_slot::cohesion_potential(w * law.fc, law.dncut, h.gap);
+  if (law.mu > 0.0 && w * law.kt > 0.0) elastic += law_slot::spring_energy(h.ft, w * law.kt);
+  if (law.rolling) elastic += law_slot::spring_energy(h.mr, w * law.kr);
+  return elastic;
+}
+
 // J, dissipated by a contact that ends (its last state in h): the dashpot's last force over
 // the way out to zero overlap (with the clamp on, all the normal spring held), cohesion out to
 // the band edge, and the energy of the tangential and rolling springs. Nothing for a contact
@@ -221,41 +230,37 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
   const double kn_w = w * law.kn;
   const double overlap = std::max(-k.dn, 0.0);  // m
   const double vn = k.v_rel.dot(k.normal);       // m/s, > 0 when separating
-  law_slot::NormalPart normal{0.0, 0.0};  // normal.fn is fp, the force the caps scale with
+  double fp = 0.0;  // N, the compressive force the caps scale with
   if (overlap > 0.0) {
     const double nu_w = w * (k.nu >= 0.0 ? k.nu : pair_damping(law, k.m_eff));  // N s/m
-    normal = law_slot::normal_damped(kn_w, nu_w, overlap, vn);
+    fp = law_slot::normal_damped(kn_w, nu_w, overlap, vn);
   }
-  out.fn = normal.fn;
-  out.elastic = normal.elastic;
+  out.fn = fp;
   // A contact that starts: one step back it was a stroke vn dt away, with no dashpot force.
   if (h.gap == kNoGap) h = ContactHistory{h.ft, h.mr, 0.0, k.dn - vn * dt, w};
-  const double fd = normal.fn - kn_w * overlap;  // N, the dashpot's share after the clamp
+  const double fd = fp - kn_w * overlap;  // N, the dashpot's share after the clamp
   out.dissipated = 0.5 * (h.fd + fd) * (h.gap - k.dn);  // trapezoid, as the kicks apply it
   // 1/2 kn w x^2 at the new weight minus at the old one, over the step (trapezoid in x).
   out.patch = 0.5 * law.kn * std::max(-h.gap, 0.0) * overlap * (w - h.weight);
   if (law.cohesion) {
     out.fn += law_slot::cohesion_force(w * law.fc, law.dncut, k.dn);
-    out.elastic += law_slot::cohesion_potential(w * law.fc, law.dncut, k.dn);
     out.dissipated += law_slot::cohesion_dissipated(law, h.weight, h.gap, w, k.dn);
   }
   Vec3 damper = Vec3::Zero();  // N, tangential dashpot
   if (law.mu > 0.0 && kt_w > 0.0) {
     out.patch += law_slot::reweighted(h.ft, law.kt, h.weight, w);
     const Vec3 vt = k.v_rel - vn * k.normal;  // m/s, tangential relative velocity
-    double ft_max = law.mu * normal.fn;       // N
+    double ft_max = law.mu * fp;              // N
     if (law.tangential_damping) {
       const double nu_t_w = w * (k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff));  // N s/m
       damper = law_slot::tangential_dashpot(vt, nu_t_w, ft_max, out.dissipated, dt);
     }
     out.dissipated += law_slot::tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt);
-    out.elastic += law_slot::spring_energy(h.ft, kt_w);
   }
   if (law.rolling) {
-    const double mr_max = law.mur * k.lever * normal.fn;  // N m
+    const double mr_max = law.mur * k.lever * fp;  // N m
     out.patch += law_slot::reweighted(h.mr, law.kr, h.weight, w);
     out.dissipated += law_slot::capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
-    out.elastic += law_slot::spring_energy(h.mr, kr_w);
     out.moment = h.mr;
   }
   h.fd = fd;
@@ -263,6 +268,7 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
   h.weight = w;
   out.force = out.fn * k.normal + h.ft;
   if (law.tangential_damping) out.force += damper;
+  out.elastic = stored_energy(law, h);  // dead code in the pair kernels, which read it from the slots on output steps
   return out;
 }
 

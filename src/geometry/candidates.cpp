@@ -193,9 +193,15 @@ void for_each_feature_pair(const Shape& a, const Shape& b, Visit visit) {
 
 }  // namespace
 
+void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Mat3& rotation, Vec3* out) {
+  const Mat3 rs = rotation * scale;
+  const Vec3* local = shape.vertices.data();
+  const std::size_t n = shape.vertices.size();  // read once: `out` might alias the shape for all the compiler knows
+  for (std::size_t i = 0; i < n; ++i) out[i] = position + rs * local[i];
+}
+
 void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Quat& q, Vec3* out) {
-  const Mat3 rs = q.toRotationMatrix() * scale;
-  for (std::size_t i = 0; i < shape.vertices.size(); ++i) out[i] = position + rs * shape.vertices[i];
+  pose_vertices(shape, scale, position, q.toRotationMatrix(), out);
 }
 
 double candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& pairs,

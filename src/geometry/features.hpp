@@ -37,6 +37,8 @@ struct ContactPoint {
 
 // World positions of the scaled vertices: out[i] = position + q * (scale * shape.vertices[i]).
 void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Quat& q, Vec3* out);
+// The same with q's rotation matrix, for a caller that keeps it (the same bits).
+void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Mat3& rotation, Vec3* out);
 
 // Evaluates one feature pair. Returns false when the closest points do not lie strictly inside
 // the features (the lower-dimensional pair covers the boundary), when edges are parallel

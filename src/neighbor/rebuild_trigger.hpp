@@ -1,5 +1,5 @@
 #pragma once
-// Decides when the Verlet lists must be rebuilt: as soon as some surface point may have moved
+// Decides when the Verlet lists must be rebuilt: as soon as some core point may have moved
 // more than skin/2 since the last build, not on a fixed period.
 #include <cstddef>
 #include <vector>
@@ -11,7 +11,7 @@ namespace polydem {
 // m, upper bound on how far any point within `bounding_radius` (m) of the centre moved when the
 // centre moved by `dx` and the orientation went from q_built to q_now: |dx| + 2 R sin(theta/2),
 // theta the angle of q_now q_built^-1. The chord 2 R sin(theta/2) is the exact largest rotational
-// displacement, tighter than the arc R theta and free of trigonometry.
+// displacement, tighter than the arc R theta and free of trigonometry. R = 0: |dx| alone.
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius);
 

@@ -55,7 +55,8 @@ template <class IO, class Key, class Slot>
 void slot_fields(IO& io, Key& f, Slot& s, bool last_step_fields = true) {
   bool active = true;  // only active slots are stored: a constant byte, kept from format 03
   io.pod(f.type); io.pod(f.a); io.pod(f.b); io.pod(active);
-  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn); io.pod(s.gap);
+  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn);
+  io.pod(s.history.gap);  // the last gap, stored twice: format 03 has it here and not below
   if (!last_step_fields) return;
   io.pod(s.history.fd); io.pod(s.history.gap); io.pod(s.history.weight);
 }
@@ -93,6 +94,7 @@ void read_active(Reader& r, PairList& list) {
     r.pod(pair.i);
     r.pod(pair.j);
     slot_fields(r, key, slot, r.last_step_fields);
+    if (!r.last_step_fields) slot.history.gap = kNoGap;  // format 03: no last step for the energy ledger
     if (list.pairs.empty() || list.pairs.back().i != pair.i || list.pairs.back().j != pair.j) {
       list.pairs.push_back(pair);
       list.slot_begin.push_back(list.slot_begin.back());

@@ -77,6 +77,13 @@ struct DriverPartner {
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
+// m, the farthest core vertex from the centre of mass, unscaled.
+double core_reach(const Shape& s) {
+  double r = 0.0;
+  for (const Vec3& v : s.vertices) r = std::max(r, v.norm());
+  return r;
+}
+
 // m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
 float gap_below(double core_distance2, double radii) {
   const double gap = std::sqrt(core_distance2) - radii;
@@ -161,10 +168,12 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
   const std::size_t n = bodies.size();
   vertex_offset_.assign(n + 1, 0);
   bounding_.resize(n);
+  core_reach_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
     const Shape& s = shapes_[bodies.shape[b]];
     vertex_offset_[b + 1] = vertex_offset_[b] + std::uint32_t(s.vertices.size());
     bounding_[b] = s.bounding_radius * bodies.scale[b];
+    core_reach_[b] = core_reach(s) * bodies.scale[b];
   }
   world_vertices_.resize(vertex_offset_[n]);
   posed_.resize(n);
@@ -188,9 +197,9 @@ void ContactEngine::pose(const Bodies& bodies) {
     const std::uint32_t b = listed_[e];
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
-    pose_vertices(s, bodies.scale[b], bodies.position[b], bodies.orientation[b], v);
-    posed_[b] = PosedBody{&s, v, bodies.orientation[b].toRotationMatrix(), bodies.position[b],
-                          s.radius * bodies.scale[b]};
+    const Mat3 rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
+    pose_vertices(s, bodies.scale[b], bodies.position[b], rotation, v);
+    posed_[b] = PosedBody{&s, v, rotation, bodies.position[b], s.radius * bodies.scale[b]};
   });
 }
 
@@ -268,23 +277,17 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   return false;
 }
 
-// Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results.
+// Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results in the list.
 template <class Kernel>
-static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<double>& elastic,
-                            std::vector<double>& dissipated, std::vector<int>& contacts) {
+static void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size();
-  elastic.assign(n, 0.0);
-  dissipated.assign(n, 0.0);
-  contacts.assign(n, 0);
   auto one_pair = [&](std::size_t k, PairScratch& scratch) {
     const PairTotals t = kernel(std::uint32_t(k), scratch);
     list.force_i[k] = t.force_i;
     list.torque_i[k] = t.torque_i;
     list.torque_j[k] = t.torque_j;
     list.touching[k] = std::uint16_t(t.contacts);
-    elastic[k] = t.elastic;
-    dissipated[k] = t.dissipated;
-    contacts[k] = t.contacts;
+    list.dissipated[k] = t.dissipated;
   };
   if (n < kParallelMinItems) {  // small scenes: no thread wake-up
     PairScratch scratch;
@@ -300,43 +303,60 @@ static void all_pair_forces(PairList& list, const Kernel& kernel, std::vector<do
 }
 
 void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
-  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, bounding_, settings_.skin) ||
+  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, core_reach_, settings_.skin) ||
       drivers_moved(drivers))
     rebuild(bodies, drivers);  // poses the bodies it pairs
   else
     pose(bodies);
   const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
                       bodies.angular_velocity.data(), bodies.mass.data()};
-  stats_.elastic = stats_.dissipated = 0.0;
+  stats_.dissipated = 0.0;
   stats_.contacts = 0;
   // Energies are summed serially in pair order: repeatable whatever the thread count.
-  auto add_totals = [this]() {
-    for (std::size_t k = 0; k < pair_elastic_.size(); ++k) {
-      stats_.elastic += pair_elastic_[k];
-      stats_.dissipated += pair_dissipated_[k];
-      stats_.contacts += std::size_t(pair_contacts_[k]);
+  auto add_totals = [this](const PairList& list) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      stats_.dissipated += list.dissipated[k];
+      stats_.contacts += list.touching[k];
     }
   };
   if (spheres_only_) {
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch&) {
       return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
-    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+    });
   } else {
     const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
                               vertex_offset_.data()};
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-    }, pair_elastic_, pair_dissipated_, pair_contacts_);
+    });
   }
-  add_totals();
+  add_totals(body_list_);
   if (!driver_list_.pairs.empty()) {
     const DriverPartner partner{&drivers, &bodies};
     all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
       return pair_forces(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
-    }, pair_elastic_, pair_dissipated_, pair_contacts_);
-    add_totals();
+    });
+    add_totals(driver_list_);
   }
   reduce(bodies, drivers);
+}
+
+// Sums per pair, then pairs in order onto `total`, as the pair kernels summed it when they
+// returned it every step: the same bits.
+static void add_stored_energy(const PairList& list, const LawParams& law, double& total) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    double pair = 0.0;  // J
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+      if (list.active[s]) pair += stored_energy(law, list.slots[s].history);
+    total += pair;
+  }
+}
+
+double ContactEngine::elastic() const {
+  double total = 0.0;  // J
+  add_stored_energy(body_list_, settings_.particle, total);
+  add_stored_energy(driver_list_, settings_.driver, total);
+  return total;
 }
 
 void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {

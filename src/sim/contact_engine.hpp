@@ -23,7 +23,6 @@ struct ContactStats {
   std::size_t body_pairs = 0, driver_pairs = 0;   // in the Verlet lists
   std::size_t slots = 0;                          // candidate feature pairs
   std::size_t contacts = 0;                       // active sub-contacts this step
-  double elastic = 0.0;                           // J, stored in the springs now
   double dissipated = 0.0;                        // J, dissipated this step
 };
 
@@ -39,6 +38,8 @@ class ContactEngine {
   void force_rebuild() { must_rebuild_ = true; }
 
   const ContactStats& stats() const { return stats_; }
+  // J, stored in the springs of the active contacts now (from their histories: output steps only).
+  double elastic() const;
   const PairList& body_pairs() const { return body_list_; }
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }
@@ -62,6 +63,9 @@ class ContactEngine {
   std::vector<PosedBody> posed_;
   std::vector<std::uint32_t> listed_;      // bodies in some pair: the only ones posed each step
   std::vector<double> bounding_;           // m, scaled bounding radius per body
+  // m, per body, the farthest core point from the centre: gaps are core distances less the
+  // radii, so turning moves no feature farther than this times the chord (0 for a sphere).
+  std::vector<double> core_reach_;
   std::vector<double> radius_;             // m, scaled Minkowski radius per body
   CellList cells_;
   RebuildTrigger trigger_;
@@ -71,8 +75,6 @@ class ContactEngine {
   std::vector<Driver> drivers_at_build_;   // driver placements when the lists were built
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
-  std::vector<double> pair_elastic_, pair_dissipated_;
-  std::vector<int> pair_contacts_;
   ContactStats stats_;
 };
 

@@ -15,14 +15,15 @@
 namespace polydem {
 
 // The state of one slot, touched only where a contact is (or was) active; the slot's key
-// lives apart in PairList::features, the array every step scans.
-struct ContactSlot {
+// lives apart in PairList::features, the array every step scans. 128 bytes on a 64-byte
+// boundary: a contact's state is two cache lines, not three. Its last gap is history.gap.
+struct alignas(64) ContactSlot {
   ContactHistory history;     // N, N m: springs carried while the key lives
   Vec3 point = Vec3::Zero();  // m, last contact point: history hand-over, output
   Vec3 force = Vec3::Zero();  // N on i at the last step: output
   double fn = 0.0;            // N, last normal force
-  double gap = 0.0;           // m, last gap (negative: overlap)
 };
+static_assert(sizeof(ContactSlot) == 128, "ContactSlot: two cache lines");
 
 // Packs a contact key of one pair into an integer that orders slots deterministically.
 inline std::uint64_t feature_key(FeaturePair f) {
@@ -40,6 +41,7 @@ struct PairList {
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
+  std::vector<double> dissipated;          // J, per pair, this step (energy ledger)
 
   std::size_t size() const { return pairs.size(); }
   void resize_results() {
@@ -47,6 +49,7 @@ struct PairList {
     torque_i.assign(pairs.size(), Vec3::Zero());
     torque_j.assign(pairs.size(), Vec3::Zero());
     touching.assign(pairs.size(), 0);
+    dissipated.assign(pairs.size(), 0.0);
   }
 };
 

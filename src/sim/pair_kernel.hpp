@@ -72,7 +72,6 @@ double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t
 
 struct PairTotals {
   Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
-  double elastic = 0.0;      // J stored in the pair's springs
   double dissipated = 0.0;   // J dissipated this step, less what patch weight changes added
   int contacts = 0;
 };
@@ -127,8 +126,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     // The slot's state is read and written below, after the pair's other candidates: fetch it now.
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
-    __builtin_prefetch(state + 64, 1);
-    __builtin_prefetch(state + sizeof(ContactSlot) - 1, 1);  // 136 bytes: up to three lines
+    __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if (was_touching || !scratch.found.empty())
@@ -149,11 +147,9 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     slot.point = g.point;
     slot.force = f.force;
     slot.fn = f.fn;
-    slot.gap = g.gap;
     totals.force_i += f.force;
     totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
     totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
-    totals.elastic += f.elastic;
     totals.dissipated += f.dissipated - f.patch;  // the patch share is not conservative (law.hpp)
   }
   totals.contacts = int(scratch.found.size());

@@ -68,7 +68,7 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
         c.force += slot.force;
         // force = fn n + ft with ft normal to n, so |ft| follows without storing n
         c.ft += std::sqrt(std::max(slot.force.squaredNorm() - slot.fn * slot.fn, 0.0));
-        c.overlap = std::max(c.overlap, -slot.gap);
+        c.overlap = std::max(c.overlap, -slot.history.gap);
         c.point += slot.point * std::max(slot.fn, 1e-300);
         weight += std::max(slot.fn, 1e-300);
         c.type = int(list.features[s].type);

@@ -98,7 +98,7 @@ EnergyRow Simulation::energy() const {
     e.rotational += 0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum();
     mass_moment += bodies.mass[b] * bodies.position[b];
   }
-  e.elastic = engine_->stats().elastic;
+  e.elastic = engine_->elastic();
   e.dissipated = ledger.dissipated;
   e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;

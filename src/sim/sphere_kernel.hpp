@@ -5,8 +5,9 @@
 
 namespace polydem {
 
-inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
-                                     PairList& list, std::uint32_t k) {
+// Always inlined into the pair loop: the totals go straight into the list, not through memory.
+[[gnu::always_inline]] inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt,
+                                                            const BodyView& bodies, PairList& list, std::uint32_t k) {
   PairTotals totals;
   if (list.slot_begin[k] == list.slot_begin[k + 1]) return totals;  // out of reach at the rebuild
   const BodyPair p = list.pairs[k];
@@ -44,11 +45,9 @@ inline PairTotals sphere_pair_forces(const LawParams& law, double band, double d
   slot.point = point;
   slot.force = f.force;
   slot.fn = f.fn;
-  slot.gap = gap;
   totals.force_i = f.force;
   totals.torque_i = arm_i.cross(f.force) + f.moment;
   totals.torque_j = -(arm_j.cross(f.force) + f.moment);
-  totals.elastic = f.elastic;
   totals.dissipated = f.dissipated;
   totals.contacts = 1;
   return totals;

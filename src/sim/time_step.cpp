@@ -207,7 +207,7 @@ std::string OverlapWatch::check(const PairList& body_pairs, const PairList& driv
       const BodyPair& p = list->pairs[k];
       const double r = with_driver ? radius_[p.i] : std::min(radius_[p.i], radius_[p.j]);  // m
       for (std::uint32_t s = list->slot_begin[k]; s < list->slot_begin[k + 1]; ++s) {
-        const double overlap = -list->slots[s].gap;  // m
+        const double overlap = -list->slots[s].history.gap;  // m
         if (!list->active[s] || overlap <= kOverlapFraction * r) continue;
         warned_ = true;
         const std::string partner = with_driver ? "driver '" + drivers[p.j].spec.name + "'" : format("body %u", p.j);
