@@ -158,10 +158,9 @@ inline double cohesion_potential(double fc_w, double dncut, double dn) {
 // `ft_max`.
 inline Vec3 tangential_dashpot(const Vec3& vt, double nu_t_w, double& ft_max, double& dissipated, double dt) {
   Vec3 damper = -nu_t_w * vt;
-  const double size2 = damper.squaredNorm();
-  if (size2 > ft_max * ft_max) damper *= ft_max / std::sqrt(size2);
-  const double size = std::min(std::sqrt(size2), ft_max);
-  ft_max -= size;
+  const double size = damper.norm();  // N
+  if (size > ft_max) damper *= ft_max / size;
+  ft_max -= std::min(size, ft_max);
   dissipated -= damper.dot(vt) * dt;
   return damper;
 }
@@ -268,7 +267,7 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
   h.weight = w;
   out.force = out.fn * k.normal + h.ft;
   if (law.tangential_damping) out.force += damper;
-  out.elastic = stored_energy(law, h);  // dead code in the pair kernels, which read it from the slots on output steps
+  out.elastic = stored_energy(law, h);  // for callers of one contact: the pair kernels leave it unread (inlined: no cost)
   return out;
 }
 
