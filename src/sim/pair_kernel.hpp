@@ -46,8 +46,8 @@ struct FoundContact {
 // that appears at the band edge has w = 0, so forces stay continuous.
 inline void patch_weights(const std::vector<FoundContact>& found, double band,
                           std::vector<double>& weight) {
-  if (found.size() == 1) { weight.assign(1, 1.0); return; }  // the common lone contact
-  weight.resize(found.size());
+  weight.resize(found.size());  // within its capacity after the first pairs: no allocation
+  if (found.size() == 1) { weight[0] = 1.0; return; }  // the common lone contact
   double total = 0.0;
   for (std::size_t k = 0; k < found.size(); ++k) {
     weight[k] = band - found[k].geometry.gap;
