@@ -7,9 +7,7 @@ namespace polydem {
 double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                          const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
                          const LawParams* law) {
-  int still_active = 0;
-  for (const FoundContact& c : found) still_active += list.active[c.slot];
-  if (still_active == was_active && still_active == int(found.size())) return 0.0;  // same contacts: keys keep history
+  if (same_contacts(list, was_active, found)) return 0.0;  // keys keep their history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
   // Contacts that start now (no history of their own) and those that just ended.

@@ -63,6 +63,15 @@ inline void patch_weights(const std::vector<FoundContact>& found, double band,
 // spring), matched closest pair first; each ended slot gives its history once. Beyond
 // kMaxHandOver changes in one step for one pair, the rest start from zero.
 constexpr int kMaxHandOver = 32;
+// True when the pair touches through the same slots as at the last step (`was_active` of them):
+// nothing to hand over, the common case of a resting contact. Inline: every touching pair asks.
+inline bool same_contacts(const PairList& list, int was_active, const std::vector<FoundContact>& found) {
+  if (was_active != int(found.size())) return false;
+  for (const FoundContact& c : found)
+    if (!list.active[c.slot]) return false;
+  return true;
+}
+
 // `was_active`: how many slots of the pair were active before this step. Returns J, the
 // energy released by the contacts that ended with no successor (law.hpp, released_energy;
 // 0 without a law).
@@ -129,7 +138,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
-  if (was_touching || !scratch.found.empty())
+  if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
     totals.dissipated = hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on, &law);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
