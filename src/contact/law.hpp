@@ -97,9 +97,33 @@ struct ContactForce {
   Vec3 force;         // N, on i (j gets the opposite)
   Vec3 moment;        // N m, rolling resistance moment on i (j gets the opposite)
   double fn;          // N, normal force (positive repulsive)
-  double dissipated;  // J, dissipated this step by the dashpot, sliding and rolling slip
+  double dissipated;  // J, dissipated this step by the dashpots, cohesion, sliding and rolling slip
   double elastic;     // J, stored in the normal, cohesion, tangential and rolling springs
   double patch = 0.0; // J, added to the springs this step by the change of the patch weight
+  double sliding = 0.0;  // J, the Coulomb slip's share of `dissipated` (tangential springs let go included)
+  double rolling = 0.0;  // J, the rolling slip's share of `dissipated` (rolling springs let go included)
+};
+
+// J over a step, by mechanism, summed per pair and over the run (energy.csv): `net` is the
+// ledger's `dissipated` (all dissipation less the patch work), `sliding` and `rolling` are
+// shares of it, `patch` what patch weight changes added to the springs.
+struct EnergyParts {
+  double net = 0.0, sliding = 0.0, rolling = 0.0, patch = 0.0;
+  EnergyParts& operator+=(const EnergyParts& o) {
+    net += o.net; sliding += o.sliding; rolling += o.rolling; patch += o.patch;
+    return *this;
+  }
+};
+
+inline EnergyParts energy_parts(const ContactForce& f) { return {f.dissipated - f.patch, f.sliding, f.rolling, f.patch}; }
+
+// J, stored by a contact, per spring (energy.csv's elastic_* columns; their sum is `elastic`).
+struct StoredParts {
+  double normal = 0.0, tangential = 0.0, rolling = 0.0;  // normal: spring and cohesion
+  StoredParts& operator+=(const StoredParts& o) {
+    normal += o.normal; tangential += o.tangential; rolling += o.rolling;
+    return *this;
+  }
 };
 
 namespace law_slot {
@@ -192,37 +216,47 @@ inline double cohesion_dissipated(const LawParams& law, double w0, double dn0, d
 
 // J, stored in the normal, cohesion, tangential and rolling springs of a contact whose last
 // step left h (0 for one with no last step): the ledger's `elastic`, wanted on output steps only.
-inline double stored_energy(const LawParams& law, const ContactHistory& h) {
+inline StoredParts stored_parts(const LawParams& law, const ContactHistory& h) {
   const double w = h.weight;
   const double overlap = std::max(-h.gap, 0.0);  // m
   const double spring = w * law.kn * overlap;    // N
-  double elastic = 0.5 * spring * overlap;
-  if (law.cohesion) elastic += law_slot::cohesion_potential(w * law.fc, law.dncut, h.gap);
-  if (law.mu > 0.0 && w * law.kt > 0.0) elastic += law_slot::spring_energy(h.ft, w * law.kt);
-  if (law.rolling) elastic += law_slot::spring_energy(h.mr, w * law.kr);
-  return elastic;
+  StoredParts e;
+  e.normal = 0.5 * spring * overlap;
+  if (law.cohesion) e.normal += law_slot::cohesion_potential(w * law.fc, law.dncut, h.gap);
+  if (law.mu > 0.0 && w * law.kt > 0.0) e.tangential = law_slot::spring_energy(h.ft, w * law.kt);
+  if (law.rolling) e.rolling = law_slot::spring_energy(h.mr, w * law.kr);
+  return e;
+}
+inline double stored_energy(const LawParams& law, const ContactHistory& h) {
+  const StoredParts e = stored_parts(law, h);
+  return e.normal + e.tangential + e.rolling;
 }
 
 // J, dissipated by a contact that ends (its last state in h): the dashpot's last force over
 // the way out to zero overlap (with the clamp on, all the normal spring held), cohesion out to
-// the band edge, and the energy of the tangential and rolling springs. Nothing for a contact
-// with no last step (h.gap = kNoGap, fd = 0) but its springs.
-inline double released_energy(const LawParams& law, const ContactHistory& h) {
-  double released = 0.5 * h.fd * std::min(h.gap, 0.0) + law_slot::spring_energy(h.ft, h.weight * law.kt) +
-                    law_slot::spring_energy(h.mr, h.weight * law.kr);
-  if (law.cohesion) released += law_slot::cohesion_dissipated(law, h.weight, std::min(h.gap, law.dncut), h.weight, law.dncut);
-  return released;
+// the band edge, and the energy of the tangential (`sliding`) and rolling springs. Nothing for
+// a contact with no last step (h.gap = kNoGap, fd = 0) but its springs.
+inline EnergyParts released_energy(const LawParams& law, const ContactHistory& h) {
+  EnergyParts e;
+  e.sliding = law_slot::spring_energy(h.ft, h.weight * law.kt);
+  e.rolling = law_slot::spring_energy(h.mr, h.weight * law.kr);
+  e.net = 0.5 * h.fd * std::min(h.gap, 0.0) + e.sliding + e.rolling;
+  if (law.cohesion) e.net += law_slot::cohesion_dissipated(law, h.weight, std::min(h.gap, law.dncut), h.weight, law.dncut);
+  return e;
 }
 
 [[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k, ContactHistory& h,
                                   double dt) {
   const double w = k.weight;
   const double kt_w = w * law.kt, kr_w = w * law.kr;
-  ContactForce out{Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, 0.0, 0.0};
+  ContactForce out{Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const double reach = law.cohesion ? law.dncut : 0.0;  // m, beyond it the pair does not interact
   if (k.dn >= reach) {
     // Out of reach: the springs let go and their energy is lost (the caller resets history anyway).
-    out.dissipated = released_energy(law, h);
+    const EnergyParts released = released_energy(law, h);
+    out.dissipated = released.net;
+    out.sliding = released.sliding;
+    out.rolling = released.rolling;
     h = ContactHistory{};
     return out;
   }
@@ -254,12 +288,14 @@ inline double released_energy(const LawParams& law, const ContactHistory& h) {
       const double nu_t_w = w * (k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff));  // N s/m
       damper = law_slot::tangential_dashpot(vt, nu_t_w, ft_max, out.dissipated, dt);
     }
-    out.dissipated += law_slot::tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt);
+    out.sliding = law_slot::tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt);
+    out.dissipated += out.sliding;
   }
   if (law.rolling) {
     const double mr_max = law.mur * k.lever * fp;  // N m
     out.patch += law_slot::reweighted(h.mr, law.kr, h.weight, w);
-    out.dissipated += law_slot::capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
+    out.rolling = law_slot::capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
+    out.dissipated += out.rolling;
     out.moment = h.mr;
   }
   h.fd = fd;

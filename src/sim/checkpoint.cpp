@@ -10,10 +10,16 @@ namespace polydem {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '4'};  // 04: last dashpot force, gap, weight per contact
-// Format 03 differs only by those three fields, which only the energy ledger reads: it still
-// resumes, its contacts' ledgers restarting as new contacts (forces and motion unchanged).
+constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '5'};  // 05: the ledger's dissipation by mechanism
+// Older formats still resume, with what only the energy ledger reads missing (forces and
+// motion unchanged): 04 has no ledger shares (all its dissipation counts as dashpot); 03 has
+// neither those nor the last dashpot force, gap and weight per contact (its contacts' ledgers
+// restart as new contacts).
+constexpr char kMagic04[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '4'};
 constexpr char kMagic03[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '3'};
+// Bytes of EnergyLedger up to its format-05 shares: what formats 03 and 04 hold.
+constexpr std::size_t kLedgerBytes04 = 3 * sizeof(double) + sizeof(Vec3);
+static_assert(sizeof(EnergyLedger) == kLedgerBytes04 + 3 * sizeof(double), "EnergyLedger: shares after the format-04 fields");
 
 struct Writer {
   std::ofstream out;
@@ -145,9 +151,10 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   if (!r.in) throw InputError(path + ": cannot open checkpoint");
   char magic[sizeof(kMagic)];
   const bool read = bool(r.in.read(magic, sizeof(magic)));
-  r.last_step_fields = !(read && std::memcmp(magic, kMagic03, sizeof(kMagic03)) == 0);
-  if (!read || (r.last_step_fields && std::memcmp(magic, kMagic, sizeof(kMagic)) != 0))
+  const auto is = [&](const char (&m)[8]) { return read && std::memcmp(magic, m, sizeof(m)) == 0; };
+  if (!is(kMagic) && !is(kMagic04) && !is(kMagic03))
     throw InputError(path + ": not a polydem checkpoint of this version (format " + std::string(kMagic + 6, 2) + ")");
+  r.last_step_fields = !is(kMagic03);
   std::int64_t step = 0;
   double dt = 0.0;
   r.pod(step);
@@ -156,7 +163,8 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
     throw InputError(path + ": checkpoint time step " + std::to_string(dt) + " s differs from the scene's " +
                      std::to_string(sim.dt()) + " s (was it written for another scene?)");
   sim.set_step_index(step);
-  r.pod(sim.ledger);
+  sim.ledger = EnergyLedger{};
+  if (!r.in.read(reinterpret_cast<char*>(&sim.ledger), is(kMagic) ? sizeof(EnergyLedger) : kLedgerBytes04)) r.fail();
   Bodies& b = sim.bodies;
   const std::size_t n = b.size();
   r.array(b.position, n); r.array(b.orientation, n); r.array(b.velocity, n); r.array(b.angular_velocity, n);

@@ -287,7 +287,7 @@ static void all_pair_forces(PairList& list, const Kernel& kernel) {
     list.torque_i[k] = t.torque_i;
     list.torque_j[k] = t.torque_j;
     list.touching[k] = std::uint16_t(t.contacts);
-    list.dissipated[k] = t.dissipated;
+    list.energy[k] = t.energy;
   };
   if (n < kParallelMinItems) {  // small scenes: no thread wake-up
     PairScratch scratch;
@@ -310,12 +310,12 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
     pose(bodies);
   const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
                       bodies.angular_velocity.data(), bodies.mass.data()};
-  stats_.dissipated = 0.0;
+  stats_.energy = EnergyParts{};
   stats_.contacts = 0;
   // Energies are summed serially in pair order: repeatable whatever the thread count.
   auto add_totals = [this](const PairList& list) {
     for (std::size_t k = 0; k < list.size(); ++k) {
-      stats_.dissipated += list.dissipated[k];
+      stats_.energy += list.energy[k];
       stats_.contacts += list.touching[k];
     }
   };
@@ -343,17 +343,21 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
 
 // Sums per pair, then pairs in order onto `total`, as the pair kernels summed it when they
 // returned it every step: the same bits.
-static void add_stored_energy(const PairList& list, const LawParams& law, double& total) {
+static void add_stored_energy(const PairList& list, const LawParams& law, ContactEngine::Elastic& total) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     double pair = 0.0;  // J
-    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.active[s]) pair += stored_energy(law, list.slots[s].history);
-    total += pair;
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
+      if (!list.active[s]) continue;
+      const StoredParts e = stored_parts(law, list.slots[s].history);
+      pair += e.normal + e.tangential + e.rolling;
+      total.parts += e;
+    }
+    total.total += pair;
   }
 }
 
-double ContactEngine::elastic() const {
-  double total = 0.0;  // J
+ContactEngine::Elastic ContactEngine::elastic() const {
+  Elastic total;  // J
   add_stored_energy(body_list_, settings_.particle, total);
   add_stored_energy(driver_list_, settings_.driver, total);
   return total;

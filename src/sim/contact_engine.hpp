@@ -23,7 +23,7 @@ struct ContactStats {
   std::size_t body_pairs = 0, driver_pairs = 0;   // in the Verlet lists
   std::size_t slots = 0;                          // candidate feature pairs
   std::size_t contacts = 0;                       // active sub-contacts this step
-  double dissipated = 0.0;                        // J, dissipated this step
+  EnergyParts energy;                             // J, dissipated this step, by mechanism
 };
 
 class ContactEngine {
@@ -39,7 +39,11 @@ class ContactEngine {
 
   const ContactStats& stats() const { return stats_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps only).
-  double elastic() const;
+  struct Elastic {
+    double total = 0.0;  // summed per pair as the parts are, in pair order
+    StoredParts parts;
+  };
+  Elastic elastic() const;
   const PairList& body_pairs() const { return body_list_; }
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }

@@ -4,10 +4,10 @@
 
 namespace polydem {
 
-double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
+EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                          const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
                          const LawParams* law) {
-  if (same_contacts(list, was_active, found)) return 0.0;  // keys keep their history
+  if (same_contacts(list, was_active, found)) return {};  // keys keep their history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
   // Contacts that start now (no history of their own) and those that just ended.
@@ -32,7 +32,7 @@ double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t
     fresh[best_f] = fresh[--n_fresh];
     ended[best_e] = ended[--n_ended];
   }
-  double released = 0.0;  // J
+  EnergyParts released;  // J
   for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
     const bool on = now_on[s - slot_begin] != 0;
     if (list.active[s] && !on) {

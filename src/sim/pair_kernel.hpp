@@ -75,13 +75,13 @@ inline bool same_contacts(const PairList& list, int was_active, const std::vecto
 // `was_active`: how many slots of the pair were active before this step. Returns J, the
 // energy released by the contacts that ended with no successor (law.hpp, released_energy;
 // 0 without a law).
-double hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
+EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                          const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
                          const LawParams* law = nullptr);
 
 struct PairTotals {
   Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
-  double dissipated = 0.0;   // J dissipated this step, less what patch weight changes added
+  EnergyParts energy;        // J dissipated this step (net: less what patch weight changes added)
   int contacts = 0;
 };
 
@@ -139,7 +139,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   }
   drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
   if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
-    totals.dissipated = hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on, &law);
+    totals.energy = hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on, &law);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
   const Vec3 xi = a.position, xj = partner.center(p.j);
@@ -159,7 +159,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     totals.force_i += f.force;
     totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
     totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
-    totals.dissipated += f.dissipated - f.patch;  // the patch share is not conservative (law.hpp)
+    totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
   }
   totals.contacts = int(scratch.found.size());
   return totals;

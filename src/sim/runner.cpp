@@ -148,7 +148,9 @@ class OutputWriter {
     if (!sim.scene().output.csv_every) return;
     energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
         std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
-                                 "driver_work", "contacts", "external_work"}, !o.resume.empty());
+                                 "driver_work", "contacts", "external_work", "elastic_normal", "elastic_tangential",
+                                 "elastic_rolling", "dissipated_dashpot", "dissipated_sliding", "dissipated_rolling",
+                                 "patch_work"}, !o.resume.empty());
     if (sim.external()) fluid_ = std::make_unique<FluidSeries>(sim, dir_ + "/fluid.csv", !o.resume.empty());
     probes_ = std::make_unique<Probes>(sim, dir_, !o.resume.empty());  // output.probes: flow.csv, angle.csv
     for (std::size_t j = 0; j < sim.drivers.size(); ++j)  // force and torque the particles exert on it
@@ -181,7 +183,9 @@ class OutputWriter {
     const EnergyRow e = sim_.energy();
     if (fluid_) fluid_->row();
     energy_->row({sim_.time(), e.kinetic, e.rotational, e.elastic, e.dissipated, e.gravity_work, e.driver_work,
-                  double(e.contacts), e.external_work});
+                  double(e.contacts), e.external_work, e.elastic_parts.normal, e.elastic_parts.tangential,
+                  e.elastic_parts.rolling, e.dissipated_dashpot, e.dissipated_sliding, e.dissipated_rolling,
+                  e.patch_work});
     for (std::size_t j = 0; j < driver_series_.size(); ++j) {
       const Driver& d = sim_.drivers[j];
       const Vec3 x = sim_.drivers.center(std::uint32_t(j));

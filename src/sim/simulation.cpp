@@ -82,7 +82,11 @@ void Simulation::step() {
     // of the last step's reaction and half of this step's, on this step's driver motion.
     driver_work_half();
     engine_->compute(bodies, drivers, dt_);
-    ledger.dissipated += engine_->stats().dissipated;
+    const EnergyParts& step = engine_->stats().energy;
+    ledger.dissipated += step.net;
+    ledger.sliding += step.sliding;
+    ledger.rolling += step.rolling;
+    ledger.patch_work += step.patch;
     driver_work_half();
   }
   kick(bodies, 0.5 * dt_, rotors_);
@@ -90,7 +94,7 @@ void Simulation::step() {
 }
 
 EnergyRow Simulation::energy() const {
-  EnergyRow e{0, 0, 0, 0, 0, 0, 0, 0};
+  EnergyRow e{};
   Vec3 mass_moment = Vec3::Zero();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     e.kinetic += 0.5 * bodies.mass[b] * bodies.velocity[b].squaredNorm();
@@ -98,8 +102,15 @@ EnergyRow Simulation::energy() const {
     e.rotational += 0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum();
     mass_moment += bodies.mass[b] * bodies.position[b];
   }
-  e.elastic = engine_->elastic();
+  const ContactEngine::Elastic elastic = engine_->elastic();
+  e.elastic = elastic.total;
+  e.elastic_parts = elastic.parts;
   e.dissipated = ledger.dissipated;
+  e.dissipated_sliding = ledger.sliding;
+  e.dissipated_rolling = ledger.rolling;
+  e.patch_work = ledger.patch_work;
+  // the dashpots (normal, tangential) and cohesion: what the other two mechanisms leave
+  e.dissipated_dashpot = ledger.dissipated + ledger.patch_work - ledger.sliding - ledger.rolling;
   e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;
   e.external_work = ledger.external_work;

@@ -22,12 +22,19 @@ struct EnergyLedger {
   double driver_work = 0.0;   // done by moving drivers on the particles
   double external_work = 0.0; // done by drag and fluid forces on the particles
   Vec3 initial_mass_moment = Vec3::Zero();  // kg m, sum m x at t = 0: gravity work = m g . dx
+  // Shares of `dissipated` (checkpoint format 05 on):
+  double sliding = 0.0;     // by Coulomb slip, and tangential springs let go
+  double rolling = 0.0;     // by rolling slip, and rolling springs let go
+  double patch_work = 0.0;  // added to the springs by patch weight changes (taken off `dissipated`)
 };
 
 struct EnergyRow {
   double kinetic, rotational, elastic, dissipated, gravity_work, driver_work;
   std::size_t contacts;
   double external_work;  // J, by drag and fluid forces
+  StoredParts elastic_parts;  // J, `elastic` per spring
+  double dissipated_dashpot, dissipated_sliding, dissipated_rolling;  // J, `dissipated` + patch_work by mechanism
+  double patch_work;          // J
 };
 
 class Simulation {

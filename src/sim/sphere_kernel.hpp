@@ -21,7 +21,7 @@ namespace polydem {
   ContactSlot& slot = list.slots[s];
   if (dist2 >= reach * reach || dist2 == 0.0) {
     if (list.active[s]) {  // the contact ends: its springs let go
-      totals.dissipated = released_energy(law, slot.history);
+      totals.energy = released_energy(law, slot.history);
       list.active[s] = 0;
       slot.history = ContactHistory{};
       slot.fn = 0.0;
@@ -48,7 +48,7 @@ namespace polydem {
   totals.force_i = f.force;
   totals.torque_i = arm_i.cross(f.force) + f.moment;
   totals.torque_j = -(arm_j.cross(f.force) + f.moment);
-  totals.dissipated = f.dissipated;
+  totals.energy = energy_parts(f);
   totals.contacts = 1;
   return totals;
 }

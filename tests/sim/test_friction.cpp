@@ -42,10 +42,20 @@ TEST_CASE("a block on an incline slides at g (sin theta - mu cos theta) above it
   const double mu = 0.3, theta = 30.0 * kPi / 180.0;  // tan(30 deg) = 0.58 > mu; tips only above 45 deg
   Simulation sim = incline(theta, mu);
   run_for(sim, 0.05);  // settle the normal contact
-  const double v1 = sim.bodies.velocity[0].x(), t1 = sim.time();
+  const double v1 = sim.bodies.velocity[0].x(), t1 = sim.time(), x1 = sim.bodies.position[0].x();
+  const EnergyRow e1 = sim.energy();
   run_for(sim, 0.1);
   const double a = (sim.bodies.velocity[0].x() - v1) / (sim.time() - t1);
   CHECK(a == Approx(kG * (std::sin(theta) - mu * std::cos(theta))).epsilon(0.01));
+  // energy.csv's shares: sliding takes mu m g cos(theta) per metre slid, the settled normal
+  // contact's dashpot nothing, and there is no rolling law.
+  const EnergyRow e2 = sim.energy();
+  const double slid = sim.bodies.position[0].x() - x1;  // m
+  const double m = sim.bodies.mass[0];
+  CHECK(e2.dissipated_sliding - e1.dissipated_sliding == Approx(mu * m * kG * std::cos(theta) * slid).epsilon(0.01));
+  CHECK(std::abs(e2.dissipated_dashpot - e1.dissipated_dashpot) < 1e-3 * (e2.dissipated_sliding - e1.dissipated_sliding));
+  CHECK(e2.dissipated_rolling == 0.0);
+  CHECK(e2.elastic_parts.normal + e2.elastic_parts.tangential == Approx(e2.elastic).epsilon(1e-12));
 }
 
 TEST_CASE("rolling resistance stops a rolling sphere, without it the sphere rolls on", "[rolling]") {
@@ -60,15 +70,21 @@ TEST_CASE("rolling resistance stops a rolling sphere, without it the sphere roll
     Simulation sim(scene, library({sphere_shape(radius)}), {rolling});
     run_for(sim, 0.05);  // settle on the floor
     const double v_start = sim.bodies.velocity[0].x();
-    const double e_start = sim.energy().kinetic + sim.energy().rotational;
+    const EnergyRow start = sim.energy();
+    const double e_start = start.kinetic + start.rotational;
     run_for(sim, 0.7);
     const double x_stopped = sim.bodies.position[0].x();
     run_for(sim, 0.3);
-    const double e_end = sim.energy().kinetic + sim.energy().rotational;
+    const EnergyRow end = sim.energy();
+    const double e_end = end.kinetic + end.rotational;
+    const double by_rolling = end.dissipated_rolling - start.dissipated_rolling;  // J
     if (mur == 0.0) {
       CHECK(v_start > 0.19);
       CHECK(e_end == Approx(e_start).epsilon(1e-3));  // rolling without slip dissipates nothing
+      CHECK(by_rolling == 0.0);
     } else {
+      // energy.csv's shares: the rolling resistance took what the sphere lost, not sliding
+      CHECK(by_rolling + end.elastic_parts.rolling - start.elastic_parts.rolling == Approx(e_start - e_end).epsilon(0.01));
       // The rolling moment mur R fn decelerates rolling at 5/7 mur g: stops within v / (5/7 mur g) = 0.57 s.
       // Afterwards it may rock on the rolling spring, but it no longer travels (0.06 m if it rolled on).
       CHECK(std::abs(sim.bodies.position[0].x() - x_stopped) < 3e-4);

@@ -32,7 +32,28 @@ struct Budget {
   double input = 0.0;     // J, largest of gravity + driver work (+ initial energy) over the run
   double residual = 0.0;  // J, input - stored - dissipated at the end
   double worst = 0.0;     // J, largest |residual| over the run
+  EnergyRow last{};       // at the end
 };
+
+// Prints energy.csv's shares of `dissipated` and `elastic` at the end of a run, as fractions of the input.
+void print_shares(const char* name, const Budget& b) {
+  const EnergyRow& e = b.last;
+  std::printf("%s, shares of the input: dashpot %.4f, sliding %.4f, rolling %.4f, patch work %.4f; "
+              "elastic normal %.2e, tangential %.2e\n", name, e.dissipated_dashpot / b.input,
+              e.dissipated_sliding / b.input, e.dissipated_rolling / b.input, e.patch_work / b.input,
+              e.elastic_parts.normal / b.input, e.elastic_parts.tangential / b.input);
+}
+
+// The shares add up: elastic per spring to `elastic`, and all of them take part in a pour.
+void check_shares(const Budget& b) {
+  const EnergyRow& e = b.last;
+  CHECK(e.elastic_parts.normal + e.elastic_parts.tangential + e.elastic_parts.rolling ==
+        Approx(e.elastic).epsilon(1e-12));
+  CHECK(e.dissipated_dashpot > 0.1 * b.input);    // the dashpot takes most of a pour's energy
+  CHECK(e.dissipated_sliding > 0.01 * b.input);   // bodies slide on landing and in the pile
+  CHECK(e.patch_work != 0.0);                     // faces land on faces
+  CHECK(e.dissipated_rolling == 0.0);             // no rolling law
+}
 
 // Runs `seconds` and checks the balance every `every` steps, as energy.csv would.
 Budget run_budget(Simulation& sim, double seconds, int every = 100) {
@@ -48,6 +69,7 @@ Budget run_budget(Simulation& sim, double seconds, int every = 100) {
     b.input = std::max(b.input, initial + work);
     b.residual = work - (e.kinetic + e.rotational + e.elastic - initial) - e.dissipated;
     b.worst = std::max(b.worst, std::abs(b.residual));
+    b.last = e;
   }
   return b;
 }
@@ -102,6 +124,8 @@ TEST_CASE("energy budget: elastic frictionless spheres bouncing in a box close t
   std::printf("\n| case | quantity | answer | polydem | error |\n");
   // Nothing is dissipated: what is left is the O(dt^2) error of each contact's start and end.
   CHECK(sim.energy().dissipated == 0.0);
+  CHECK(sim.energy().dissipated_dashpot == 0.0);
+  CHECK(sim.energy().patch_work == 0.0);  // spheres: one contact per pair, weight 1
   CHECK(table_row("elastic spheres, 0.3 s", "residual J", 0.0, b.worst, b.input) < 1e-4);
 }
 
@@ -130,6 +154,8 @@ TEST_CASE("energy budget: mixed polyhedra poured into a box close to 0.5%", "[va
   const Budget b = box_fill_budget(0.0);
   std::printf("\n| case | quantity | answer | polydem | error |\n");
   CHECK(table_row("box fill, 250 polyhedra, 0.3 s", "residual J", 0.0, b.worst, b.input) < 5e-3);
+  print_shares("box fill", b);
+  check_shares(b);
 }
 
 TEST_CASE("energy budget: the tangential dashpot's work is counted", "[validation][energy][damping]") {
@@ -182,4 +208,6 @@ TEST_CASE("energy budget: a rotating drum of polyhedra closes to 0.5% with the d
   INFO(specs.size() << " bodies, driver work " << e.driver_work << " J of " << b.input << " J");
   CHECK(e.driver_work > 0.2 * b.input);  // the drum lifts the bed: a real share of the input
   CHECK(table_row("drum, 0.5 s", "residual J", 0.0, b.worst, b.input) < 5e-3);
+  print_shares("drum", b);
+  check_shares(b);
 }

@@ -28,6 +28,7 @@ print(rows[-1][0])
 PY
 )
     until=$(python3 -c "print($t_settled + $steps * $dt_line)")
+    rm -rf "$settled/run$threads"  # a resumed run appends to its folder's series: start clean
     "$bin" run tools/bench/$scene.yaml --out "$settled/run$threads" --threads $threads \
         --resume "$settled/settled.bin" --until "$until" 2> "$log"
     line=$(grep 'steps in' "$log")
