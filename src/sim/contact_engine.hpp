@@ -40,7 +40,7 @@ class ContactEngine {
   const ContactStats& stats() const { return stats_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps only).
   struct Elastic {
-    double total = 0.0;  // summed per pair as the parts are, in pair order
+    double total = 0.0;  // per pair, then pairs in order: the bits the pair kernels once summed
     StoredParts parts;
   };
   Elastic elastic() const;

@@ -5,8 +5,8 @@
 namespace polydem {
 
 EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
-                         const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
-                         const LawParams* law) {
+                              const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
+                              const LawParams* law) {
   if (same_contacts(list, was_active, found)) return {};  // keys keep their history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;

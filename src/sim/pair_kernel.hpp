@@ -76,8 +76,8 @@ inline bool same_contacts(const PairList& list, int was_active, const std::vecto
 // energy released by the contacts that ended with no successor (law.hpp, released_energy;
 // 0 without a law).
 EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
-                         const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
-                         const LawParams* law = nullptr);
+                              const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
+                              const LawParams* law = nullptr);
 
 struct PairTotals {
   Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
