@@ -127,17 +127,20 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     return totals;  // most listed pairs, at a glance
   scratch.found.clear();
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
+  bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
   for (std::uint32_t s = s0; s < s1; ++s) {
     if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
     ContactPoint cp;
     if (!partner.contact(a, p.j, list.features[s], band, cp)) continue;
     scratch.found.push_back({s, cp});
+    shadowing |= shadows(list.features[s].type);
+    shadowable |= may_be_shadowed(list.features[s].type);
     // The slot's state is read and written below, after the pair's other candidates: fetch it now.
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
   }
-  drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
+  if (shadowing && shadowable) drop_shadowed(list, a.radius + partner.radius(p.j), scratch);  // rare: nothing to drop otherwise
   if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
     totals.dissipated = hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on, &law);
   if (scratch.found.empty()) return totals;
