@@ -153,25 +153,29 @@ template <class Partner>
 [[gnu::noinline]] void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, PairTotals& totals) {
   const BodyPair p = list.pairs[k];
-  const Vec3 xi = bodies.position[p.i], xj = partner.center(p.j);
-  const RigidMotion mi{bodies.velocity[p.i], bodies.angular_velocity[p.i], xi}, mj = partner.motion(p.j);
-  const Vec3 w_rel = mi.angular_velocity - mj.angular_velocity;  // rad/s
+  const Vec3 xi = bodies.position[p.i];
+  const RigidMotion mj = partner.motion(p.j);
+  const Vec3 w_rel = bodies.angular_velocity[p.i] - mj.angular_velocity;  // rad/s
+  // m/s, i's velocity less j's at i's centre: at a lever r from it they differ by v_centre + w_rel x r.
+  const Vec3 v_centre = bodies.velocity[p.i] - mj.at(xi);
   const double m_eff = partner.m_eff(p.i, p.j);
   const double nu = pair_damping(law, m_eff), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
-    ContactKinematics kin{g.normal, g.gap, mi.at(g.point) - mj.at(g.point), w_rel, m_eff,
-                          law.rolling ? (g.point - xi).norm() : 0.0, scratch.weight[c], nu, nu_t};
+    const Vec3 lever = g.point - xi;  // m, from i's centre
+    ContactKinematics kin{g.normal, g.gap, v_centre + w_rel.cross(lever), w_rel, m_eff,
+                          law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t};
     const ContactForce f = contact_force(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;
     slot.fn = f.fn;
     totals.force_i += f.force;
-    totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
-    totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
+    totals.torque_i += lever.cross(f.force) + f.moment;
     totals.dissipated += f.dissipated - f.patch;  // the patch share is not conservative (law.hpp)
   }
+  // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
+  totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());
 }
 
