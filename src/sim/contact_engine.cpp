@@ -198,9 +198,13 @@ void ContactEngine::pose(const Bodies& bodies) {
     const std::uint32_t b = listed_[e];
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
-    const Mat3 rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
-    pose_vertices(s, bodies.scale[b], bodies.position[b], rotation, v);
-    posed_[b] = PosedBody{&s, v, rotation, bodies.position[b], s.radius * bodies.scale[b]};
+    PosedBody& posed = posed_[b];  // filled in place: no temporary pose to copy
+    posed.rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
+    pose_vertices(s, bodies.scale[b], bodies.position[b], posed.rotation, v);
+    posed.shape = &s;
+    posed.vertices = v;
+    posed.position = bodies.position[b];
+    posed.radius = s.radius * bodies.scale[b];
   });
 }
 
