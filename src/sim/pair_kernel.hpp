@@ -134,9 +134,12 @@ template <class Partner>
   bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
   for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
     if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
-    ContactPoint cp;
-    if (!partner.contact(a, p.j, list.features[s], band, cp)) continue;
-    scratch.found.push_back({s, cp});
+    FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
+    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
+      scratch.found.pop_back();
+      continue;
+    }
+    next.slot = s;
     shadowing |= shadows(list.features[s].type);
     shadowable |= may_be_shadowed(list.features[s].type);
     // The slot's state is read and written by the law, after the pair's other candidates: fetch it now.
