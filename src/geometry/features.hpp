@@ -1,6 +1,7 @@
 #pragma once
 // Contact geometry between spheropolyhedra: closest-feature queries (vertex, edge, face) on the
 // core polyhedra, with the Minkowski radii added apart (SPEC "Contact geometry").
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -49,8 +50,14 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
 // never inverts: a vertex below the face plane (cores interpenetrating) keeps pushing out
 // through the face it is least deep under, down to a depth rA + rB, past which the pair is
 // rejected (Rockable instead takes |distance| and flips the normal, pushing the vertex deeper).
-bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
-                     ContactPoint& out);
+// One kernel per PairType (kernels.cpp), called through the table: inline, the per-step loop
+// makes one call per candidate, not two.
+using FeatureKernel = bool (*)(const PosedBody&, const PosedBody&, int, int, double, ContactPoint&);
+extern const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels;
+inline bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
+                            ContactPoint& out) {
+  return kFeatureKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);
+}
 
 // Verlet candidates: appends every feature pair whose features (as point sets, boundary
 // included, no interior rule) are closer than rA + rB + range, in a deterministic order

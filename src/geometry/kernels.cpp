@@ -11,8 +11,6 @@
 namespace polydem {
 namespace {
 
-using Kernel = bool (*)(const PosedBody&, const PosedBody&, int, int, double, ContactPoint&);
-
 // Distance between core edges, relative to the longer edge, under which the cores count as
 // crossing and the edge-edge normal comes from the centres instead of the closest points.
 constexpr double kCrossingTolerance = 1e-12;
@@ -160,22 +158,17 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
 
 // Evaluates kernel K with the bodies swapped (edge_vertex from vertex_edge, face_vertex from
 // vertex_face) and turns the normal back to point from B to A; gap and point are symmetric.
-template <Kernel K>
+template <FeatureKernel K>
 bool swapped(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
   if (!K(B, A, b, a, max_gap, out)) return false;
   out.normal = -out.normal;
   return true;
 }
 
-// Indexed by PairType; filled once at compile time, no virtual call per contact.
-constexpr std::array<Kernel, kPairTypeCount> kKernels = {
-    vertex_vertex, vertex_edge, swapped<vertex_edge>, vertex_face, swapped<vertex_face>, edge_edge};
-
 }  // namespace
 
-bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
-                     ContactPoint& out) {
-  return kKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);
-}
+// Indexed by PairType; filled once at compile time, no virtual call per contact.
+const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = {
+    vertex_vertex, vertex_edge, swapped<vertex_edge>, vertex_face, swapped<vertex_face>, edge_edge};
 
 }  // namespace polydem

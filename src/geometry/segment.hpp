@@ -75,14 +75,20 @@ inline double segment_segment_distance_sq(const Vec3& p1, const Vec3& d1, const 
 // True when p projects strictly inside the convex polygon `face` (indices into `vertices`,
 // counter-clockwise around the outward normal n): p is left of every edge by more than
 // kInteriorMargin times the edge length.
+// Written out in scalars, each edge from the previous end (the vertex-face kernel's hot loop:
+// Eigen's 3-vectors spend half of it in shuffles); the same operations in the same order as
+// e.cross(p - v0).dot(n) <= kInteriorMargin * e.squaredNorm(), so the same bits.
 inline bool projects_inside_polygon(const Vec3& p, const Vec3* vertices, const std::vector<int>& face,
                                     const Vec3& n) {
-  const std::size_t count = face.size();
-  for (std::size_t k = 0; k < count; ++k) {
-    const Vec3& v0 = vertices[face[k]];
-    const Vec3& v1 = vertices[face[k + 1 == count ? 0 : k + 1]];
-    const Vec3 e = v1 - v0;
-    if (e.cross(p - v0).dot(n) <= kInteriorMargin * e.squaredNorm()) return false;
+  const Vec3& last = vertices[face.back()];
+  double x0 = last.x(), y0 = last.y(), z0 = last.z();  // m, the edge's first end
+  for (const int v : face) {
+    const double x1 = vertices[v].x(), y1 = vertices[v].y(), z1 = vertices[v].z();
+    const double ex = x1 - x0, ey = y1 - y0, ez = z1 - z0;                    // m, edge
+    const double wx = p.x() - x0, wy = p.y() - y0, wz = p.z() - z0;          // m, from its first end to p
+    const double cx = ey * wz - ez * wy, cy = ez * wx - ex * wz, cz = ex * wy - ey * wx;  // m^2, e x w
+    if (cx * n.x() + cy * n.y() + cz * n.z() <= kInteriorMargin * (ex * ex + ey * ey + ez * ez)) return false;
+    x0 = x1, y0 = y1, z0 = z1;
   }
   return true;
 }

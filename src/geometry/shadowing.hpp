@@ -10,6 +10,14 @@
 
 namespace polydem {
 
+// True for the pair types that shadow the other contacts of their vertex.
+inline bool shadows(PairType t) { return t == PairType::vertex_face || t == PairType::face_vertex; }
+
+// True for the pair types mark_shadowed may drop: a vertex against an edge or a vertex.
+inline bool may_be_shadowed(PairType t) {
+  return t == PairType::vertex_vertex || t == PairType::vertex_edge || t == PairType::edge_vertex;
+}
+
 // Marks drop[k] = 1 for the contacts (keys[k], gaps[k]) of one body pair that a vertex-face or
 // face-vertex contact of the same vertex shadows; `radii` = rA + rB (m).
 template <class KeyAt, class GapAt>

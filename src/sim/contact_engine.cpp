@@ -45,10 +45,9 @@ struct BodyPartner {
   }
   double radius(std::uint32_t j) const { return posed[j].radius; }
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
-  Vec3 velocity_at(std::uint32_t j, const Vec3& p) const {
-    return bodies->velocity[j] + bodies->angular_velocity[j].cross(p - bodies->position[j]);
+  RigidMotion motion(std::uint32_t j) const {
+    return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j]};
   }
-  Vec3 angular_velocity(std::uint32_t j) const { return bodies->angular_velocity[j]; }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
     const double mi = bodies->mass[i], mj = bodies->mass[j];
     return mi * mj / (mi + mj);
@@ -71,8 +70,10 @@ struct DriverPartner {
     return rounded ? d.radius : 0.0;
   }
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
-  Vec3 velocity_at(std::uint32_t j, const Vec3& p) const { return drivers->velocity_at(j, p); }
-  Vec3 angular_velocity(std::uint32_t j) const { return drivers->angular_velocity(j); }
+  RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
+    const Driver& d = (*drivers)[j];
+    return {d.velocity, d.omega, d.pivot};
+  }
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
@@ -197,9 +198,13 @@ void ContactEngine::pose(const Bodies& bodies) {
     const std::uint32_t b = listed_[e];
     const Shape& s = shapes_[bodies.shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
-    const Mat3 rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
-    pose_vertices(s, bodies.scale[b], bodies.position[b], rotation, v);
-    posed_[b] = PosedBody{&s, v, rotation, bodies.position[b], s.radius * bodies.scale[b]};
+    PosedBody& posed = posed_[b];  // filled in place: no temporary pose to copy
+    posed.rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
+    pose_vertices(s, bodies.scale[b], bodies.position[b], posed.rotation, v);
+    posed.shape = &s;
+    posed.vertices = v;
+    posed.position = bodies.position[b];
+    posed.radius = s.radius * bodies.scale[b];
   });
 }
 

@@ -106,62 +106,99 @@ inline void drop_shadowed(const PairList& list, double radii, PairScratch& scrat
   found.resize(kept);
 }
 
+// The rigid motion of one side of a pair, read once per pair: a point p moves at v + w x (p - pivot).
+struct RigidMotion {
+  Vec3 velocity;          // m/s, of the pivot
+  Vec3 angular_velocity;  // rad/s
+  Vec3 pivot;             // m
+  Vec3 at(const Vec3& p) const { return velocity + angular_velocity.cross(p - pivot); }
+};
+
 // Partner must provide:
 //   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
 //   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
 //   double moved(i, j): m, bound on how much closer two features got since the build
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
 //   double radius(j): the partner's rounding radius (m)
-//   Vec3 center(j), Vec3 velocity_at(j, point), Vec3 angular_velocity(j), double m_eff(i, j)
+//   Vec3 center(j), RigidMotion motion(j), double m_eff(i, j)
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
+
+// Evaluates the candidate feature pairs of pair k (slots [s0, s1)) into scratch.found and drops
+// the shadowed ones. Out of line, as the law loop: one function for both runs short of registers.
 template <class Partner>
-PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
-                       const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
+[[gnu::noinline]] void find_contacts(double band, const PosedBody& a, const Partner& partner, const PairList& list,
+                                     std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
-  const PosedBody& a = bodies.posed[p.i];
-  const std::uint32_t s0 = list.slot_begin[k], s1 = list.slot_begin[k + 1];
-  PairTotals totals;
-  if (k + 1 < list.size()) partner.prefetch(list.pairs[k + 1].j);
-  const int was_touching = list.touching[k];
-  if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
-    return totals;  // most listed pairs, at a glance
   scratch.found.clear();
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
-  for (std::uint32_t s = s0; s < s1; ++s) {
+  bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
+  for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
     if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
-    ContactPoint cp;
-    if (!partner.contact(a, p.j, list.features[s], band, cp)) continue;
-    scratch.found.push_back({s, cp});
-    // The slot's state is read and written below, after the pair's other candidates: fetch it now.
+    FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
+    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
+      scratch.found.pop_back();
+      continue;
+    }
+    next.slot = s;
+    shadowing |= shadows(list.features[s].type);
+    shadowable |= may_be_shadowed(list.features[s].type);
+    // The slot's state is read and written by the law, after the pair's other candidates: fetch it now.
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
   }
-  drop_shadowed(list, a.radius + partner.radius(p.j), scratch);
-  if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
-    totals.energy = hand_over_history(list, s0, s1, was_touching, scratch.found, scratch.now_on, &law);
-  if (scratch.found.empty()) return totals;
-  patch_weights(scratch.found, band, scratch.weight);
-  const Vec3 xi = a.position, xj = partner.center(p.j);
+  if (shadowing && shadowable) drop_shadowed(list, a.radius + partner.radius(p.j), scratch);  // rare: nothing to drop otherwise
+}
+
+// Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
+// their forces, torques and energy to `totals`.
+template <class Partner>
+[[gnu::noinline]] void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
+                                 PairList& list, std::uint32_t k, const PairScratch& scratch, PairTotals& totals) {
+  const BodyPair p = list.pairs[k];
+  const Vec3 xi = bodies.position[p.i];
+  const RigidMotion mj = partner.motion(p.j);
+  const Vec3 w_rel = bodies.angular_velocity[p.i] - mj.angular_velocity;  // rad/s
+  // m/s, i's velocity less j's at i's centre: at a lever r from it they differ by v_centre + w_rel x r.
+  const Vec3 v_centre = bodies.velocity[p.i] - mj.at(xi);
   const double m_eff = partner.m_eff(p.i, p.j);
   const double nu = pair_damping(law, m_eff), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
-    const Vec3 vi = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(g.point - xi);
-    ContactKinematics kin{g.normal, g.gap, vi - partner.velocity_at(p.j, g.point),
-                          bodies.angular_velocity[p.i] - partner.angular_velocity(p.j), m_eff,
-                          law.rolling ? (g.point - xi).norm() : 0.0, scratch.weight[c], nu, nu_t};
+    const Vec3 lever = g.point - xi;  // m, from i's centre
+    ContactKinematics kin{g.normal, g.gap, v_centre + w_rel.cross(lever), w_rel, m_eff,
+                          law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t};
     const ContactForce f = contact_force(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;
     slot.fn = f.fn;
     totals.force_i += f.force;
-    totals.torque_i += (g.point - xi).cross(f.force) + f.moment;
-    totals.torque_j -= (g.point - xj).cross(f.force) + f.moment;
+    totals.torque_i += lever.cross(f.force) + f.moment;
     totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
   }
+  // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
+  totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());
+}
+
+template <class Partner>
+PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
+                       const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
+  const BodyPair p = list.pairs[k];
+  const PosedBody& a = bodies.posed[p.i];
+  PairTotals totals;
+  if (k + 1 < list.size()) partner.prefetch(list.pairs[k + 1].j);
+  const int was_touching = list.touching[k];
+  if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
+    return totals;  // most listed pairs, at a glance
+  find_contacts(band, a, partner, list, k, scratch);
+  if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
+    totals.energy = hand_over_history(list, list.slot_begin[k], list.slot_begin[k + 1], was_touching,
+                                      scratch.found, scratch.now_on, &law);
+  if (scratch.found.empty()) return totals;
+  patch_weights(scratch.found, band, scratch.weight);
+  apply_law(law, dt, bodies, partner, list, k, scratch, totals);
   return totals;
 }
 
