@@ -282,28 +282,38 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   return false;
 }
 
-// Runs `kernel(k, scratch) -> PairTotals` over every pair and keeps the per-pair results in the list.
+// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
+// the blocks in order after, so the sums are the same bits for any thread count.
+constexpr std::size_t kPairBlock = 256;
+
+// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
+// and each block's energy in list.block_energy.
 template <class Kernel>
 static void all_pair_forces(PairList& list, const Kernel& kernel) {
-  const std::size_t n = list.size();
-  auto one_pair = [&](std::size_t k, PairScratch& scratch) {
-    const PairTotals t = kernel(std::uint32_t(k), scratch);
-    list.force_i[k] = t.force_i;
-    list.torque_i[k] = t.torque_i;
-    list.torque_j[k] = t.torque_j;
-    list.touching[k] = std::uint16_t(t.contacts);
-    list.energy[k] = t.energy;
+  const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
+  list.block_energy.resize(blocks);
+  auto one_block = [&](std::size_t b, PairScratch& scratch) {
+    EnergyParts energy;  // J
+    for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
+      const PairTotals t = kernel(std::uint32_t(k), scratch);
+      list.force_i[k] = t.force_i;
+      list.torque_i[k] = t.torque_i;
+      list.torque_j[k] = t.torque_j;
+      list.touching[k] = std::uint16_t(t.contacts);
+      energy += t.energy;
+    }
+    list.block_energy[b] = energy;
   };
-  if (n < kParallelMinItems) {  // small scenes: no thread wake-up
+  if (blocks < 2) {  // small scenes: no thread wake-up
     PairScratch scratch;
-    for (std::size_t k = 0; k < n; ++k) one_pair(k, scratch);
+    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
     return;
   }
 #pragma omp parallel
   {
     PairScratch scratch;
-#pragma omp for schedule(dynamic, 256)
-    for (std::size_t k = 0; k < n; ++k) one_pair(k, scratch);
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
   }
 }
 
@@ -317,12 +327,10 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
                       bodies.angular_velocity.data(), bodies.mass.data()};
   stats_.energy = EnergyParts{};
   stats_.contacts = 0;
-  // Energies are summed serially in pair order: repeatable whatever the thread count.
+  // Energies are summed block by block in order: repeatable whatever the thread count.
   auto add_totals = [this](const PairList& list) {
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      stats_.energy += list.energy[k];
-      stats_.contacts += list.touching[k];
-    }
+    for (const EnergyParts& e : list.block_energy) stats_.energy += e;
+    for (std::uint16_t c : list.touching) stats_.contacts += c;
   };
   if (spheres_only_) {
     all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch&) {

@@ -41,7 +41,7 @@ struct PairList {
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
-  std::vector<EnergyParts> energy;         // J, per pair, this step (energy ledger)
+  std::vector<EnergyParts> block_energy;   // J, per block of pairs, this step (energy ledger)
 
   std::size_t size() const { return pairs.size(); }
   void resize_results() {
@@ -49,7 +49,7 @@ struct PairList {
     torque_i.assign(pairs.size(), Vec3::Zero());
     torque_j.assign(pairs.size(), Vec3::Zero());
     touching.assign(pairs.size(), 0);
-    energy.assign(pairs.size(), EnergyParts{});
+    block_energy.clear();
   }
 };
 
