@@ -215,7 +215,7 @@ inline double cohesion_dissipated(const LawParams& law, double w0, double dn0, d
 }  // namespace law_slot
 
 // J, stored in the normal, cohesion, tangential and rolling springs of a contact whose last
-// step left h (0 for one with no last step): the ledger's `elastic`, wanted on output steps only.
+// step left h (0 for one with no last step), per spring: energy.csv sums them on output steps.
 inline StoredParts stored_parts(const LawParams& law, const ContactHistory& h) {
   const double w = h.weight;
   const double overlap = std::max(-h.gap, 0.0);  // m

@@ -354,23 +354,14 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   reduce(bodies, drivers);
 }
 
-// Sums per pair, then pairs in order onto `total`, as the pair kernels summed it when they
-// returned it every step: the same bits.
-static void add_stored_energy(const PairList& list, const LawParams& law, ContactEngine::Elastic& total) {
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    double pair = 0.0;  // J
-    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
-      if (!list.active[s]) continue;
-      const StoredParts e = stored_parts(law, list.slots[s].history);
-      pair += e.normal + e.tangential + e.rolling;
-      total.parts += e;
-    }
-    total.total += pair;
-  }
+// Sums the active slots in order: the same bits for any thread count.
+static void add_stored_energy(const PairList& list, const LawParams& law, StoredParts& total) {
+  for (std::size_t s = 0; s < list.slots.size(); ++s)
+    if (list.active[s]) total += stored_parts(law, list.slots[s].history);
 }
 
-ContactEngine::Elastic ContactEngine::elastic() const {
-  Elastic total;  // J
+StoredParts ContactEngine::elastic() const {
+  StoredParts total;  // J
   add_stored_energy(body_list_, settings_.particle, total);
   add_stored_energy(driver_list_, settings_.driver, total);
   return total;

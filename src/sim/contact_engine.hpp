@@ -39,11 +39,7 @@ class ContactEngine {
 
   const ContactStats& stats() const { return stats_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps only).
-  struct Elastic {
-    double total = 0.0;  // per pair, then pairs in order: the bits the pair kernels once summed
-    StoredParts parts;
-  };
-  Elastic elastic() const;
+  StoredParts elastic() const;
   const PairList& body_pairs() const { return body_list_; }
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }

@@ -102,9 +102,8 @@ EnergyRow Simulation::energy() const {
     e.rotational += 0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum();
     mass_moment += bodies.mass[b] * bodies.position[b];
   }
-  const ContactEngine::Elastic elastic = engine_->elastic();
-  e.elastic = elastic.total;
-  e.elastic_parts = elastic.parts;
+  e.elastic_parts = engine_->elastic();
+  e.elastic = e.elastic_parts.normal + e.elastic_parts.tangential + e.elastic_parts.rolling;
   e.dissipated = ledger.dissipated;
   e.dissipated_sliding = ledger.sliding;
   e.dissipated_rolling = ledger.rolling;
