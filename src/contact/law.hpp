@@ -227,6 +227,7 @@ inline StoredParts stored_parts(const LawParams& law, const ContactHistory& h) {
   if (law.rolling) e.rolling = law_slot::spring_energy(h.mr, w * law.kr);
   return e;
 }
+// J, their sum (ContactForce::elastic, for callers of one contact).
 inline double stored_energy(const LawParams& law, const ContactHistory& h) {
   const StoredParts e = stored_parts(law, h);
   return e.normal + e.tangential + e.rolling;
