@@ -2,6 +2,7 @@
 // splitting against an RK4 reference, and the frame conventions of the helpers.
 #include <catch2/catch.hpp>
 
+#include "integrate/free_rotor.hpp"
 #include "integrate/integrate.hpp"
 
 using namespace polydem;
@@ -143,4 +144,16 @@ TEST_CASE("isotropic inertia is detected within 1e-12 relative", "[integrate]") 
   const RotorGroups groups = group_rotors(b);
   CHECK(groups.isotropic == std::vector<std::size_t>{0, 2});
   CHECK(groups.asymmetric == std::vector<std::size_t>{1});
+}
+
+TEST_CASE("the small-angle series give libm's sine and cosine to round-off", "[integrate]") {
+  double worst = 0.0;  // relative error, over [-kSeriesAngle, kSeriesAngle]
+  for (int k = -1000; k <= 1000; ++k) {
+    const double x = free_rotor::kSeriesAngle * k / 1000.0;  // rad
+    const double x2 = x * x;
+    worst = std::max(worst, std::abs(free_rotor::cos_series(x2) - std::cos(x)));
+    if (x != 0.0) worst = std::max(worst, std::abs(x * free_rotor::sin_over_x_series(x2) - std::sin(x)) / std::abs(std::sin(x)));
+  }
+  CHECK(worst <= 2.3e-16);  // one ulp of 1, whatever the last bit libm rounds to
+  CHECK(free_rotor::sin_over_x_series(0.0) == 1.0);  // a body at rest: no division by w
 }
