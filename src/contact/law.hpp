@@ -246,12 +246,24 @@ inline EnergyParts released_energy(const LawParams& law, const ContactHistory& h
   return e;
 }
 
-[[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k, ContactHistory& h,
-                                  double dt) {
+// The law's optional slots (cohesion, rolling, tangential dashpot), fixed at compile time for
+// the pair loops: `all` follows LawParams' flags, `plain` has none of them, so its loop carries
+// no branch and no dead store for them. The contact engine picks `plain` once when it can.
+enum class LawSlots { plain, all };
+inline LawSlots law_slots(const LawParams& law) {
+  return law.cohesion || law.rolling || law.tangential_damping ? LawSlots::all : LawSlots::plain;
+}
+
+template <LawSlots kSlots = LawSlots::all>
+[[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k,
+                                                         ContactHistory& h, double dt) {
+  constexpr bool kOptional = kSlots == LawSlots::all;
+  const bool cohesion = kOptional && law.cohesion, rolling = kOptional && law.rolling;
+  const bool tangential_damping = kOptional && law.tangential_damping;
   const double w = k.weight;
   const double kt_w = w * law.kt, kr_w = w * law.kr;
   ContactForce out{Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  const double reach = law.cohesion ? law.dncut : 0.0;  // m, beyond it the pair does not interact
+  const double reach = cohesion ? law.dncut : 0.0;  // m, beyond it the pair does not interact
   if (k.dn >= reach) {
     // Out of reach: the springs let go and their energy is lost (the caller resets history anyway).
     const EnergyParts released = released_energy(law, h);
@@ -276,7 +288,7 @@ inline EnergyParts released_energy(const LawParams& law, const ContactHistory& h
   out.dissipated = 0.5 * (h.fd + fd) * (h.gap - k.dn);  // trapezoid, as the kicks apply it
   // 1/2 kn w x^2 at the new weight minus at the old one, over the step (trapezoid in x).
   out.patch = 0.5 * law.kn * std::max(-h.gap, 0.0) * overlap * (w - h.weight);
-  if (law.cohesion) {
+  if (cohesion) {
     out.fn += law_slot::cohesion_force(w * law.fc, law.dncut, k.dn);
     out.dissipated += law_slot::cohesion_dissipated(law, h.weight, h.gap, w, k.dn);
   }
@@ -285,14 +297,14 @@ inline EnergyParts released_energy(const LawParams& law, const ContactHistory& h
     out.patch += law_slot::reweighted(h.ft, law.kt, h.weight, w);
     const Vec3 vt = k.v_rel - vn * k.normal;  // m/s, tangential relative velocity
     double ft_max = law.mu * fp;              // N
-    if (law.tangential_damping) {
+    if (tangential_damping) {
       const double nu_t_w = w * (k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff));  // N s/m
       damper = law_slot::tangential_dashpot(vt, nu_t_w, ft_max, out.dissipated, dt);
     }
     out.sliding = law_slot::tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt);
     out.dissipated += out.sliding;
   }
-  if (law.rolling) {
+  if (rolling) {
     const double mr_max = law.mur * k.lever * fp;  // N m
     out.patch += law_slot::reweighted(h.mr, law.kr, h.weight, w);
     out.rolling = law_slot::capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
@@ -303,7 +315,7 @@ inline EnergyParts released_energy(const LawParams& law, const ContactHistory& h
   h.gap = k.dn;
   h.weight = w;
   out.force = out.fn * k.normal + h.ft;
-  if (law.tangential_damping) out.force += damper;
+  if (tangential_damping) out.force += damper;
   out.elastic = stored_energy(law, h);  // for callers of one contact: the pair kernels leave it unread (inlined: no cost)
   return out;
 }

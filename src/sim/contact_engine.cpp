@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "polydem/parallel.hpp"
+#include "sim/pair_loop.hpp"
 #include "sim/sphere_kernel.hpp"
 
 namespace polydem {
@@ -282,41 +283,6 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   return false;
 }
 
-// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
-// the blocks in order after, so the sums are the same bits for any thread count.
-constexpr std::size_t kPairBlock = 256;
-
-// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
-// and each block's energy in list.block_energy.
-template <class Kernel>
-static void all_pair_forces(PairList& list, const Kernel& kernel) {
-  const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
-  list.block_energy.resize(blocks);
-  auto one_block = [&](std::size_t b, PairScratch& scratch) {
-    EnergyParts energy;  // J
-    for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
-      const PairTotals t = kernel(std::uint32_t(k), scratch);
-      list.force_i[k] = t.force_i;
-      list.torque_i[k] = t.torque_i;
-      list.torque_j[k] = t.torque_j;
-      list.touching[k] = std::uint16_t(t.contacts);
-      energy += t.energy;
-    }
-    list.block_energy[b] = energy;
-  };
-  if (blocks < 2) {  // small scenes: no thread wake-up
-    PairScratch scratch;
-    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
-    return;
-  }
-#pragma omp parallel
-  {
-    PairScratch scratch;
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
-  }
-}
-
 void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, core_reach_, settings_.skin) ||
       drivers_moved(drivers))
@@ -333,21 +299,25 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
     for (std::uint16_t c : list.touching) stats_.contacts += c;
   };
   if (spheres_only_) {
-    all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch&) {
-      return sphere_pair_forces(settings_.particle, band_particle_, dt, view, body_list_, k);
-    });
+    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
   } else {
     const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
                               vertex_offset_.data()};
-    all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
-      return pair_forces(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
+    with_law_slots(settings_.particle, [&](auto slots) {
+      constexpr LawSlots kSlots = decltype(slots)::value;
+      all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
+        return pair_forces<kSlots>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
+      });
     });
   }
   add_totals(body_list_);
   if (!driver_list_.pairs.empty()) {
-    const DriverPartner partner{&drivers, &bodies};
-    all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
-      return pair_forces(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
+    with_law_slots(settings_.driver, [&](auto slots) {
+      constexpr LawSlots kSlots = decltype(slots)::value;
+      const DriverPartner partner{&drivers, &bodies};
+      all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
+        return pair_forces<kSlots>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
+      });
     });
     add_totals(driver_list_);
   }

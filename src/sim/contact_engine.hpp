@@ -49,8 +49,6 @@ class ContactEngine {
   void pose(const Bodies& bodies);
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void rebuild(const Bodies& bodies, const Drivers& drivers);
-  void body_pair_forces(const Bodies& bodies, double dt);
-  void driver_pair_forces(const Bodies& bodies, const Drivers& drivers, double dt);
   void reduce(Bodies& bodies, Drivers& drivers) const;
   void mark_drivers(const Bodies& bodies, const Drivers& drivers);
   bool drivers_moved(const Drivers& drivers) const;

@@ -152,7 +152,7 @@ template <class Partner>
 
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
 // their forces, torques and energy to `totals`.
-template <class Partner>
+template <LawSlots kSlots, class Partner>
 [[gnu::noinline]] void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, PairTotals& totals) {
   const BodyPair p = list.pairs[k];
@@ -168,8 +168,8 @@ template <class Partner>
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 lever = g.point - xi;  // m, from i's centre
     ContactKinematics kin{g.normal, g.gap, v_centre + w_rel.cross(lever), w_rel, m_eff,
-                          law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t};
-    const ContactForce f = contact_force(law, kin, slot.history, dt);
+                          kSlots == LawSlots::all && law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t};
+    const ContactForce f = contact_force<kSlots>(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;
     slot.fn = f.fn;
@@ -182,7 +182,7 @@ template <class Partner>
   totals.contacts = int(scratch.found.size());
 }
 
-template <class Partner>
+template <LawSlots kSlots, class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
                        const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
@@ -198,7 +198,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
                                       scratch.found, scratch.now_on, &law);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
-  apply_law(law, dt, bodies, partner, list, k, scratch, totals);
+  apply_law<kSlots>(law, dt, bodies, partner, list, k, scratch, totals);
   return totals;
 }
 

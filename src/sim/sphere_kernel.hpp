@@ -5,7 +5,12 @@
 
 namespace polydem {
 
+// Runs sphere_pair_forces over every pair of `list` (sphere_loop.cpp), keeping its forces and
+// block energies as the general pair loop does.
+void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list);
+
 // Always inlined into the pair loop: the totals go straight into the list, not through memory.
+template <LawSlots kSlots>
 [[gnu::always_inline]] inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt,
                                                             const BodyView& bodies, PairList& list, std::uint32_t k) {
   PairTotals totals;
@@ -40,7 +45,7 @@ namespace polydem {
   const ContactKinematics kin{n, gap, v_rel, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
                               mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
   if (!list.active[s]) slot.history = ContactHistory{};
-  const ContactForce f = contact_force(law, kin, slot.history, dt);
+  const ContactForce f = contact_force<kSlots>(law, kin, slot.history, dt);
   list.active[s] = 1;
   slot.point = point;
   slot.force = f.force;

@@ -1,0 +1,57 @@
+#pragma once
+// The parallel loop over the pairs of a list, shared by the contact engine and the sphere fast
+// path (sphere_loop.cpp: its own translation unit, so GCC's unit growth limit leaves every call
+// in the sphere kernel inlined).
+#include <algorithm>
+#include <type_traits>
+
+#include "sim/pair_kernel.hpp"
+
+namespace polydem {
+
+// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
+// the blocks in order after, so the sums are the same bits for any thread count.
+constexpr std::size_t kPairBlock = 256;
+
+// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
+// and each block's energy in list.block_energy.
+template <class Kernel>
+void all_pair_forces(PairList& list, const Kernel& kernel) {
+  const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
+  list.block_energy.resize(blocks);
+  auto one_block = [&](std::size_t b, PairScratch& scratch) {
+    EnergyParts energy;  // J
+    for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
+      const PairTotals t = kernel(std::uint32_t(k), scratch);
+      list.force_i[k] = t.force_i;
+      list.torque_i[k] = t.torque_i;
+      list.torque_j[k] = t.torque_j;
+      list.touching[k] = std::uint16_t(t.contacts);
+      energy += t.energy;
+    }
+    list.block_energy[b] = energy;
+  };
+  if (blocks < 2) {  // small scenes: no thread wake-up
+    PairScratch scratch;
+    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+    return;
+  }
+#pragma omp parallel
+  {
+    PairScratch scratch;
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+  }
+}
+
+// Calls run(tag), the tag's ::value the law's optional slots as a compile-time constant: the
+// pair loops are compiled once per LawSlots and chosen here, once per step (law.hpp).
+template <class Run>
+void with_law_slots(const LawParams& law, const Run& run) {
+  if (law_slots(law) == LawSlots::plain)
+    run(std::integral_constant<LawSlots, LawSlots::plain>{});
+  else
+    run(std::integral_constant<LawSlots, LawSlots::all>{});
+}
+
+}  // namespace polydem

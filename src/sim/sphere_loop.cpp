@@ -1,0 +1,15 @@
+#include "sim/pair_loop.hpp"
+#include "sim/sphere_kernel.hpp"
+
+namespace polydem {
+
+void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list) {
+  with_law_slots(law, [&](auto slots) {
+    constexpr LawSlots kSlots = decltype(slots)::value;
+    all_pair_forces(list, [&](std::uint32_t k, PairScratch&) {
+      return sphere_pair_forces<kSlots>(law, band, dt, bodies, list, k);
+    });
+  });
+}
+
+}  // namespace polydem
