@@ -227,9 +227,7 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   std::vector<BodyPair> near;
   cells_.build_pairs(bodies.position, bounding_, range_p, near);
   PairList fresh_d;
-  for (std::uint32_t i = 0; i < bodies.size(); ++i)
-    for (std::uint32_t j = 0; j < drivers.size(); ++j)
-      if (drivers.near(j, bodies.position[i], bounding_[i] + range_d)) fresh_d.pairs.push_back({i, j});
+  fresh_d.pairs = near_drivers(bodies, drivers, range_d);
   mark_listed(bodies.size(), near, fresh_d.pairs);
   pose(bodies);
   BodyCandidates found = body_candidates(near, posed_, range_p);
@@ -259,14 +257,31 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
 }
 
+// Body-driver pairs within reach, in (body, driver) order; each body is tested in parallel.
+std::vector<BodyPair> ContactEngine::near_drivers(const Bodies& bodies, const Drivers& drivers, double range) const {
+  const std::size_t n = bodies.size(), m = drivers.size();
+  std::vector<std::uint8_t> is_near(n * m);
+  parallel_for(n, [&](std::size_t i) {
+    for (std::uint32_t j = 0; j < m; ++j) is_near[i * m + j] = drivers.near(j, bodies.position[i], bounding_[i] + range);
+  });
+  std::vector<BodyPair> pairs;
+  for (std::size_t e = 0; e < is_near.size(); ++e)
+    if (is_near[e]) pairs.push_back({std::uint32_t(e / m), std::uint32_t(e % m)});
+  return pairs;
+}
+
 void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
   drivers_at_build_.clear();
-  driver_lever_ = 0.0;
-  for (std::size_t j = 0; j < drivers.size(); ++j) {
+  std::vector<Vec3> centers;  // m
+  for (std::uint32_t j = 0; j < drivers.size(); ++j) {
     drivers_at_build_.push_back(drivers[j]);
-    for (std::size_t b = 0; b < bodies.size(); ++b)
-      driver_lever_ = std::max(driver_lever_, (bodies.position[b] - drivers.center(std::uint32_t(j))).norm() + bounding_[b]);
+    centers.push_back(drivers.center(j));
   }
+  std::vector<double> lever(bodies.size(), 0.0);  // m, per body: the max is exact in any order
+  parallel_for(bodies.size(), [&](std::size_t b) {
+    for (const Vec3& c : centers) lever[b] = std::max(lever[b], (bodies.position[b] - c).norm() + bounding_[b]);
+  });
+  driver_lever_ = centers.empty() || lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());
 }
 
 // A moving driver can reach bodies the lists did not pair it with: rebuild once its surface

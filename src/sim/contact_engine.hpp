@@ -50,6 +50,7 @@ class ContactEngine {
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void rebuild(const Bodies& bodies, const Drivers& drivers);
   void reduce(Bodies& bodies, Drivers& drivers) const;
+  std::vector<BodyPair> near_drivers(const Bodies& bodies, const Drivers& drivers, double range) const;
   void mark_drivers(const Bodies& bodies, const Drivers& drivers);
   bool drivers_moved(const Drivers& drivers) const;
 
