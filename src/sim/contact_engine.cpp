@@ -265,8 +265,9 @@ std::vector<BodyPair> ContactEngine::near_drivers(const Bodies& bodies, const Dr
     for (std::uint32_t j = 0; j < m; ++j) is_near[i * m + j] = drivers.near(j, bodies.position[i], bounding_[i] + range);
   });
   std::vector<BodyPair> pairs;
-  for (std::size_t e = 0; e < is_near.size(); ++e)
-    if (is_near[e]) pairs.push_back({std::uint32_t(e / m), std::uint32_t(e % m)});
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < m; ++j)
+      if (is_near[i * m + j]) pairs.push_back({i, j});
   return pairs;
 }
 
