@@ -8,6 +8,12 @@
 
 namespace polydem {
 
+// The points x with normal . x = offset (m), in the principal frame at scale 1.
+struct Plane {
+  Vec3 normal;    // unit
+  double offset;  // m
+};
+
 struct Shape {
   std::string name;
   double radius = 0.0;                      // m, Minkowski (rounding) radius, > 0
@@ -20,6 +26,10 @@ struct Shape {
   Vec3 inertia_per_mass = Vec3::Zero();     // m^2, principal moments of inertia / mass
   double bounding_radius = 0.0;             // m, max |vertex| + radius (about the centre of mass)
   std::vector<Vec3> face_normals;           // outward unit normals, one per face
+  // Face f owns edge_planes[edge_plane_begin[f] .. edge_plane_begin[f + 1]), one per edge in
+  // face order (geometry/face_planes.hpp).
+  std::vector<Plane> edge_planes;
+  std::vector<int> edge_plane_begin;        // faces.size() + 1 entries
 
   // Placement of the principal frame in the frame the shape was given in:
   // x_input = input_center + input_rotation * x_principal.

@@ -181,7 +181,7 @@ bool mesh_contact(const Driver& d, const PosedBody& a, FeaturePair f, double max
   if (f.type == PairType::vertex_face) return face_contact(d, a, f.a, f.b, max_gap, out);
   const bool edge = f.type == PairType::vertex_edge || f.type == PairType::edge_edge;
   Vec3 ends[2];
-  PosedBody partner{nullptr, ends, Mat3::Identity(), Vec3::Zero(), 0.0};
+  PosedBody partner{nullptr, ends, Mat3::Identity(), Vec3::Zero(), 0.0, 1.0};
   if (edge) {
     ends[0] = to_world(d, m.vertices[m.edges[f.b][0]]);
     ends[1] = to_world(d, m.vertices[m.edges[f.b][1]]);

@@ -69,7 +69,7 @@ bool cylinder_contact(const Driver& d, const PosedBody& a, FeaturePair f, double
 }
 
 PosedBody ball_pose(const Driver& d) {
-  return PosedBody{&d.ball_shape, &d.center, Mat3::Identity(), d.center, d.spec.radius};
+  return PosedBody{&d.ball_shape, &d.center, Mat3::Identity(), d.center, d.spec.radius, 1.0};
 }
 
 Shape axis_shape(const std::string& name, double radius) {
@@ -87,7 +87,7 @@ PosedBody axis_pose(const Driver& d, const PosedBody& a, Vec3* ends) {
   if (d.spec.length) {
     ends[0] = d.center - 0.5 * *d.spec.length * d.axis;
     ends[1] = d.center + 0.5 * *d.spec.length * d.axis;
-    return PosedBody{&d.axis_shape, ends, Mat3::Identity(), d.center, r};
+    return PosedBody{&d.axis_shape, ends, Mat3::Identity(), d.center, r, 1.0};
   }
   double core = 0.0;  // m, farthest core vertex of the body from its centre
   for (std::size_t v = 0; v < a.shape->vertices.size(); ++v) core = std::max(core, (a.vertices[v] - a.position).norm());
@@ -96,7 +96,7 @@ PosedBody axis_pose(const Driver& d, const PosedBody& a, Vec3* ends) {
   const Vec3 foot = d.center + (a.position - d.center).dot(d.axis) * d.axis;
   ends[0] = foot - half * d.axis;
   ends[1] = foot + half * d.axis;
-  return PosedBody{&d.axis_shape, ends, Mat3::Identity(), foot, r};
+  return PosedBody{&d.axis_shape, ends, Mat3::Identity(), foot, r, 1.0};
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ struct PosedBody {
   Mat3 rotation;         // principal -> world
   Vec3 position;         // m, centre of mass
   double radius;         // m, scaled Minkowski radius
+  double scale;          // size factor: the shape's edge planes lie at scale * offset in the body frame
 };
 
 struct ContactPoint {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/face_planes.hpp"
 #include "polydem/error.hpp"
 #include "shape/topology.hpp"
 
@@ -253,12 +254,14 @@ void compute_mass_properties(Shape& s) {
   s.input_center = origin + center;
   s.input_rotation = Quat(axes).normalized();
   s.bounding_radius = max_vertex_norm(s) + s.radius;
+  derive_face_planes(s);
 }
 
 void compute_derived_geometry(Shape& s) {
   check_radius(s);
   prepare_topology(s);
   s.bounding_radius = max_vertex_norm(s) + s.radius;
+  derive_face_planes(s);
 }
 
 }  // namespace polydem

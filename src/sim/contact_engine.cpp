@@ -185,7 +185,8 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bod
     const Shape& s = shapes_[bodies.shape[b]];
     radius_[b] = s.radius * bodies.scale[b];
     // A sphere's pose is its centre alone: everything else is set once here.
-    if (spheres_only_) posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), bodies.position[b], radius_[b]};
+    if (spheres_only_)
+      posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), bodies.position[b], radius_[b], bodies.scale[b]};
   }
 }
 
@@ -206,6 +207,7 @@ void ContactEngine::pose(const Bodies& bodies) {
     posed.vertices = v;
     posed.position = bodies.position[b];
     posed.radius = s.radius * bodies.scale[b];
+    posed.scale = bodies.scale[b];
   });
 }
 

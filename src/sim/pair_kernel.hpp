@@ -35,6 +35,8 @@ inline bool separated_along_centres(const PosedBody& a, const PosedBody& b, doub
 
 // One sub-contact found this step, before forces.
 struct FoundContact {
+  FoundContact() {}  // left unset, not zeroed: find_contacts appends one per candidate, the kernel fills it
+  FoundContact(std::uint32_t s, const ContactPoint& g) : slot(s), geometry(g) {}
   std::uint32_t slot;
   ContactPoint geometry;
 };
@@ -132,7 +134,8 @@ template <class Partner>
   scratch.found.clear();
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
   bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
-  for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
+  const std::uint32_t end = list.slot_begin[k + 1];  // read once: the stores to `found` might alias it
+  for (std::uint32_t s = list.slot_begin[k]; s < end; ++s) {
     if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
     FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
     if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "driver/drivers.hpp"
+#include "geometry/face_planes.hpp"
 #include "geometry/shadowing.hpp"
 
 namespace polydem::test {
@@ -113,6 +114,7 @@ inline Shape cube_particle(double h, double r) {
   s.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   s.face_normals = {-Vec3::UnitZ(), Vec3::UnitZ(), -Vec3::UnitY(), Vec3::UnitY(), -Vec3::UnitX(), Vec3::UnitX()};
   s.bounding_radius = std::sqrt(3.0) * h + r;
+  derive_face_planes(s);
   return s;
 }
 
@@ -122,7 +124,7 @@ struct Placed {
   PosedBody body;
   Placed(const Shape& s, const Vec3& x, const Quat& q = Quat::Identity()) {
     for (const Vec3& v : s.vertices) vertices.push_back(x + q * v);
-    body = PosedBody{&s, vertices.data(), q.toRotationMatrix(), x, s.radius};
+    body = PosedBody{&s, vertices.data(), q.toRotationMatrix(), x, s.radius, 1.0};
   }
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/face_planes.hpp"
 #include "geometry/features.hpp"
 #include "polydem/shape.hpp"
 
@@ -15,7 +16,7 @@ namespace polydem::test {
 
 // A convex polytope from its vertices and faces (each face listed in order around it, either
 // way): recentres on the vertex mean (the centre of mass of the symmetric solids used here),
-// turns faces counter-clockwise seen from outside, derives edges and outward normals.
+// turns faces counter-clockwise seen from outside, derives edges, outward normals and face planes.
 inline Shape make_polytope(const std::string& name, std::vector<Vec3> vertices,
                            std::vector<std::vector<int>> faces, double radius) {
   Shape s;
@@ -52,6 +53,7 @@ inline Shape make_polytope(const std::string& name, std::vector<Vec3> vertices,
   double r2 = 0.0;
   for (const Vec3& v : s.vertices) r2 = std::max(r2, v.squaredNorm());
   s.bounding_radius = std::sqrt(r2) + radius;
+  derive_face_planes(s);
   return s;
 }
 
@@ -109,7 +111,7 @@ struct Posed {
       : shape(&s), scale(scale_), position(x), q(q_.normalized()), world(s.vertices.size()) {
     pose_vertices(s, scale, position, q, world.data());
   }
-  PosedBody body() const { return {shape, world.data(), q.toRotationMatrix(), position, scale * shape->radius}; }
+  PosedBody body() const { return {shape, world.data(), q.toRotationMatrix(), position, scale * shape->radius, scale}; }
   // m, radius of the sphere about the centre holding the core polyhedron.
   double core_radius() const { return (shape->bounding_radius - shape->radius) * scale; }
 };

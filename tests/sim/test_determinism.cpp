@@ -156,7 +156,8 @@ TEST_CASE("the contact set each step equals the brute-force set", "[verlet]") {
       const Shape& sh = sim.shapes()[b.shape[i]];
       verts[i].resize(sh.vertices.size());
       pose_vertices(sh, b.scale[i], b.position[i], b.orientation[i], verts[i].data());
-      posed[i] = PosedBody{&sh, verts[i].data(), b.orientation[i].toRotationMatrix(), b.position[i], sh.radius * b.scale[i]};
+      posed[i] = PosedBody{&sh, verts[i].data(), b.orientation[i].toRotationMatrix(), b.position[i], sh.radius * b.scale[i],
+                            b.scale[i]};
     }
     for (std::uint32_t i = 0; i < b.size(); ++i)
       for (std::uint32_t j = i + 1; j < b.size(); ++j) {
