@@ -284,7 +284,7 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
   parallel_for(bodies.size(), [&](std::size_t b) {
     for (const Vec3& c : centers) lever[b] = std::max(lever[b], (bodies.position[b] - c).norm() + bounding_[b]);
   });
-  driver_lever_ = centers.empty() || lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());
+  driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
 }
 
 // A moving driver can reach bodies the lists did not pair it with: rebuild once its surface
