@@ -11,7 +11,7 @@
 #include "polydem/bodies.hpp"
 #include "polydem/scene.hpp"
 #include "polydem/shape_library.hpp"
-#include "sim/contact_engine.hpp"
+#include "contact/contact_engine.hpp"
 #include "sim/time_step.hpp"
 
 namespace polydem {

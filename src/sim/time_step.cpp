@@ -8,7 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "driver/drivers.hpp"
-#include "sim/contact_lists.hpp"
+#include "contact/contact_lists.hpp"
 
 namespace polydem {
 

@@ -3,7 +3,7 @@
 // spring of the nearest contact of the same pair that just ended instead of starting at zero.
 #include <catch2/catch.hpp>
 
-#include "sim/pair_kernel.hpp"
+#include "contact/pair_kernel.hpp"
 
 using namespace polydem;
 

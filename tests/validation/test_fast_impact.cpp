@@ -4,7 +4,7 @@
 // run-time watch when an active contact is deeper than kOverlapFraction R.
 #include <catch2/catch.hpp>
 
-#include "sim/contact_lists.hpp"
+#include "contact/contact_lists.hpp"
 #include "validation.hpp"
 
 using namespace polydem;

@@ -1,4 +1,4 @@
-#include "sim/contact_engine.hpp"
+#include "contact/contact_engine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <numeric>
 
 #include "polydem/parallel.hpp"
-#include "sim/pair_loop.hpp"
-#include "sim/sphere_kernel.hpp"
+#include "contact/pair_loop.hpp"
+#include "contact/sphere_kernel.hpp"
 
 namespace polydem {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The sphere fast path, chosen once when every body is a sphere: each pair has one
 // vertex-vertex slot, weight 1 and nothing to hand over, so the geometry is a distance.
-#include "sim/pair_kernel.hpp"
+#include "contact/pair_kernel.hpp"
 
 namespace polydem {
 

@@ -6,7 +6,7 @@
 
 #include "contact/law.hpp"
 #include "geometry/shadowing.hpp"
-#include "sim/contact_lists.hpp"
+#include "contact/contact_lists.hpp"
 
 namespace polydem {
 

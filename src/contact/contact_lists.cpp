@@ -1,4 +1,4 @@
-#include "sim/contact_lists.hpp"
+#include "contact/contact_lists.hpp"
 
 namespace polydem {
 

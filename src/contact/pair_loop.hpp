@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <type_traits>
 
-#include "sim/pair_kernel.hpp"
+#include "contact/pair_kernel.hpp"
 
 namespace polydem {
 

@@ -1,5 +1,5 @@
-#include "sim/pair_loop.hpp"
-#include "sim/sphere_kernel.hpp"
+#include "contact/pair_loop.hpp"
+#include "contact/sphere_kernel.hpp"
 
 namespace polydem {
 

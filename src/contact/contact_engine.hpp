@@ -7,8 +7,8 @@
 #include "driver/drivers.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/shape.hpp"
-#include "sim/contact_lists.hpp"
-#include "sim/pair_kernel.hpp"
+#include "contact/contact_lists.hpp"
+#include "contact/pair_kernel.hpp"
 
 namespace polydem {
 

@@ -1,4 +1,4 @@
-#include "sim/pair_kernel.hpp"
+#include "contact/pair_kernel.hpp"
 
 #include <limits>
 
