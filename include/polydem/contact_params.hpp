@@ -4,6 +4,9 @@
 namespace polydem {
 
 struct ContactParams {
+  bool hertz = false;      // model: hertz (Hertz-Mindlin from E and poisson); else linear (kn, kt)
+  double young = 0.0;      // Pa, E: Young modulus of the material (hertz: config the particles', config_driver the drivers')
+  double poisson = 0.0;    // -, poisson: Poisson ratio of that material, in [0, 0.5]
   double kn = 0.0;         // N/m, normal stiffness
   double kt = 0.0;         // N/m, tangential stiffness
   double kr = 0.0;         // N m/rad, rolling stiffness (0: no rolling resistance)

@@ -92,6 +92,11 @@ void print_counts(const Simulation& sim) {
   std::printf("critical time step: %.4g s (smallest contact-point mass %.4g kg)\n", t.critical, t.m_eff);
   std::printf("  set by the %s mode (normal mode alone: %.4g s; tangential contact-point mass %.4g kg)\n",
               step_mode_name(t.mode), t.critical_normal, t.m_tangential);
+  const ContactOperator& law = sim.scene().forces.contact;
+  if (law.config.hertz || law.config_driver.hertz)  // its stiffness grows with the overlap
+    std::printf("  hertz: for an impact at %.3g m/s (fastest body plus a fall over the scene's height), "
+                "kn %.4g N/m between bodies, %.4g N/m on drivers\n",
+                t.impact_speed, t.kn_particle, t.kn_driver);
   std::printf("chosen time step:   %.4g s (%.3g x critical)%s\n", t.chosen, t.chosen / t.critical,
               sim.scene().simulation.dt ? "" : " [auto]");
   const double steps = sim.scene().simulation.duration / t.chosen;
@@ -99,23 +104,14 @@ void print_counts(const Simulation& sim) {
 }
 
 void warn_unsafe_step(const Simulation& sim) {
-  const TimeStepEstimate& t = sim.time_step();
-  if (t.chosen > kUnsafeFraction * t.critical)
-    std::fprintf(stderr, "warning: dt = %.3g s is %.2g x the critical step %.3g s (above %.2g): the run may be "
-                 "inaccurate or blow up; use dt: auto or dt <= %.3g s\n",
-                 t.chosen, t.chosen / t.critical, t.critical, kUnsafeFraction, kAutoFraction * t.critical);
-}
-
-// N/m, kn of the particle law and of the driver law (config_driver, else config).
-std::pair<double, double> contact_stiffness(const Scene& scene) {
-  const ContactOperator& c = scene.forces.contact;
-  return {c.config.kn, c.has_config_driver ? c.config_driver.kn : c.config.kn};
+  const std::string w = unsafe_step_warning(sim.time_step());
+  if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
 }
 
 void warn_fast_impacts(const Simulation& sim) {
   if (!sim.scene().forces.contact.present) return;
-  const auto [kn, kn_driver] = contact_stiffness(sim.scene());
-  const std::string w = fast_impact_warning(sim.bodies, sim.shapes(), sim.drivers, kn, kn_driver, sim.dt());
+  const TimeStepEstimate& t = sim.time_step();
+  const std::string w = fast_impact_warning(sim.bodies, sim.shapes(), sim.drivers, t.kn_particle, t.kn_driver, sim.dt());
   if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
 }
 

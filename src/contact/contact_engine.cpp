@@ -45,6 +45,7 @@ struct BodyPartner {
     return separated_along_centres(a, posed[j], band);
   }
   double radius(std::uint32_t j) const { return posed[j].radius; }
+  double r_star(double r_i, std::uint32_t j) const { return r_i * posed[j].radius / (r_i + posed[j].radius); }  // m
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
   RigidMotion motion(std::uint32_t j) const {
     return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j]};
@@ -54,6 +55,17 @@ struct BodyPartner {
     return mi * mj / (mi + mj);
   }
 };
+
+// m, Hertz's R* = sqrt(R' R'') of a body of rounding r_i on driver d, R' and R'' the principal
+// radii of the relative curvature: a wall or a mesh is flat (R* = r_i), a ball of radius R
+// curves both ways (1/R' = 1/R'' = 1/r_i + 1/R), a cylinder one way (+1/R outside, -1/R seen
+// from inside a drum).
+double driver_r_star(const DriverSpec& d, double r_i) {
+  if (d.kind == DriverSpec::Kind::ball) return r_i * d.radius / (r_i + d.radius);
+  if (d.kind != DriverSpec::Kind::cylinder) return r_i;
+  const double curved = 1.0 / r_i + (d.inside ? -1.0 : 1.0) / d.radius;  // 1/m
+  return std::sqrt(r_i / curved);
+}
 
 // The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC).
 struct DriverPartner {
@@ -70,6 +82,7 @@ struct DriverPartner {
     const bool rounded = d.kind == DriverSpec::Kind::ball || (d.kind == DriverSpec::Kind::cylinder && !d.inside);
     return rounded ? d.radius : 0.0;
   }
+  double r_star(double r_i, std::uint32_t j) const { return driver_r_star((*drivers)[j].spec, r_i); }  // m
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
     const Driver& d = (*drivers)[j];
@@ -321,20 +334,20 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   } else {
     const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
                               vertex_offset_.data()};
-    with_law_slots(settings_.particle, [&](auto slots) {
-      constexpr LawSlots kSlots = decltype(slots)::value;
+    with_law(settings_.particle, [&](auto parts) {
+      using Parts = decltype(parts);
       all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
-        return pair_forces<kSlots>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
+        return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
       });
     });
   }
   add_totals(body_list_);
   if (!driver_list_.pairs.empty()) {
-    with_law_slots(settings_.driver, [&](auto slots) {
-      constexpr LawSlots kSlots = decltype(slots)::value;
+    with_law(settings_.driver, [&](auto parts) {
+      using Parts = decltype(parts);
       const DriverPartner partner{&drivers, &bodies};
       all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
-        return pair_forces<kSlots>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
+        return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
     add_totals(driver_list_);
@@ -343,15 +356,24 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
 }
 
 // Sums the active slots in order: the same bits for any thread count.
-static void add_stored_energy(const PairList& list, const LawParams& law, StoredParts& total) {
-  for (std::size_t s = 0; s < list.slots.size(); ++s)
-    if (list.active[s]) total += stored_parts(law, list.slots[s].history);
+// r_star(k): m, pair k's curvature radius (Hertz).
+template <class RStar>
+static void add_stored_energy(const PairList& list, const LawParams& law, const RStar& r_star_of, StoredParts& total) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const double r_star = law.normal == NormalModel::hertz ? r_star_of(list.pairs[k]) : 0.0;  // m
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+      if (list.active[s]) total += stored_parts(law, list.slots[s].history, r_star);
+  }
 }
 
 StoredParts ContactEngine::elastic() const {
   StoredParts total;  // J
-  add_stored_energy(body_list_, settings_.particle, total);
-  add_stored_energy(driver_list_, settings_.driver, total);
+  add_stored_energy(body_list_, settings_.particle, [&](BodyPair p) {
+    return radius_[p.i] * radius_[p.j] / (radius_[p.i] + radius_[p.j]);
+  }, total);
+  add_stored_energy(driver_list_, settings_.driver, [&](BodyPair p) {
+    return driver_r_star(drivers_at_build_[p.j].spec, radius_[p.i]);
+  }, total);
   return total;
 }
 

@@ -1,56 +1,32 @@
 #include "contact/law.hpp"
 
 #include <cmath>
-#include <string>
 
+#include "contact/hertz_restitution.hpp"
 #include "contact/restitution.hpp"
-#include "polydem/error.hpp"
 
 namespace polydem {
 
 namespace {
 
-[[noreturn]] void reject(const std::string& key, const std::string& message) {
-  throw InputError(input_message("", 0, key, message));
-}
-
-void require_non_negative(const std::string& key, double value) {
-  if (!(value >= 0.0 && std::isfinite(value)))
-    reject(key, "must be a finite number >= 0, got " + std::to_string(value));
-}
-
-// The damping ratio from exactly one of en and damp_rate (< 0 means "not given").
+// -, the damping ratio: damp_rate as given, else solved from en for the law's normal part.
 double damping_ratio(const ContactParams& p) {
-  const bool has_en = p.en >= 0.0, has_rate = p.damp_rate >= 0.0;
-  if (has_en && has_rate) reject("en", "give en or damp_rate, not both (en is the restitution you get)");
-  if (!has_en && !has_rate) reject("en", "missing: give en (restitution, e.g. en: 0.5) or damp_rate");
-  if (has_rate) {
-    require_non_negative("damp_rate", p.damp_rate);
-    return p.damp_rate;
-  }
-  if (!(p.en > 0.0 && p.en <= 1.0))
-    reject("en", "must be in (0, 1], got " + std::to_string(p.en) + " (1: elastic)");
-  return damping_ratio_for_restitution(p.en);
+  if (p.damp_rate >= 0.0) return p.damp_rate;
+  return p.hertz ? hertz_damping_ratio_for_restitution(p.en) : damping_ratio_for_restitution(p.en);
+}
+
+// Pa, 1/((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b) and Mindlin's 1/((2 - nu_a)/G_a + (2 - nu_b)/G_b),
+// G = E/(2 (1 + nu)) (as LIGGGHTS youngsModulus/poissonsRatio).
+void combine_moduli(const ContactParams& a, const ContactParams& b, LawParams& law) {
+  law.e_star = 1.0 / ((1.0 - a.poisson * a.poisson) / a.young + (1.0 - b.poisson * b.poisson) / b.young);
+  const double g_a = a.young / (2.0 * (1.0 + a.poisson)), g_b = b.young / (2.0 * (1.0 + b.poisson));  // Pa
+  law.g_star = 1.0 / ((2.0 - a.poisson) / g_a + (2.0 - b.poisson) / g_b);
 }
 
 }  // namespace
 
-LawParams prepare_law(const ContactParams& p) {
-  require_non_negative("kn", p.kn);
-  if (p.kn == 0.0) reject("kn", "must be > 0 (normal stiffness, N/m)");
-  require_non_negative("kt", p.kt);
-  require_non_negative("kr", p.kr);
-  require_non_negative("mur", p.mur);
-  require_non_negative("mu", p.mu);
-  require_non_negative("fc", p.fc);
-  require_non_negative("dncut", p.dncut);
-  if (p.mu > 0.0 && p.kt == 0.0)
-    reject("kt", "must be > 0 when mu > 0, or friction is lost (kt = kn is common)");
-  if (p.mur > 0.0 && p.kr == 0.0) reject("kr", "must be > 0 when mur > 0 (rolling stiffness, N m/rad)");
-  if (!(p.damp_tangential >= 0.0 && p.damp_tangential < 1.0))
-    reject("damp_tangential", "must be in [0, 1), got " + std::to_string(p.damp_tangential));
-  if (p.fc > 0.0 && p.dncut == 0.0)
-    reject("dncut", "must be > 0 when fc > 0 (width of the cohesion band, m)");
+// The ranges were checked once, by the parser (io/scene_forces.cpp), where file, line and key are known.
+LawParams prepare_law(const ContactParams& p, const ContactParams* particle) {
   LawParams law{};
   law.kn = p.kn;
   law.kt = p.kt;
@@ -64,6 +40,10 @@ LawParams prepare_law(const ContactParams& p) {
   law.dncut = p.fc > 0.0 ? p.dncut : 0.0;
   law.cohesion = p.fc > 0.0;
   law.rolling = p.kr > 0.0 && p.mur > 0.0;  // SPEC: mur = 0 (the default) turns rolling off
+  if (p.hertz) {
+    law.normal = NormalModel::hertz;
+    combine_moduli(particle ? *particle : p, p, law);
+  }
   return law;
 }
 

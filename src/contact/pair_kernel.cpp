@@ -6,7 +6,7 @@ namespace polydem {
 
 EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                               const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
-                              const LawParams* law) {
+                              const LawParams* law, double r_star) {
   if (same_contacts(list, was_active, found)) return {};  // keys keep their history
   now_on.assign(slot_end - slot_begin, 0);
   for (const FoundContact& c : found) now_on[c.slot - slot_begin] = 1;
@@ -37,7 +37,7 @@ EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uin
     const bool on = now_on[s - slot_begin] != 0;
     if (list.active[s] && !on) {
       ContactSlot& slot = list.slots[s];
-      if (law) released += released_energy(*law, slot.history);
+      if (law) released += released_energy(*law, slot.history, r_star);
       slot.history = ContactHistory{};
       slot.fn = 0.0;
       slot.force = Vec3::Zero();

@@ -77,9 +77,10 @@ inline bool same_contacts(const PairList& list, int was_active, const std::vecto
 // `was_active`: how many slots of the pair were active before this step. Returns J, the
 // energy released by the contacts that ended with no successor (law.hpp, released_energy;
 // 0 without a law).
+// `r_star`: m, the pair's curvature radius (Hertz; 0 for the linear law).
 EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uint32_t slot_end, int was_active,
                               const std::vector<FoundContact>& found, std::vector<std::uint8_t>& now_on,
-                              const LawParams* law = nullptr);
+                              const LawParams* law = nullptr, double r_star = 0.0);
 
 struct PairTotals {
   Vec3 force_i = Vec3::Zero(), torque_i = Vec3::Zero(), torque_j = Vec3::Zero();
@@ -122,6 +123,7 @@ struct RigidMotion {
 //   double moved(i, j): m, bound on how much closer two features got since the build
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
 //   double radius(j): the partner's rounding radius (m)
+//   double r_star(r_i, j): m, the curvature radius of a contact of a body of rounding r_i with j (Hertz)
 //   Vec3 center(j), RigidMotion motion(j), double m_eff(i, j)
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 
@@ -155,9 +157,11 @@ template <class Partner>
 
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
 // their forces, torques and energy to `totals`.
-template <LawSlots kSlots, class Partner>
+template <class Parts, class Partner>
 [[gnu::noinline]] void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
-                                 PairList& list, std::uint32_t k, const PairScratch& scratch, PairTotals& totals) {
+                                 PairList& list, std::uint32_t k, const PairScratch& scratch, double r_star,
+                                 PairTotals& totals) {
+  using Normal = typename Parts::Normal;
   const BodyPair p = list.pairs[k];
   const Vec3 xi = bodies.position[p.i];
   const RigidMotion mj = partner.motion(p.j);
@@ -165,14 +169,14 @@ template <LawSlots kSlots, class Partner>
   // m/s, i's velocity less j's at i's centre: at a lever r from it they differ by v_centre + w_rel x r.
   const Vec3 v_centre = bodies.velocity[p.i] - mj.at(xi);
   const double m_eff = partner.m_eff(p.i, p.j);
-  const double nu = pair_damping(law, m_eff), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
+  const double nu = Normal::pair_damping(law, m_eff, r_star), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 lever = g.point - xi;  // m, from i's centre
     ContactKinematics kin{g.normal, g.gap, v_centre + w_rel.cross(lever), w_rel, m_eff,
-                          kSlots == LawSlots::all && law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t};
-    const ContactForce f = contact_force<kSlots>(law, kin, slot.history, dt);
+                          Parts::rolling && law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t, r_star};
+    const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;
     slot.fn = f.fn;
@@ -185,7 +189,7 @@ template <LawSlots kSlots, class Partner>
   totals.contacts = int(scratch.found.size());
 }
 
-template <LawSlots kSlots, class Partner>
+template <class Parts, class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
                        const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
@@ -196,12 +200,13 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
   if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
     return totals;  // most listed pairs, at a glance
   find_contacts(band, a, partner, list, k, scratch);
+  const double r_star = Parts::Normal::kCurved ? partner.r_star(a.radius, p.j) : 0.0;  // m
   if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
     totals.energy = hand_over_history(list, list.slot_begin[k], list.slot_begin[k + 1], was_touching,
-                                      scratch.found, scratch.now_on, &law);
+                                      scratch.found, scratch.now_on, &law, r_star);
   if (scratch.found.empty()) return totals;
   patch_weights(scratch.found, band, scratch.weight);
-  apply_law<kSlots>(law, dt, bodies, partner, list, k, scratch, totals);
+  apply_law<Parts>(law, dt, bodies, partner, list, k, scratch, r_star, totals);
   return totals;
 }
 

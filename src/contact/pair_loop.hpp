@@ -44,14 +44,30 @@ void all_pair_forces(PairList& list, const Kernel& kernel) {
   }
 }
 
-// Calls run(tag), the tag's ::value the law's optional slots as a compile-time constant: the
-// pair loops are compiled once per LawSlots and chosen here, once per step (law.hpp).
+// Calls run(flag), flag a std::bool_constant<on>: a run-time switch made a compile-time one.
 template <class Run>
-void with_law_slots(const LawParams& law, const Run& run) {
-  if (law_slots(law) == LawSlots::plain)
-    run(std::integral_constant<LawSlots, LawSlots::plain>{});
+void with_flag(bool on, const Run& run) {
+  if (on)
+    run(std::true_type{});
   else
-    run(std::integral_constant<LawSlots, LawSlots::all>{});
+    run(std::false_type{});
+}
+
+// Calls run(parts), parts a LawParts naming the law's parts at compile time: the pair loops
+// are compiled once per combination and chosen here, once per step (law.hpp). The alternative,
+// one loop testing LawParams' flags per contact, costs a branch per part and contact.
+template <class Run>
+void with_law(const LawParams& law, const Run& run) {
+  with_flag(law.normal == NormalModel::hertz, [&](auto hertz) {
+    using Normal = std::conditional_t<decltype(hertz)::value, NormalHertz, NormalLinear>;
+    with_flag(law.cohesion, [&](auto cohesion) {
+      with_flag(law.rolling, [&](auto rolling) {
+        with_flag(law.tangential_damping, [&](auto dashpot) {
+          run(LawParts<Normal, decltype(cohesion)::value, decltype(rolling)::value, decltype(dashpot)::value>{});
+        });
+      });
+    });
+  });
 }
 
 }  // namespace polydem

@@ -10,7 +10,7 @@ namespace polydem {
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list);
 
 // Always inlined into the pair loop: the totals go straight into the list, not through memory.
-template <LawSlots kSlots>
+template <class Parts>
 [[gnu::always_inline]] inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt,
                                                             const BodyView& bodies, PairList& list, std::uint32_t k) {
   PairTotals totals;
@@ -26,7 +26,7 @@ template <LawSlots kSlots>
   ContactSlot& slot = list.slots[s];
   if (dist2 >= reach * reach || dist2 == 0.0) {
     if (list.active[s]) {  // the contact ends: its springs let go
-      totals.energy = released_energy(law, slot.history);
+      totals.energy = released_energy<Parts>(law, slot.history, Parts::Normal::kCurved ? ri * rj / (ri + rj) : 0.0);
       list.active[s] = 0;
       slot.history = ContactHistory{};
       slot.fn = 0.0;
@@ -42,10 +42,11 @@ template <LawSlots kSlots>
   const Vec3 v_rel = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(arm_i) - bodies.velocity[p.j] -
                      bodies.angular_velocity[p.j].cross(arm_j);
   const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
-  const ContactKinematics kin{n, gap, v_rel, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
-                              mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
+  ContactKinematics kin{n, gap, v_rel, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
+                        mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
+  if constexpr (Parts::Normal::kCurved) kin.r_star = ri * rj / (ri + rj);
   if (!list.active[s]) slot.history = ContactHistory{};
-  const ContactForce f = contact_force<kSlots>(law, kin, slot.history, dt);
+  const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
   list.active[s] = 1;
   slot.point = point;
   slot.force = f.force;
@@ -53,7 +54,8 @@ template <LawSlots kSlots>
   totals.force_i = f.force;
   totals.torque_i = arm_i.cross(f.force) + f.moment;
   totals.torque_j = -(arm_j.cross(f.force) + f.moment);
-  totals.energy = {f.dissipated, f.sliding, f.rolling, 0.0};  // weight 1: no patch work (and none computed)
+  // Weight 1: no patch work for the linear law; Hertz's tangential stiffness changes with the overlap.
+  totals.energy = Parts::Normal::kCurved ? energy_parts(f) : EnergyParts{f.dissipated, f.sliding, f.rolling, 0.0};
   totals.contacts = 1;
   return totals;
 }

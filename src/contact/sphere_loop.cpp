@@ -4,10 +4,9 @@
 namespace polydem {
 
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list) {
-  with_law_slots(law, [&](auto slots) {
-    constexpr LawSlots kSlots = decltype(slots)::value;
+  with_law(law, [&](auto parts) {
     all_pair_forces(list, [&](std::uint32_t k, PairScratch&) {
-      return sphere_pair_forces<kSlots>(law, band, dt, bodies, list, k);
+      return sphere_pair_forces<decltype(parts)>(law, band, dt, bodies, list, k);
     });
   });
 }

@@ -22,8 +22,10 @@ const std::vector<std::string> kForceNames = {"gravity_force",
                                               "viscous_force",
                                               "archimedes_force",
                                               "void_fraction"};
-const std::vector<std::string> kConfigKeys = {"kn", "kt",        "kr", "mur",  "mu",
-                                              "en", "damp_rate", "damp_tangential", "fc", "dncut"};
+const std::vector<std::string> kConfigKeys = {"model", "E",  "poisson",   "kn",
+                                              "kt",    "kr", "mur",       "mu",
+                                              "en",    "damp_rate",       "damp_tangential",
+                                              "fc",    "dncut"};
 
 void read_damping(const YamlMap& m, ContactParams& p) {
   if (m.has("en") == m.has("damp_rate"))
@@ -45,6 +47,8 @@ void read_tangential_damping(const YamlMap& m, ContactParams& p) {
   p.damp_tangential = m.quantity("damp_tangential", Dimension::dimensionless);
   if (!(p.damp_tangential >= 0.0 && p.damp_tangential < 1.0))
     m.fail("damp_tangential", "must be in [0, 1), got " + m.scalar("damp_tangential"));
+  if (p.damp_tangential > 0.0 && p.hertz)
+    m.fail("damp_tangential", "is not available with model: hertz yet (its tangential stiffness varies)");
   if (p.damp_tangential > 0.0 && !(p.mu > 0.0 && p.kt > 0.0))
     m.fail("damp_tangential", "needs friction to act on (mu > 0 and kt > 0)");
 }
@@ -61,16 +65,39 @@ void read_cohesion(const YamlMap& m, ContactParams& p, const std::string& op, bo
            "fc > 0 needs a cohesion band dncut > 0 (e.g. dncut: \"0.1 mm\")");
 }
 
+// model: hertz reads the material's E and poisson (normal_hertz.hpp); linear, the default, kn and kt.
+void read_stiffness(const YamlMap& m, ContactParams& p) {
+  const std::string model = m.has("model") ? m.scalar("model") : "linear";
+  if (model != "linear" && model != "hertz") m.fail("model", "must be linear or hertz, got '" + model + "'");
+  p.hertz = model == "hertz";
+  if (!p.hertz) {
+    for (const char* key : {"E", "poisson"})
+      if (m.has(key)) m.fail(key, "is a Hertz parameter: add model: hertz, or give kn and kt");
+    p.kn = check_positive(m, "kn", m.quantity("kn", Dimension::stiffness));
+    p.kt = check_positive(m, "kt", m.quantity("kt", Dimension::stiffness), true);
+    return;
+  }
+  for (const char* key : {"kn", "kt"})
+    if (m.has(key)) m.fail(key, "model: hertz takes the material's E and poisson, not kn and kt");
+  m.require("E", "E: \"70 GPa\"");
+  p.young = check_positive(m, "E", m.quantity("E", Dimension::pressure));
+  m.require("poisson", "poisson: 0.3");
+  p.poisson = m.quantity("poisson", Dimension::dimensionless);
+  if (!(p.poisson >= 0.0 && p.poisson <= 0.5)) m.fail("poisson", "must be in [0, 0.5], got " + m.scalar("poisson"));
+}
+
 ContactParams read_params(const YamlMap& op_map, const std::string& key, const std::string& op,
                           bool cohesion) {
   const YamlMap m = op_map.map(key, key, kConfigKeys);
   ContactParams p;
-  p.kn = check_positive(m, "kn", m.quantity("kn", Dimension::stiffness));
-  p.kt = check_positive(m, "kt", m.quantity("kt", Dimension::stiffness), true);
+  read_stiffness(m, p);
   p.kr = check_positive(m, "kr", m.quantity("kr", Dimension::rolling_stiffness, 0.0), true);
   p.mur = check_positive(m, "mur", m.quantity("mur", Dimension::dimensionless, 0.0), true);
+  if (p.mur > 0.0 && p.kr == 0.0) m.fail("kr", "mur > 0 needs a rolling stiffness kr > 0 (N m/rad)");
   if (!m.has("mu")) m.fail("mu", "missing in '" + key + "' (give mu: 0 for frictionless contacts)");
   p.mu = check_positive(m, "mu", m.quantity("mu", Dimension::dimensionless), true);
+  if (p.mu > 0.0 && p.kt == 0.0 && !p.hertz)
+    m.fail("kt", "mu > 0 needs kt > 0, or friction is lost (kt = kn is common)");
   read_damping(m, p);
   read_tangential_damping(m, p);
   read_cohesion(m, p, op, cohesion);
@@ -87,7 +114,10 @@ ContactOperator read_contact(const YamlMap& m, const std::string& name) {
   c.config = read_params(m, "config", base, c.cohesion);
   c.has_config_driver = m.has("config_driver");
   c.config_driver =
-      c.has_config_driver ? read_params(m, "config_driver", base, c.cohesion) : c.config;
+      c.has_config_driver ? read_params(m, "config_driver", base, c.cohesion) : c.config;  // later stages read config_driver
+  if (c.config_driver.hertz && !c.config.hertz)
+    m.fail("config_driver", "model: hertz pairs the driver's E and poisson with the particles': give config "
+                            "model: hertz too");
   c.loc = {m.file(), m.line()};
   return c;
 }

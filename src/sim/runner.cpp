@@ -268,7 +268,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const std::int64_t first_step = sim.step_index();
   RunSummary summary;
   const ContactOperator& law = sim.scene().forces.contact;
-  const double kn = law.config.kn, kn_driver = law.has_config_driver ? law.config_driver.kn : law.config.kn;  // N/m
+  const double kn = sim.time_step().kn_particle, kn_driver = sim.time_step().kn_driver;  // N/m
   OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
   auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check
     if (!law.present) return;

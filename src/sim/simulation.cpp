@@ -16,7 +16,12 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
   ContactSettings s{};
   if (op.present) {  // a scene without a contact operator (drag only) has no law to prepare
     s.particle = prepare_law(op.config);
-    s.driver = prepare_law(op.has_config_driver ? op.config_driver : op.config);
+    s.driver = prepare_law(op.config_driver, &op.config);  // the parser made config_driver config when absent
+    for (std::size_t b = 0; b < bodies.size() && op.config.hertz; ++b)
+      if (!(shapes[bodies.shape[b]].radius > 0.0))
+        throw InputError(input_message(op.loc.file, op.loc.line, "model",
+                                       "hertz needs rounded shapes (its R* is the rounding radius); shape '" +
+                                           shapes[bodies.shape[b]].name + "' has radius 0"));
   }
   if (scene.simulation.skin) {
     s.skin = *scene.simulation.skin;
@@ -39,11 +44,11 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
-                                    scene.simulation.dt);
+                                    scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_));
   if (!contacts && !scene.simulation.dt)
     throw InputError(input_message(scene.path, 0, "dt", "'auto' needs a contact law to estimate the critical step; give a number"));
   dt_ = dt_estimate_.chosen;
-  drivers.set_contact_stiffness(cs.driver.kn, dt_estimate_.critical_normal);  // a servo's default gain
+  drivers.set_contact_stiffness(dt_estimate_.kn_driver, dt_estimate_.critical_normal);  // a servo's default gain
   if (!std::isfinite(dt_) || dt_ <= 0.0)
     throw InputError(input_message(scene.path, 0, "dt", "cannot choose a time step automatically for this scene; give simulation.dt"));
   for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];

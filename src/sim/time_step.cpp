@@ -72,11 +72,25 @@ struct Limit {
 // mass, kg) acting on m_t: ratio alpha_t sqrt(m/m_t); 2 sqrt(m_t/kt) without it. Rolling: the
 // spring kr (N m/rad) on i_r, no dashpot: 2 sqrt(i_r/kr). `normal` keeps the normal mode alone
 // (polydem check).
-void take_law(Limit& limit, Limit& normal, const LawParams& law, double m, double m_n, double m_t, double i_r) {
-  if (law.kn > 0.0) normal.take(critical_time_step(law.kn, m_n, law.alpha_n), StepMode::kNormal);
+// What the normal part stiffens to at the expected impact (N/m, normal and tangential).
+struct Stiffness {
+  double normal, tangential;
+};
+
+// The normal part's stiffness at an impact of mass m (kg) at v (m/s) with curvature r_star (m).
+Stiffness impact_stiffness(const LawParams& law, double m, double v, double r_star) {
+  return with_normal(law, [&](auto parts) {
+    using Normal = typename decltype(parts)::Normal;
+    return Stiffness{Normal::impact_stiffness(law, m, v, r_star), Normal::impact_tangential_stiffness(law, m, v, r_star)};
+  });
+}
+
+void take_law(Limit& limit, Limit& normal, const LawParams& law, const Stiffness& k, double m, double m_n, double m_t,
+              double i_r) {
+  if (k.normal > 0.0) normal.take(critical_time_step(k.normal, m_n, law.alpha_n), StepMode::kNormal);
   limit.take(normal.dt, StepMode::kNormal);
-  if (law.kt > 0.0 && law.mu > 0.0)
-    limit.take(critical_time_step(law.kt, m_t, law.alpha_t * std::sqrt(m / m_t)), StepMode::kTangential);
+  if (k.tangential > 0.0 && law.mu > 0.0)
+    limit.take(critical_time_step(k.tangential, m_t, law.alpha_t * std::sqrt(m / m_t)), StepMode::kTangential);
   if (law.rolling) limit.take(critical_time_step(law.kr, i_r), StepMode::kRolling);
 }
 
@@ -93,22 +107,32 @@ const char* step_mode_name(StepMode mode) {
 
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
-                                    std::optional<double> given_dt) {
+                                    std::optional<double> given_dt, double impact_speed) {
   Compliance worst;
   double lightest = std::numeric_limits<double>::infinity();  // kg
+  double heaviest = 0.0, rounding = 0.0;  // kg, m (largest rounding radius: the stiffest Hertz contact)
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Compliance c = body_compliance(shapes[bodies.shape[b]], bodies.scale[b], bodies.mass[b], bodies.inertia[b]);
     worst.normal = std::max(worst.normal, c.normal);
     worst.tangential = std::max(worst.tangential, c.tangential);
     worst.rolling = std::max(worst.rolling, c.rolling);
     lightest = std::min(lightest, bodies.mass[b]);
+    heaviest = std::max(heaviest, bodies.mass[b]);
+    rounding = std::max(rounding, shapes[bodies.shape[b]].radius * bodies.scale[b]);
   }
   const double m_n = 1.0 / worst.normal, m_t = 1.0 / worst.tangential, i_r = 1.0 / worst.rolling;
   Limit limit, normal;
-  // Two bodies of the smallest mass in contact: the relative motion meets half of it.
-  if (bodies.size() > 1) take_law(limit, normal, particle, 0.5 * lightest, 0.5 * m_n, 0.5 * m_t, 0.5 * i_r);
-  if (driver) take_law(limit, normal, *driver, lightest, m_n, m_t, i_r);  // a driver has infinite mass
   TimeStepEstimate e;
+  // The deepest impact: the heaviest bodies at the expected speed; two of them close at twice
+  // it, with half the mass and the largest rounding halved (R* = r/2).
+  const Stiffness k_particle = impact_stiffness(particle, 0.5 * heaviest, 2.0 * impact_speed, 0.5 * rounding);
+  const Stiffness k_driver = driver ? impact_stiffness(*driver, heaviest, impact_speed, rounding) : Stiffness{};
+  // Two bodies of the smallest mass in contact: the relative motion meets half of it.
+  if (bodies.size() > 1) take_law(limit, normal, particle, k_particle, 0.5 * lightest, 0.5 * m_n, 0.5 * m_t, 0.5 * i_r);
+  if (driver) take_law(limit, normal, *driver, k_driver, lightest, m_n, m_t, i_r);  // a driver has infinite mass
+  e.impact_speed = impact_speed;
+  e.kn_particle = k_particle.normal;
+  e.kn_driver = driver ? k_driver.normal : k_particle.normal;
   e.m_eff = m_n;
   e.m_tangential = m_t;
   e.critical = limit.dt;
@@ -116,6 +140,33 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
   e.mode = limit.mode;
   e.chosen = given_dt ? *given_dt : kAutoFraction * limit.dt;
   return e;
+}
+
+std::string unsafe_step_warning(const TimeStepEstimate& t) {
+  if (!(t.chosen > kUnsafeFraction * t.critical)) return "";
+  char line[400];
+  std::snprintf(line, sizeof(line),
+                "warning: dt = %.3g s is %.2g x the critical step %.3g s (above %.2g): the run may be "
+                "inaccurate or blow up; use dt: auto or dt <= %.3g s",
+                t.chosen, t.chosen / t.critical, t.critical, kUnsafeFraction, kAutoFraction * t.critical);
+  return line;
+}
+
+double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& shapes, const Drivers& drivers,
+                             const Vec3& gravity) {
+  double fastest = 0.0;  // m/s
+  const double g = gravity.norm();  // m/s^2
+  const Vec3 down = g > 0.0 ? Vec3(gravity / g) : Vec3::Zero();
+  double low = std::numeric_limits<double>::infinity(), high = -low;  // m, along `down`
+  auto extend = [&](const Vec3& x) { low = std::min(low, x.dot(down)); high = std::max(high, x.dot(down)); };
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    fastest = std::max(fastest, bodies.velocity[b].norm() + bodies.angular_velocity[b].norm() *
+                                                                shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
+    extend(bodies.position[b]);
+  }
+  for (std::uint32_t j = 0; j < drivers.size(); ++j) extend(drivers.center(j));
+  const double height = high > low ? high - low : 0.0;  // m
+  return std::max(fastest + std::sqrt(2.0 * g * height), kMinImpactSpeed);
 }
 
 

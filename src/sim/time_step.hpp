@@ -21,7 +21,17 @@ struct TimeStepEstimate {
   double m_eff = 0.0;         // kg, smallest effective mass of a normal force at a contact point (rotation included)
   double m_tangential = 0.0;  // kg, smallest effective mass of a tangential force (lever to the rounded surface)
   StepMode mode = StepMode::kNormal;
+  double impact_speed = 0.0;  // m/s, the fastest impact expected (expected_impact_speed)
+  double kn_particle = 0.0, kn_driver = 0.0;  // N/m, normal stiffness the limits took (Hertz: at that impact)
 };
+
+// m/s, the fastest impact a scene expects, for laws whose stiffness grows with the overlap
+// (Hertz): the fastest body surface at the start plus a free fall over the scene's height
+// along gravity (body centres and driver reference points), at least kMinImpactSpeed.
+constexpr double kMinImpactSpeed = 0.1;  // m/s: a scene at rest still gets a finite step
+class Drivers;
+double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& shapes, const Drivers& drivers,
+                             const Vec3& gravity);
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
 // heavier contacts; the half-step dashpot velocity then costs 1-3% of restitution on a single
@@ -31,10 +41,15 @@ constexpr double kUnsafeFraction = 0.3;
 
 // The smallest of the velocity Verlet limits of the normal spring-dashpot, the tangential
 // spring and the rolling spring, each on the smallest mass (or inertia) it meets at any
-// contact point of any body; pairs of bodies halve it, a driver does not.
+// contact point of any body; pairs of bodies halve it, a driver does not. Each law's normal
+// part gives its stiffness at an impact at `impact_speed` (m/s; two bodies close at twice it).
+// The step: given_dt, else kAutoFraction of the limit.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
-                                    std::optional<double> given_dt);
+                                    std::optional<double> given_dt, double impact_speed = kMinImpactSpeed);
+
+// A warning line ("" when none) for a given step above kUnsafeFraction of the critical one.
+std::string unsafe_step_warning(const TimeStepEstimate& t);
 
 // Impacts too fast for the contact law: a body hitting at speed v overlaps about
 // v sqrt(m/kn) (the undamped bound, m_eff <= m); beyond kOverlapFraction of its inscribed
@@ -46,7 +61,6 @@ constexpr double kOverlapFraction = 0.5;
 // the rounding plus the distance to the nearest face plane (0 for a body without faces).
 double inscribed_radius(const Shape& shape, double scale);
 
-class Drivers;
 struct PairList;
 
 // A start-up warning line ("" when none) for the body whose closing speed is furthest above

@@ -225,3 +225,32 @@ TEST_CASE("generator blocks: kind, mix fractions, region, scale", "[scene][error
   CHECK(s.generators[0].scale_min == 1.0);
   CHECK(s.generators[0].loc.line == 9);
 }
+
+// The law's ranges are checked here, once: prepare_law trusts them.
+TEST_CASE("contact law: ranges and pairings are refused at their key", "[scene][errors]") {
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 0, mu: 0.5, en: 0.5}"), 5, "kt", "mu > 0 needs kt > 0");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, mur: 0.1}"), 5, "kr", "kr > 0");
+  check_error(with_line(5, "      config: {kn: -1, kt: 1e5, mu: 0.5, en: 0.5}"), 5, "kn", "");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 1.5}"), 5, "en", "(0, 1]");
+}
+
+TEST_CASE("contact law: model hertz takes E and poisson, with units and ranges", "[scene][errors][hertz]") {
+  CHECK(error_of(with_line(5, "      config: {model: hertz, E: \"70 GPa\", poisson: 0.3, mu: 0.5, en: 0.5}")) == "");
+  check_error(with_line(5, "      config: {model: hertz, E: \"70 GPa\", poisson: 0.7, mu: 0.5, en: 0.5}"), 5,
+              "poisson", "[0, 0.5]");
+  check_error(with_line(5, "      config: {model: hertz, E: \"70 GPa\", poisson: -0.1, mu: 0.5, en: 0.5}"), 5,
+              "poisson", "[0, 0.5]");
+  check_error(with_line(5, "      config: {model: hertz, E: \"70 m\", poisson: 0.3, mu: 0.5, en: 0.5}"), 5, "E",
+              "pressure");
+  check_error(with_line(5, "      config: {model: hertz, poisson: 0.3, mu: 0.5, en: 0.5}"), 5, "E", "missing");
+  check_error(with_line(5, "      config: {model: hertz, E: 7e10, kn: 1e5, poisson: 0.3, mu: 0.5, en: 0.5}"), 5, "kn",
+              "E and poisson");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, poisson: 0.3, mu: 0.5, en: 0.5}"), 5, "poisson",
+              "model: hertz");
+  check_error(with_line(5, "      config: {model: hooke, kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}"), 5, "model",
+              "linear or hertz");
+  check_error(with_line(5,
+                        "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5}\n"
+                        "      config_driver: {model: hertz, E: 2e11, poisson: 0.3, mu: 0.5, en: 0.5}"),
+              6, "config_driver", "give config model: hertz too");
+}

@@ -1,0 +1,74 @@
+#pragma once
+// Normal part, Hertz, with Mindlin's tangential stiffness (Hertz 1882; Mindlin 1949; as
+// LIGGGHTS `model hertz`): f = 4/3 E* sqrt(R*) x^1.5 (N), x the overlap (m); tangent
+// stiffness kn(x) = df/dx = 2 E* sqrt(R* x); tangential spring kt(x) = 8 G* sqrt(R* x), capped
+// by Coulomb as the linear one. Stored: 8/15 E* sqrt(R*) x^2.5 = 2/5 f x.
+// Coefficients: LawParams::e_star, g_star (Pa, from E and poisson of the two materials,
+// prepare_law); R* (m) per contact from its curvature (ContactKinematics::r_star).
+// Damping (Tsuji, Tanaka & Ishida 1992): nu(x) = 2 alpha_n sqrt(m_eff kn(x)) ~ x^(1/4), so the
+// restitution does not depend on the impact speed; alpha_n is solved from en once per scene
+// (hertz_restitution.cpp). Stability: the damped oscillator at kn(x) of the fastest expected
+// impact (sim/time_step.cpp).
+#include <cmath>
+
+#include "contact/law/tangential_spring.hpp"
+#include "contact/law/types.hpp"
+
+namespace polydem {
+
+// m, the largest overlap of an elastic Hertz impact at speed v (m/s) of effective mass m (kg):
+// (15 m v^2 / (16 E* sqrt(R*)))^(2/5).
+inline double hertz_max_overlap(double e_star, double r_star, double m, double v) {
+  return std::pow(15.0 * m * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
+}
+
+struct NormalHertz {
+  static constexpr bool kCurved = true;  // reads R*: the kernels compute it per pair
+  // N, the spring at unit weight.
+  [[gnu::always_inline]] static double force(const LawParams& law, double r_star, double x) {
+    return (4.0 / 3.0) * law.e_star * std::sqrt(r_star * x) * x;
+  }
+  // J, its potential at unit weight.
+  static double potential(const LawParams& law, double r_star, double x) { return 0.4 * force(law, r_star, x) * x; }
+  [[gnu::always_inline]] static double spring(const LawParams& law, double r_star, double w, double x) {
+    return w * force(law, r_star, x);
+  }
+  static double energy(const LawParams& law, double r_star, double w, double x) { return w * potential(law, r_star, x); }
+  // J, what a weight change w0 -> w1 over the step x0 -> x1 adds: split the step's change of
+  // w U(x) less its trapezoid work at the mean weight plus (w1 - w0) times
+  // (U0 + U1)/2 - (f1 - f0)(x1 - x0)/4; the first term is the spring's own O(dx^3) error (left
+  // out, as for the linear law), the second the patch (1/2 kn x0 x1 (w1 - w0) for f = kn x).
+  static double patch(const LawParams& law, double r_star, double x0, double x1, double w0, double w1) {
+    if (w0 == w1) return 0.0;
+    const double f0 = force(law, r_star, x0), f1 = force(law, r_star, x1);  // N
+    return (w1 - w0) * (0.2 * (f0 * x0 + f1 * x1) - 0.25 * (f1 - f0) * (x1 - x0));
+  }
+  // N s/m, the pair's dashpot before the weight and the x^(1/4) factor: 2 alpha_n sqrt(m 2 E* sqrt(R*)).
+  static double pair_damping(const LawParams& law, double m_eff, double r_star) {
+    return 2.0 * law.alpha_n * std::sqrt(2.0 * m_eff * law.e_star * std::sqrt(r_star));
+  }
+  [[gnu::always_inline]] static double damping(double nu_pair, double x) { return nu_pair * std::sqrt(std::sqrt(x)); }
+  // N/m, the tangent stiffnesses at the largest overlap of an impact of mass m (kg) at v (m/s)
+  // on a contact of curvature r_star (m): the stability limit takes these.
+  static double impact_stiffness(const LawParams& law, double m, double v, double r_star) {
+    return 2.0 * law.e_star * std::sqrt(r_star * hertz_max_overlap(law.e_star, r_star, m, v));
+  }
+  static double impact_tangential_stiffness(const LawParams& law, double m, double v, double r_star) {
+    return tangential_stiffness(law, r_star, hertz_max_overlap(law.e_star, r_star, m, v));
+  }
+  // N/m, Mindlin's tangential stiffness before the weight.
+  [[gnu::always_inline]] static double tangential_stiffness(const LawParams& law, double r_star, double x) {
+    return 8.0 * law.g_star * std::sqrt(r_star * x);
+  }
+  // J, what the change of the tangential stiffness w kt(x) over the step adds to the spring ft
+  // at fixed ft (no potential either: counted with the patch work).
+  static double tangential_patch(const LawParams& law, double r_star, const Vec3& ft, double x0, double w0, double x1,
+                                 double w1) {
+    const double f2 = ft.squaredNorm();  // N^2
+    const double k0 = w0 * tangential_stiffness(law, r_star, x0), k1 = w1 * tangential_stiffness(law, r_star, x1);
+    if (f2 == 0.0 || !(k0 > 0.0)) return 0.0;  // nothing held, or a spring handed over at first touch
+    return 0.5 * f2 * (1.0 / k1 - 1.0 / k0);
+  }
+};
+
+}  // namespace polydem

@@ -1,0 +1,18 @@
+#pragma once
+// Rolling part (SPEC "rolling resistance"): a moment spring mr (history, N m) grows by
+// -kr_w w_rel dt, capped at mur l fp (l the lever from i's centre to the contact, m).
+// Coefficients: LawParams::kr (N m/rad), mur (-); on when both > 0. Stored: |mr|^2/(2 kr_w);
+// slip dissipates. Stability: 2 sqrt(I/kr) on the smallest inertia (sim/time_step.cpp).
+#include "contact/law/tangential_spring.hpp"
+
+namespace polydem {
+
+// N m, the rolling moment on i after this step; adds the slip (J) to `slip`.
+[[gnu::always_inline]] inline void rolling_spring(const LawParams& law, const ContactKinematics& k, double fp,
+                                                  double dt, ContactHistory& h, double& slip) {
+  const double kr_w = k.weight * law.kr;
+  const double mr_max = law.mur * k.lever * fp;  // N m
+  slip = capped_spring(h.mr, -kr_w * dt * k.w_rel, kr_w, mr_max);
+}
+
+}  // namespace polydem

@@ -1,0 +1,32 @@
+#pragma once
+// Tangential part, dashpot beside the spring (damp_tangential): -nu_t_w vt, nu_t = 2 alpha_t
+// sqrt(kt m_eff) (N s/m) per pair. Coefficient: LawParams::alpha_t (-). No stored energy;
+// dissipates nu_t_w |vt|^2 dt. Stability: the tangential oscillator with ratio alpha_t.
+#include <algorithm>
+#include <cmath>
+
+#include "contact/law/types.hpp"
+
+namespace polydem {
+
+// N s/m, the tangential dashpot of a pair (0 without damp_tangential).
+inline double pair_tangential_damping(const LawParams& law, double m_eff) {
+  return law.tangential_damping ? 2.0 * law.alpha_t * std::sqrt(law.kt * m_eff) : 0.0;
+}
+
+// N. Spring plus dashpot stay within the Coulomb cap: the dashpot takes its share first (at
+// most all of it) and the spring is capped at what is left, so steady sliding still carries
+// exactly mu fp. Adds the dashpot's work nu_t_w |vt|^2 dt (J, the half-step velocity on the
+// force it makes; over a contact's life it differs from the kicks' trapezoid by
+// nu_t dt (|vt_first|^2 - |vt_after|^2)/4, as no history keeps the last step's dashpot
+// force) to `dissipated` and leaves the spring's cap in `ft_max`.
+inline Vec3 tangential_dashpot(const Vec3& vt, double nu_t_w, double& ft_max, double& dissipated, double dt) {
+  Vec3 damper = -nu_t_w * vt;
+  const double size = damper.norm();  // N
+  if (size > ft_max) damper *= ft_max / size;
+  ft_max -= std::min(size, ft_max);
+  dissipated -= damper.dot(vt) * dt;
+  return damper;
+}
+
+}  // namespace polydem

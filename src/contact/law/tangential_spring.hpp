@@ -1,0 +1,52 @@
+#pragma once
+// Tangential part, spring with Coulomb cap (SPEC; LAMMPS granular "linear_history"): the
+// spring ft (history, N) turns with the tangent plane, grows by -kt_w vt dt and is capped at
+// mu fp, fp the compressive normal force. Coefficients: LawParams::kt (N/m), mu (-).
+// Stored: |ft|^2/(2 kt_w); slip under the cap dissipates (capped_spring). Active when mu > 0
+// and kt_w > 0 (a sub-contact at the band edge has w = 0). Stability: kt on the tangential
+// contact-point mass (sim/time_step.cpp).
+#include <cmath>
+
+#include "contact/law/types.hpp"
+
+namespace polydem {
+
+// Adds an increment to a spring (force or moment) and caps its length at `cap`, back-solving
+// the spring to the Coulomb limit (Luding 2008, Granular Matter 10:235, eqs. 17-19).
+// Returns J, the slip work: the work of the relative motion on the spring over the step (the
+// trapezoid rule velocity Verlet applies) minus the change of its energy, which reduces to
+// (|trial| - cap)(old . trial/|trial| + cap)/(2k): cap times the slip when sliding steadily,
+// the stored energy when the cap drops to 0, and 0 while sticking.
+[[gnu::always_inline]] inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+  const Vec3 old = spring;
+  spring += increment;
+  const double trial2 = spring.squaredNorm();
+  if (trial2 <= cap * cap) return 0.0;  // sticking, the common case: no square root
+  const double trial = std::sqrt(trial2);
+  const double along = old.dot(spring) / trial;  // old spring along the trial direction
+  spring *= cap / trial;
+  return (trial - cap) * (along + cap) / (2.0 * stiffness);
+}
+
+// Rotate ft into the plane normal to n keeping its length, add -kt_w vt dt, cap |ft| <= ft_max.
+// Returns J, the slip.
+[[gnu::always_inline]] inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& vt, double kt_w,
+                                                       double ft_max, double dt) {
+  const double length2 = ft.squaredNorm();
+  ft -= ft.dot(n) * n;
+  const double in_plane2 = ft.squaredNorm();
+  if (in_plane2 > 0.0) ft *= std::sqrt(length2 / in_plane2);
+  return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max);
+}
+
+// J, energy held by a spring of stiffness k (0 for k = 0: that spring is off).
+inline double spring_energy(const Vec3& f, double k) { return k > 0.0 ? 0.5 * f.squaredNorm() / k : 0.0; }
+
+// J, what a weight change from w_old to w_new adds to a spring of base stiffness k holding
+// f at fixed f: |f|^2/(2 k w_new) - |f|^2/(2 k w_old) (0 when the weight stays).
+inline double reweighted(const Vec3& f, double k, double w_old, double w_new) {
+  if (w_old == w_new) return 0.0;  // a lone contact, a steady patch: no division
+  return 0.5 * f.squaredNorm() * (w_old - w_new) / (k * w_old * w_new);
+}
+
+}  // namespace polydem

@@ -1,0 +1,85 @@
+#pragma once
+// What every part of the contact law reads and writes: the prepared coefficients, the
+// kinematics of one sub-contact, its history, and the force and energies it returns.
+#include <limits>
+
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+// Prepared once per parameter set (config or config_driver) by prepare_law. One flat struct
+// for every part (each part's header names its fields) rather than one struct per part: the
+// parts are stateless, and tests and the step policy read kn, alpha_n directly. Chosen: flat.
+// The normal part (with its damping) a law is made of.
+enum class NormalModel { linear, hertz };
+
+struct LawParams {
+  double kn, kt, kr, mur, mu;  // N/m, N/m, N m/rad, -, - (kn, kt: the linear law)
+  double alpha_n;              // -, damping ratio: from damp_rate, or solved so the clamped law returns en
+  double alpha_t;              // -, tangential damping ratio (damp_tangential; 0: none)
+  double fc, dncut;            // N, m (fc = 0: no cohesion)
+  bool cohesion, rolling, tangential_damping;  // chosen once: the parts the scene's law is composed of
+  NormalModel normal = NormalModel::linear;
+  double e_star = 0.0, g_star = 0.0;  // Pa, Hertz: effective Young and shear moduli of the pair
+};
+
+// m, the gap of a contact with no previous step (it starts now).
+constexpr double kNoGap = std::numeric_limits<double>::max();
+
+struct ContactHistory {
+  Vec3 ft = Vec3::Zero();  // N, tangential spring force
+  Vec3 mr = Vec3::Zero();  // N m, rolling spring moment
+  // The last step, for the energy budget only (the force does not read them):
+  double fd = 0.0;         // N, dashpot force (clamped normal force minus spring)
+  double gap = kNoGap;     // m (negative: overlap)
+  double weight = 1.0;     // -, patch share
+};
+
+struct ContactKinematics {
+  Vec3 normal;    // unit, from j to i
+  double dn;      // m, gap (negative: overlap)
+  Vec3 v_rel;     // m/s, velocity of i's contact point minus j's
+  Vec3 w_rel;     // rad/s, w_i - w_j
+  double m_eff;   // kg, m_i m_j/(m_i + m_j) (a driver: m_i)
+  double lever;   // m, from i's centre to the contact point (rolling cap)
+  double weight;  // -, patch share in (0, 1]: scales kn, kt, kr, nu and fc (1 for a lone contact)
+  double nu = -1.0;  // N s/m, the pair's dashpot 2 alpha_n sqrt(kn m_eff) before the weight, set once
+                     // per pair by the caller (one square root per pair, not per sub-contact); < 0: from m_eff
+  double nu_t = -1.0;  // N s/m, the pair's tangential dashpot 2 alpha_t sqrt(kt m_eff), likewise
+  double r_star = 0.0;  // m, the contact's curvature radius (normal_hertz.hpp; the linear law ignores it)
+};
+
+struct ContactForce {
+  Vec3 force;         // N, on i (j gets the opposite)
+  Vec3 moment;        // N m, rolling resistance moment on i (j gets the opposite)
+  double fn;          // N, normal force (positive repulsive)
+  double dissipated;  // J, dissipated this step by the dashpots, cohesion, sliding and rolling slip
+  double elastic;     // J, stored in the normal, cohesion, tangential and rolling springs
+  double patch = 0.0; // J, added to the springs this step by the change of the patch weight
+  double sliding = 0.0;  // J, the Coulomb slip's share of `dissipated` (tangential springs let go included)
+  double rolling = 0.0;  // J, the rolling slip's share of `dissipated` (rolling springs let go included)
+};
+
+// J over a step, by mechanism, summed per pair and over the run (energy.csv): `net` is the
+// ledger's `dissipated` (all dissipation less the patch work), `sliding` and `rolling` are
+// shares of it, `patch` what patch weight changes added to the springs.
+struct EnergyParts {
+  double net = 0.0, sliding = 0.0, rolling = 0.0, patch = 0.0;
+  EnergyParts& operator+=(const EnergyParts& o) {
+    net += o.net; sliding += o.sliding; rolling += o.rolling; patch += o.patch;
+    return *this;
+  }
+};
+
+inline EnergyParts energy_parts(const ContactForce& f) { return {f.dissipated - f.patch, f.sliding, f.rolling, f.patch}; }
+
+// J, stored by a contact, per spring (energy.csv's elastic_* columns; their sum is `elastic`).
+struct StoredParts {
+  double normal = 0.0, tangential = 0.0, rolling = 0.0;  // normal: spring and cohesion
+  StoredParts& operator+=(const StoredParts& o) {
+    normal += o.normal; tangential += o.tangential; rolling += o.rolling;
+    return *this;
+  }
+};
+
+}  // namespace polydem
