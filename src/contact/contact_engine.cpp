@@ -65,14 +65,10 @@ struct DriverPartner {
   bool apart(const PairList&, std::uint32_t, double) const { return false; }  // a moving driver has no bound
   double moved(std::uint32_t, std::uint32_t) const { return 0.0; }  // its slots' gaps are -inf
   bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
-  double radius(std::uint32_t j) const {  // balls and outer cylinders are rounded cores (a point, a segment)
-    const DriverSpec& d = (*drivers)[j].spec;
-    const bool rounded = d.kind == DriverSpec::Kind::ball || (d.kind == DriverSpec::Kind::cylinder && !d.inside);
-    return rounded ? d.radius : 0.0;
-  }
+  double radius(std::uint32_t j) const { return drivers->rounding(j); }  // balls and posts: a rounded point, segment
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
-    const Driver& d = (*drivers)[j];
+    const DriverState& d = (*drivers)[j];
     return {d.velocity, d.omega, d.pivot};
   }
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
@@ -291,8 +287,8 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
 // may have moved half the skin where bodies are (translation, plus turning times the lever).
 bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers_at_build_.size(); ++j) {
-    const Driver& now = drivers[j];
-    const Driver& then = drivers_at_build_[j];
+    const DriverState& now = drivers[j];
+    const DriverState& then = drivers_at_build_[j];
     if (now.active != then.active) continue;  // a removed driver only loses contacts
     const double shift = (now.point - then.point).norm() + (now.center - then.center).norm() +
                          driver_lever_ * ((now.normal - then.normal).norm() + (now.axis - then.axis).norm());
@@ -377,7 +373,7 @@ void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
   for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable
     if (!driver_list_.touching[k]) continue;
-    Driver& d = drivers[driver_list_.pairs[k].j];
+    DriverState& d = drivers[driver_list_.pairs[k].j];
     d.force -= driver_list_.force_i[k];
     d.torque += driver_list_.torque_j[k];
   }

@@ -71,7 +71,7 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   PairList body_list_, driver_list_;
-  std::vector<Driver> drivers_at_build_;   // driver placements when the lists were built
+  std::vector<DriverState> drivers_at_build_;   // driver placements when the lists were built
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
   ContactStats stats_;

@@ -67,7 +67,7 @@ void Simulation::external_forces() {
 // Particles get -force and -torque (about the centre) of each driver.
 void Simulation::driver_work_half() {
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
-    const Driver& d = drivers[j];
+    const DriverState& d = drivers[j];
     ledger.driver_work -= 0.5 * (d.force.dot(drivers.velocity_at(j, drivers.center(j))) + d.torque.dot(d.omega)) * dt_;
   }
 }
