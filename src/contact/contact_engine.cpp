@@ -273,7 +273,7 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
   drivers_at_build_.clear();
   std::vector<Vec3> centers;  // m
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
-    drivers_at_build_.push_back(drivers[j]);
+    drivers_at_build_.push_back({drivers[j], drivers[j].active});
     centers.push_back(drivers.center(j));
   }
   std::vector<double> lever(bodies.size(), 0.0);  // m, per body: the max is exact in any order
@@ -288,8 +288,8 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
 bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers_at_build_.size(); ++j) {
     const DriverState& now = drivers[j];
-    const DriverState& then = drivers_at_build_[j];
-    if (now.active != then.active) continue;  // a removed driver only loses contacts
+    const Placement& then = drivers_at_build_[j].placement;
+    if (now.active != drivers_at_build_[j].active) continue;  // a removed driver only loses contacts
     const double shift = (now.point - then.point).norm() + (now.center - then.center).norm() +
                          driver_lever_ * ((now.normal - then.normal).norm() + (now.axis - then.axis).norm());
     if (shift > 0.5 * settings_.skin) return true;

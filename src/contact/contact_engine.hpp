@@ -71,7 +71,13 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   PairList body_list_, driver_list_;
-  std::vector<DriverState> drivers_at_build_;   // driver placements when the lists were built
+  // Each driver's placement and whether it was active when the lists were built: all the
+  // rebuild trigger compares (no names, shapes or meshes copied at a rebuild).
+  struct DriverAtBuild {
+    Placement placement;
+    bool active;
+  };
+  std::vector<DriverAtBuild> drivers_at_build_;
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
   ContactStats stats_;
