@@ -1,22 +1,21 @@
 #pragma once
 // A scene file parsed into plain settings structs, one per YAML block (see shared/SCENE.md).
-// Every field is SI; the parser converts unit strings ("5 mm", "30 rpm") on the way in.
+// Every field is SI; the parser converts unit strings ("5 mm", "30 rpm") on the way in. The
+// drivers and the field forces are the stages' own settings (driver/, field/): the parser
+// builds them, the simulation hands them over.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "driver/driver_settings.hpp"
+#include "field/field_settings.hpp"
 #include "polydem/contact_params.hpp"
 #include "polydem/math.hpp"
+#include "polydem/source_loc.hpp"
 
 namespace polydem {
-
-// Where a value came from, for error messages: "scene.yaml:12: key 'radius': ...".
-struct SourceLoc {
-  std::string file;
-  int line = 0;  // 1-based; 0 when unknown
-};
 
 struct SimulationSettings {
   double duration = 1.0;          // s of simulated time
@@ -59,41 +58,6 @@ struct GeneratorSpec {            // `generate: random` or `generate: lattice`
   SourceLoc shapes_loc;           // the `shapes` line: unknown names in the mix are reported there
 };
 
-struct Motion {                   // how a driver moves; fixed when all are unset
-  Vec3 velocity = Vec3::Zero();   // m/s, constant translation
-  bool rotates = false;
-  Vec3 rotation_axis = Vec3::UnitZ();     // unit
-  Vec3 rotation_center = Vec3::Zero();    // m
-  double omega = 0.0;             // rad/s
-  std::optional<double> force;    // N along the driver normal/axis (servo)
-  std::optional<double> pressure; // Pa (servo, force = pressure x area)
-  std::optional<double> area;     // m^2, the area the servo pressure acts on
-  std::optional<double> gain;     // m/(N s), servo speed per newton of force error; empty: 0.1 / (kn dt)
-  std::optional<Vec3> direction;  // unit, servo direction of a ball or mesh (wall: normal; cylinder: axis)
-  std::optional<double> remove_at;  // s, the driver disappears at this time
-  double start = 0.0;             // s, motion begins
-  std::optional<double> stop;     // s, motion ends
-};
-
-struct DriverSpec {
-  enum class Kind { wall, cylinder, ball, stl } kind = Kind::wall;
-  std::string name;
-  Vec3 point = Vec3::Zero();      // m, wall: a point on the plane
-  Vec3 normal = Vec3::UnitZ();    // wall: unit normal towards the particles
-  Vec3 center = Vec3::Zero();     // m, cylinder: middle of its axis; ball: centre
-  Vec3 axis = Vec3::UnitZ();      // cylinder axis, unit
-  double radius = 0.0;            // m, cylinder / ball
-  std::optional<double> length;   // m, cylinder; empty: infinite
-  bool inside = true;             // cylinder: particles inside
-  std::string file;               // stl: path (resolved against the scene folder)
-  SourceLoc file_loc;             // stl: the `file` key, for errors in the file
-  double scale = 1.0;             // stl
-  Vec3 translation = Vec3::Zero();  // m, stl placement
-  Quat rotation = Quat::Identity(); // stl placement
-  Motion motion;
-  SourceLoc loc;
-};
-
 struct ContactOperator {          // contact_sphere / contact_polyhedron [_with_cohesion]
   bool present = false;
   bool sphere = false;            // contact_sphere*: the scene promises spheres only
@@ -104,36 +68,9 @@ struct ContactOperator {          // contact_sphere / contact_polyhedron [_with_
   SourceLoc loc;
 };
 
-struct ForceSettings {
-  std::optional<Vec3> gravity;    // m/s^2, gravity_force; empty: no gravity
+// The `forces:` list: the field stage's operators and the contact law.
+struct ForceSettings : FieldSettings {
   ContactOperator contact;
-  struct Quadratic { double cx = 0.38, mu = 0.000015; };
-  std::optional<Quadratic> quadratic;     // quadratic_force
-  struct FluidFriction { std::string field; double cx = 1.0; };  // field: a .vti, or "" (fluid_field)
-  std::optional<FluidFriction> fluid_friction;  // sphere_fluid_friction
-  // fluid_field: the prescribed fluid on a regular grid of cells, from a .vti file or analytic:
-  // U(x) = velocity + velocity_gradient (x - reference), p(x) = pressure + pressure_gradient . (x - reference).
-  struct FluidField {
-    std::string file;             // .vti (resolved); empty: the analytic field on the grid below
-    Vec3 grid_min = Vec3::Zero(), grid_max = Vec3::Zero();  // m, analytic grid box
-    Eigen::Vector3i cells = Eigen::Vector3i::Ones();  // analytic grid cells per axis
-    Vec3 velocity = Vec3::Zero();           // m/s at `reference`
-    Mat3 velocity_gradient = Mat3::Zero();  // 1/s, shear or solid-body rotation
-    Vec3 reference = Vec3::Zero();          // m
-    double pressure = 0.0;                  // Pa at `reference`
-    Vec3 pressure_gradient = Vec3::Zero();  // Pa/m, hydrostatic: rho g
-    std::optional<double> rho, nu;          // kg/m^3, m^2/s; with a file: used when it lacks the array
-    bool trilinear = false;       // sampling: the particle's cell value, or trilinear between cell centres
-    SourceLoc loc, file_loc;      // the operator, and the key naming the file (for file errors)
-    std::string file_key = "file";  // that key: file, or sphere_fluid_friction's field
-  };
-  std::optional<FluidField> fluid;
-  struct CfdForce { double added_mass = 0.0; };  // C_added_mass, dimensionless
-  std::optional<CfdForce> pressure_force;        // pressure_force: -Vs grad(p) (1 + C_added_mass)
-  std::optional<CfdForce> viscous_force;         // viscous_force: -Vs div(tau) (1 + C_added_mass)
-  bool archimedes = false;                       // archimedes_force: -rho_f Vs g
-  struct VoidFraction { double alpha_min = 0.0; int samples = 6; };  // samples: lattice points per axis
-  std::optional<VoidFraction> void_fraction;     // void_fraction: Vs split among cells
 };
 
 struct OutputSettings {
@@ -166,7 +103,7 @@ struct Scene {
   std::vector<std::string> shape_files;   // resolved paths
   std::vector<BodySpec> bodies;
   std::vector<GeneratorSpec> generators;
-  std::vector<DriverSpec> drivers;
+  std::vector<DriverSettings> drivers;
   ForceSettings forces;
   OutputSettings output;
 };

@@ -56,17 +56,6 @@ struct BodyPartner {
   }
 };
 
-// m, Hertz's R* = sqrt(R' R'') of a body of rounding r_i on driver d, R' and R'' the principal
-// radii of the relative curvature: a wall or a mesh is flat (R* = r_i), a ball of radius R
-// curves both ways (1/R' = 1/R'' = 1/r_i + 1/R), a cylinder one way (+1/R outside, -1/R seen
-// from inside a drum).
-double driver_r_star(const DriverSpec& d, double r_i) {
-  if (d.kind == DriverSpec::Kind::ball) return r_i * d.radius / (r_i + d.radius);
-  if (d.kind != DriverSpec::Kind::cylinder) return r_i;
-  const double curved = 1.0 / r_i + (d.inside ? -1.0 : 1.0) / d.radius;  // 1/m
-  return std::sqrt(r_i / curved);
-}
-
 // The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC).
 struct DriverPartner {
   const Drivers* drivers;
@@ -77,15 +66,11 @@ struct DriverPartner {
   bool apart(const PairList&, std::uint32_t, double) const { return false; }  // a moving driver has no bound
   double moved(std::uint32_t, std::uint32_t) const { return 0.0; }  // its slots' gaps are -inf
   bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
-  double radius(std::uint32_t j) const {  // balls and outer cylinders are rounded cores (a point, a segment)
-    const DriverSpec& d = (*drivers)[j].spec;
-    const bool rounded = d.kind == DriverSpec::Kind::ball || (d.kind == DriverSpec::Kind::cylinder && !d.inside);
-    return rounded ? d.radius : 0.0;
-  }
-  double r_star(double r_i, std::uint32_t j) const { return driver_r_star((*drivers)[j].spec, r_i); }  // m
+  double radius(std::uint32_t j) const { return drivers->rounding(j); }  // balls and posts: a rounded point, segment
+  double r_star(double r_i, std::uint32_t j) const { return drivers->r_star(j, r_i); }  // m
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
-    const Driver& d = (*drivers)[j];
+    const DriverState& d = (*drivers)[j];
     return {d.velocity, d.omega, d.pivot};
   }
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
@@ -290,7 +275,7 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
   drivers_at_build_.clear();
   std::vector<Vec3> centers;  // m
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
-    drivers_at_build_.push_back(drivers[j]);
+    drivers_at_build_.push_back({drivers[j], drivers[j].active});
     centers.push_back(drivers.center(j));
   }
   std::vector<double> lever(bodies.size(), 0.0);  // m, per body: the max is exact in any order
@@ -304,9 +289,9 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
 // may have moved half the skin where bodies are (translation, plus turning times the lever).
 bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers_at_build_.size(); ++j) {
-    const Driver& now = drivers[j];
-    const Driver& then = drivers_at_build_[j];
-    if (now.active != then.active) continue;  // a removed driver only loses contacts
+    const DriverState& now = drivers[j];
+    const Placement& then = drivers_at_build_[j].placement;
+    if (now.active != drivers_at_build_[j].active) continue;  // a removed driver only loses contacts
     const double shift = (now.point - then.point).norm() + (now.center - then.center).norm() +
                          driver_lever_ * ((now.normal - then.normal).norm() + (now.axis - then.axis).norm());
     if (shift > 0.5 * settings_.skin) return true;
@@ -366,13 +351,13 @@ static void add_stored_energy(const PairList& list, const LawParams& law, const 
   }
 }
 
-StoredParts ContactEngine::elastic() const {
+StoredParts ContactEngine::elastic(const Drivers& drivers) const {
   StoredParts total;  // J
   add_stored_energy(body_list_, settings_.particle, [&](BodyPair p) {
     return radius_[p.i] * radius_[p.j] / (radius_[p.i] + radius_[p.j]);
   }, total);
   add_stored_energy(driver_list_, settings_.driver, [&](BodyPair p) {
-    return driver_r_star(drivers_at_build_[p.j].spec, radius_[p.i]);
+    return drivers.r_star(p.j, radius_[p.i]);
   }, total);
   return total;
 }
@@ -399,7 +384,7 @@ void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
   for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable
     if (!driver_list_.touching[k]) continue;
-    Driver& d = drivers[driver_list_.pairs[k].j];
+    DriverState& d = drivers[driver_list_.pairs[k].j];
     d.force -= driver_list_.force_i[k];
     d.torque += driver_list_.torque_j[k];
   }

@@ -39,7 +39,7 @@ class ContactEngine {
 
   const ContactStats& stats() const { return stats_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps only).
-  StoredParts elastic() const;
+  StoredParts elastic(const Drivers& drivers) const;
   const PairList& body_pairs() const { return body_list_; }
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }
@@ -71,7 +71,13 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   PairList body_list_, driver_list_;
-  std::vector<Driver> drivers_at_build_;   // driver placements when the lists were built
+  // Each driver's placement and whether it was active when the lists were built: all the
+  // rebuild trigger compares (no names, shapes or meshes copied at a rebuild).
+  struct DriverAtBuild {
+    Placement placement;
+    bool active;
+  };
+  std::vector<DriverAtBuild> drivers_at_build_;
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
   ContactStats stats_;

@@ -7,11 +7,11 @@
 
 namespace polydem {
 
-bool ExternalForces::wanted(const ForceSettings& f) {
+bool ExternalForces::wanted(const FieldSettings& f) {
   return f.quadratic || f.fluid_friction || f.pressure_force || f.viscous_force || f.archimedes || f.fluid;
 }
 
-ExternalForces::ExternalForces(const ForceSettings& f, const std::vector<Shape>& shapes, const Bodies& bodies) {
+ExternalForces::ExternalForces(const FieldSettings& f, const std::vector<Shape>& shapes, const Bodies& bodies) {
   quadratic_on_ = f.quadratic.has_value();
   if (f.quadratic) quadratic_ = *f.quadratic;
   if (f.fluid_friction) friction_cx_ = f.fluid_friction->cx;

@@ -11,7 +11,7 @@
 #include "field/fluid_grid.hpp"
 #include "field/void_fraction.hpp"
 #include "polydem/bodies.hpp"
-#include "polydem/scene.hpp"
+#include "field/field_settings.hpp"
 #include "polydem/shape.hpp"
 
 namespace polydem {
@@ -19,10 +19,10 @@ namespace polydem {
 class ExternalForces {
  public:
   // Whether `forces` holds an operator this class applies.
-  static bool wanted(const ForceSettings& forces);
+  static bool wanted(const FieldSettings& forces);
 
   // Reads the fluid grid (InputError at the scene key for a bad file).
-  ExternalForces(const ForceSettings& forces, const std::vector<Shape>& shapes, const Bodies& bodies);
+  ExternalForces(const FieldSettings& forces, const std::vector<Shape>& shapes, const Bodies& bodies);
 
   // Adds each operator's force to bodies.force; returns their power sum_b f_b . v_b (W),
   // summed in body order.
@@ -39,7 +39,7 @@ class ExternalForces {
  private:
   Vec3 grid_force(const Bodies& bodies, std::size_t b) const;
 
-  ForceSettings::Quadratic quadratic_{};
+  FieldSettings::Quadratic quadratic_{};
   bool quadratic_on_ = false;
   std::optional<double> friction_cx_;          // sphere_fluid_friction
   std::optional<double> pressure_, viscous_;   // 1 + C_added_mass

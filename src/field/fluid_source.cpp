@@ -37,7 +37,7 @@ std::string array_names(const VtiImage& img) {
   return s.empty() ? "none" : s;
 }
 
-FluidGrid grid_from_file(const ForceSettings::FluidField& f, const FluidNeeds& needs) {
+FluidGrid grid_from_file(const FieldSettings::FluidField& f, const FluidNeeds& needs) {
   const VtiImage img = read_vti(f.file);
   FluidGrid g;
   g.cells = img.cell_data ? (img.points - Index3::Ones()).cwiseMax(1) : img.points;
@@ -61,7 +61,7 @@ FluidGrid grid_from_file(const ForceSettings::FluidField& f, const FluidNeeds& n
   return g;
 }
 
-FluidGrid grid_from_fields(const ForceSettings::FluidField& f) {
+FluidGrid grid_from_fields(const FieldSettings::FluidField& f) {
   FluidGrid g;
   g.origin = f.grid_min;
   g.cells = f.cells;
@@ -83,7 +83,7 @@ FluidGrid grid_from_fields(const ForceSettings::FluidField& f) {
 
 }  // namespace
 
-FluidNeeds fluid_needs(const ForceSettings& forces) {
+FluidNeeds fluid_needs(const FieldSettings& forces) {
   FluidNeeds n;
   n.U = forces.fluid_friction.has_value() || forces.viscous_force.has_value();
   n.p = n.grad_p = forces.pressure_force.has_value();
@@ -92,7 +92,7 @@ FluidNeeds fluid_needs(const ForceSettings& forces) {
   return n;
 }
 
-FluidGrid make_fluid_grid(const ForceSettings::FluidField& f, const FluidNeeds& needs) {
+FluidGrid make_fluid_grid(const FieldSettings::FluidField& f, const FluidNeeds& needs) {
   FluidGrid g;
   try {
     g = f.file.empty() ? grid_from_fields(f) : grid_from_file(f, needs);

@@ -159,7 +159,7 @@ void place_lattice(const GeneratorSpec& g, const Region& region, const DriverCle
 std::vector<BodySpec> expand_bodies(const Scene& scene, const ShapeLibrary& lib) {
   std::vector<BodySpec> out;
   // Built only when a generator needs it: a scene without generators reads no STL here.
-  const DriverClearance drivers(scene.generators.empty() ? std::vector<DriverSpec>{}
+  const DriverClearance drivers(scene.generators.empty() ? std::vector<DriverSettings>{}
                                                          : scene.drivers);
   for (const BodySpec& b : scene.bodies) {
     check_sphere(scene, lib.shapes[shape_index(lib, b.shape, b.loc, "shape")], b.loc, "shape");

@@ -162,24 +162,22 @@ void SphereGrid::insert(const Vec3& center, double radius) {
   radii_.push_back(radius);
 }
 
-DriverClearance::DriverClearance(const std::vector<DriverSpec>& drivers) {
-  for (const DriverSpec& d : drivers) {
+DriverClearance::DriverClearance(const std::vector<DriverSettings>& drivers) {
+  for (const DriverSettings& d : drivers) {
     if (d.motion.remove_at && *d.motion.remove_at <= 0.0) continue;  // gone at t = 0
-    if (d.kind == DriverSpec::Kind::stl)
-      meshes_.push_back(load_mesh(d));
+    if (const MeshSettings* mesh = std::get_if<MeshSettings>(&d.kind))
+      meshes_.push_back(load_mesh(*mesh));
     else
-      shapes_.push_back(d);
+      shapes_.push_back(d.kind);
   }
 }
 
-DriverClearance::Mesh DriverClearance::load_mesh(const DriverSpec& s) {
-  const SourceLoc& at = s.file_loc.file.empty() ? s.loc : s.file_loc;
+DriverClearance::Mesh DriverClearance::load_mesh(const MeshSettings& s) {
   TriangleMesh file;
   try {
     file = read_stl(s.file);
   } catch (const InputError& e) {
-    throw InputError(
-        input_message(at.file, at.line, "file", "driver '" + s.name + "': " + e.what()));
+    throw InputError(s.where + e.what());
   }
   Mesh m;
   const Quat q = s.rotation.normalized();
@@ -253,15 +251,13 @@ bool DriverClearance::mesh_clear(const Mesh& m, const Vec3& center, double radiu
   return true;
 }
 
-bool DriverClearance::shape_clear(const DriverSpec& s, const Vec3& center, double radius,
+bool DriverClearance::shape_clear(const KindSettings& kind, const Vec3& center, double radius,
                                   double touch) {
-  switch (s.kind) {
-    case DriverSpec::Kind::wall:  // the particles' side is along the normal
-      return (center - s.point).dot(s.normal.normalized()) > radius - touch;
-    case DriverSpec::Kind::ball:
-      return (center - s.center).norm() > s.radius + radius - touch;
-    default: break;
-  }
+  if (const WallSettings* s = std::get_if<WallSettings>(&kind))  // the particles' side is along the normal
+    return (center - s->point).dot(s->normal.normalized()) > radius - touch;
+  if (const BallSettings* s = std::get_if<BallSettings>(&kind))
+    return (center - s->center).norm() > s->radius + radius - touch;
+  const CylinderSettings& s = std::get<CylinderSettings>(kind);
   const Vec3 axis = s.axis.normalized();
   const Vec3 rel = center - s.center;
   double along = rel.dot(axis);
@@ -275,7 +271,7 @@ bool DriverClearance::shape_clear(const DriverSpec& s, const Vec3& center, doubl
 
 bool DriverClearance::clear(const Vec3& center, double radius) const {
   const double touch = 1e-9 * radius;  // m, round-off of a sphere placed exactly against a driver
-  for (const DriverSpec& s : shapes_)
+  for (const KindSettings& s : shapes_)
     if (!shape_clear(s, center, radius, touch)) return false;
   for (const Mesh& m : meshes_)
     if (!mesh_clear(m, center, radius, touch)) return false;

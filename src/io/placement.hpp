@@ -61,7 +61,7 @@ class SphereGrid {
 class DriverClearance {
  public:
   // Reads the STL meshes; throws InputError (file, line, key) for a missing or broken one.
-  explicit DriverClearance(const std::vector<DriverSpec>& drivers);
+  explicit DriverClearance(const std::vector<DriverSettings>& drivers);
 
   // True when a sphere overlaps no driver (an overlap below 1e-9 x radius is a touch).
   bool clear(const Vec3& center, double radius) const;
@@ -75,11 +75,11 @@ class DriverClearance {
     std::array<int, 3> dims{1, 1, 1};
     std::vector<std::uint32_t> begin, entries;   // CSR: triangles of each cell
   };
-  static Mesh load_mesh(const DriverSpec& s);
+  static Mesh load_mesh(const MeshSettings& s);
   static bool mesh_clear(const Mesh& m, const Vec3& center, double radius, double touch);
-  static bool shape_clear(const DriverSpec& s, const Vec3& center, double radius, double touch);
+  static bool shape_clear(const KindSettings& kind, const Vec3& center, double radius, double touch);
 
-  std::vector<DriverSpec> shapes_;  // walls, cylinders, balls
+  std::vector<KindSettings> shapes_;  // walls, cylinders, balls
   std::vector<Mesh> meshes_;
 };
 

@@ -8,12 +8,13 @@
 namespace polydem {
 namespace {
 
+// The YAML name of each kind, in the order of KindSettings' alternatives.
 const std::vector<std::string> kDriverKinds = {"wall", "cylinder", "ball", "stl"};
 
 // Servo keys: force (N) or pressure (Pa) with area (m^2, a number); gain (m/(N s), a number;
 // default 0.1 / (kn dt)); direction for a ball or a mesh (a wall uses its normal, a cylinder
 // its axis).
-void read_servo(const YamlMap& m, DriverSpec::Kind kind, Motion& motion) {
+void read_servo(const YamlMap& m, bool own_direction, MotionSettings& motion) {
   if (m.has("force") && m.has("pressure"))
     m.fail("pressure", "give either force or pressure for a servo driver, not both");
   motion.force = m.optional_quantity("force", Dimension::force);
@@ -26,7 +27,6 @@ void read_servo(const YamlMap& m, DriverSpec::Kind kind, Motion& motion) {
     motion.area = check_positive(m, "area", m.quantity("area", Dimension::dimensionless));
   }
   if (m.has("gain")) motion.gain = check_positive(m, "gain", m.quantity("gain", Dimension::dimensionless));
-  const bool own_direction = kind == DriverSpec::Kind::ball || kind == DriverSpec::Kind::stl;
   if (servo && own_direction) {
     m.require("direction", "direction: [0, 0, -1]   # the servo pushes along it");
     motion.direction = m.direction("direction", Vec3::UnitZ());
@@ -35,8 +35,9 @@ void read_servo(const YamlMap& m, DriverSpec::Kind kind, Motion& motion) {
   }
 }
 
-Motion read_motion(const YamlMap& driver, DriverSpec::Kind kind) {
-  Motion motion;
+// `own_direction`: the kind has no servo direction of its own (ball, mesh): motion.direction gives it.
+MotionSettings read_motion(const YamlMap& driver, bool own_direction) {
+  MotionSettings motion;
   if (!driver.has("motion")) return motion;
   const YamlMap m = driver.map("motion", "motion",
                                {"velocity", "rotate", "force", "pressure", "area", "gain", "direction",
@@ -50,7 +51,7 @@ Motion read_motion(const YamlMap& driver, DriverSpec::Kind kind) {
     motion.rotation_center = r.vec3("center", Dimension::length, Vec3::Zero());
     motion.omega = r.quantity("omega", Dimension::angular_velocity);
   }
-  read_servo(m, kind, motion);
+  read_servo(m, own_direction, motion);
   if (m.has("remove_at"))
     motion.remove_at =
         check_positive(m, "remove_at", m.quantity("remove_at", Dimension::time), true);
@@ -60,70 +61,71 @@ Motion read_motion(const YamlMap& driver, DriverSpec::Kind kind) {
   return motion;
 }
 
-void read_wall(const YamlMap& m, DriverSpec& d) {
-  d.point = m.vec3("point", Dimension::length);
+KindSettings read_wall(const YamlMap& m, const Scene&) {
+  WallSettings w;
+  w.point = m.vec3("point", Dimension::length);
   m.require("normal", "normal: [0, 0, 1]");
-  d.normal = m.direction("normal", Vec3::UnitZ());
+  w.normal = m.direction("normal", Vec3::UnitZ());
+  return w;
 }
 
-void read_cylinder(const YamlMap& m, DriverSpec& d) {
-  d.center = m.vec3("center", Dimension::length);
-  d.axis = m.direction("axis", Vec3::UnitZ());
-  d.radius = check_positive(m, "radius", m.quantity("radius", Dimension::length));
+KindSettings read_cylinder(const YamlMap& m, const Scene&) {
+  CylinderSettings c;
+  c.center = m.vec3("center", Dimension::length);
+  c.axis = m.direction("axis", Vec3::UnitZ());
+  c.radius = check_positive(m, "radius", m.quantity("radius", Dimension::length));
   if (m.has("length"))
-    d.length = check_positive(m, "length", m.quantity("length", Dimension::length));
-  d.inside = m.boolean("inside", true);
+    c.length = check_positive(m, "length", m.quantity("length", Dimension::length));
+  c.inside = m.boolean("inside", true);
+  return c;
 }
 
-void read_ball(const YamlMap& m, DriverSpec& d) {
-  d.center = m.vec3("center", Dimension::length);
-  d.radius = check_positive(m, "radius", m.quantity("radius", Dimension::length));
+KindSettings read_ball(const YamlMap& m, const Scene&) {
+  BallSettings b;
+  b.center = m.vec3("center", Dimension::length);
+  b.radius = check_positive(m, "radius", m.quantity("radius", Dimension::length));
+  return b;
 }
 
-void read_stl(const YamlMap& m, DriverSpec& d, const std::string& folder) {
-  d.file = resolve_input_file(m, "file", folder, "STL file");
-  d.file_loc = m.loc("file");
-  d.scale = check_positive(m, "scale", m.quantity("scale", Dimension::dimensionless, 1.0));
-  d.translation = m.vec3("translation", Dimension::length, Vec3::Zero());
-  d.rotation = m.orientation("rotation");
+KindSettings read_stl(const YamlMap& m, const Scene& scene) {
+  MeshSettings s;
+  s.file = resolve_input_file(m, "file", scene.folder, "STL file");
+  s.scale = check_positive(m, "scale", m.quantity("scale", Dimension::dimensionless, 1.0));
+  s.translation = m.vec3("translation", Dimension::length, Vec3::Zero());
+  s.rotation = m.orientation("rotation");
+  return s;
 }
 
-std::vector<std::string> keys_of(DriverSpec::Kind kind) {
-  switch (kind) {
-    case DriverSpec::Kind::wall:
-      return {"name", "point", "normal", "motion"};
-    case DriverSpec::Kind::cylinder:
-      return {"name", "center", "axis", "radius", "length", "inside", "motion"};
-    case DriverSpec::Kind::ball:
-      return {"name", "center", "radius", "motion"};
-    case DriverSpec::Kind::stl:
-      return {"name", "file", "scale", "translation", "rotation", "motion"};
-  }
-  return {};
+// The parser entry of each kind, in the order of kDriverKinds: its keys and its reader.
+struct KindEntry {
+  std::vector<std::string> keys;
+  KindSettings (*read)(const YamlMap&, const Scene&);
+  bool own_direction;  // a servo needs motion.direction
+};
+
+const KindEntry& kind_entry(std::size_t kind) {
+  static const KindEntry entries[] = {
+      {{"name", "point", "normal", "motion"}, read_wall, false},
+      {{"name", "center", "axis", "radius", "length", "inside", "motion"}, read_cylinder, false},
+      {{"name", "center", "radius", "motion"}, read_ball, true},
+      {{"name", "file", "scale", "translation", "rotation", "motion"}, read_stl, true},
+  };
+  return entries[kind];
 }
 
-DriverSpec read_driver(const YAML::Node& item, std::size_t index, const Scene& scene, int line) {
+DriverSettings read_driver(const YAML::Node& item, std::size_t index, const Scene& scene, int line) {
   const auto [kind_name, body] = single_entry(item, scene.path, "drivers", kDriverKinds);
-  DriverSpec d;
-  d.kind = static_cast<DriverSpec::Kind>(
-      std::find(kDriverKinds.begin(), kDriverKinds.end(), kind_name) - kDriverKinds.begin());
-  const YamlMap m(body, kind_name, scene.path, line_of(item, line), keys_of(d.kind));
+  const std::size_t kind = std::find(kDriverKinds.begin(), kDriverKinds.end(), kind_name) - kDriverKinds.begin();
+  const KindEntry& entry = kind_entry(kind);
+  const YamlMap m(body, kind_name, scene.path, line_of(item, line), entry.keys);
+  DriverSettings d;
   d.name = m.text("name", kind_name + "_" + std::to_string(index + 1));
-  switch (d.kind) {
-    case DriverSpec::Kind::wall:
-      read_wall(m, d);
-      break;
-    case DriverSpec::Kind::cylinder:
-      read_cylinder(m, d);
-      break;
-    case DriverSpec::Kind::ball:
-      read_ball(m, d);
-      break;
-    case DriverSpec::Kind::stl:
-      read_stl(m, d, scene.folder);
-      break;
+  d.kind = entry.read(m, scene);
+  if (MeshSettings* mesh = std::get_if<MeshSettings>(&d.kind)) {  // its file's errors name the key and the driver
+    const SourceLoc at = m.loc("file");
+    mesh->where = input_message(at.file, at.line, "file", "driver '" + d.name + "': ");
   }
-  d.motion = read_motion(m, d.kind);
+  d.motion = read_motion(m, entry.own_direction);
   d.loc = {scene.path, m.line()};
   return d;
 }
@@ -135,7 +137,7 @@ void read_drivers(const YAML::Node& list, int line, Scene& scene) {
                    "- wall: {point: [0, 0, 0], normal: [0, 0, 1]}");
   std::map<std::string, int> name_lines;
   for (const YAML::Node& item : list) {
-    DriverSpec d = read_driver(item, scene.drivers.size(), scene, line);
+    DriverSettings d = read_driver(item, scene.drivers.size(), scene, line);
     const auto [it, fresh] = name_lines.emplace(d.name, d.loc.line);
     if (!fresh)
       throw InputError(input_message(scene.path, d.loc.line, "name",

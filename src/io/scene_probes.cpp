@@ -36,17 +36,18 @@ OutputSettings::FlowProbe read_flow(const YamlMap& m) {
   return p;
 }
 
-const DriverSpec& drum_driver(const YamlMap& m, const Scene& scene) {
+// The drum's name and axis (unit).
+std::pair<std::string, Vec3> drum_driver(const YamlMap& m, const Scene& scene) {
   m.require("driver", "driver: drum (the name of a cylinder driver)");
   const std::string name = m.scalar("driver");
   std::vector<std::string> names;
-  for (const DriverSpec& d : scene.drivers) {
+  for (const DriverSettings& d : scene.drivers) {
+    const CylinderSettings* cylinder = std::get_if<CylinderSettings>(&d.kind);
     if (d.name == name) {
-      if (d.kind != DriverSpec::Kind::cylinder)
-        m.fail("driver", "'" + name + "' is not a cylinder: the angle of repose is measured in a drum");
-      return d;
+      if (!cylinder) m.fail("driver", "'" + name + "' is not a cylinder: the angle of repose is measured in a drum");
+      return {d.name, cylinder->axis};
     }
-    if (d.kind == DriverSpec::Kind::cylinder) names.push_back(d.name);
+    if (cylinder) names.push_back(d.name);
   }
   m.fail("driver", "no cylinder driver named '" + name + "'" +
                        (names.empty() ? std::string(" (the scene has none)") : did_you_mean(name, names)));
@@ -56,13 +57,13 @@ OutputSettings::ReposeProbe read_repose(const YamlMap& m, const Scene& scene) {
   OutputSettings::ReposeProbe p;
   p.name = m.text("name", "angle");
   p.loc = {m.file(), m.line()};
-  const DriverSpec& drum = drum_driver(m, scene);
-  p.driver = drum.name;
+  const auto [drum, axis] = drum_driver(m, scene);
+  p.driver = drum;
   const std::optional<Vec3>& g = scene.forces.gravity;
   if (!g || g->norm() == 0.0)
     m.fail("driver", "the angle of repose is measured against gravity: add `- gravity_force: {}` to forces");
-  if (g->cross(drum.axis).norm() < 1e-6 * g->norm())
-    m.fail("driver", "the drum '" + drum.name + "' has its axis along gravity: its free surface has no slope");
+  if (g->cross(axis).norm() < 1e-6 * g->norm())
+    m.fail("driver", "the drum '" + drum + "' has its axis along gravity: its free surface has no slope");
   if (m.has("column")) p.column = check_positive(m, "column", m.quantity("column", Dimension::length));
   p.fit = m.quantity("fit", Dimension::dimensionless, p.fit);
   if (!(p.fit > 0.0 && p.fit <= 1.0)) m.fail("fit", "must be in (0, 1], got " + m.scalar("fit"));

@@ -128,7 +128,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Outp
   w.array(b.angular_momentum); w.array(b.force); w.array(b.torque);
   w.pod<std::uint64_t>(sim.drivers.size());
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
-    const Driver& d = sim.drivers[j];
+    const DriverState& d = sim.drivers[j];
     driver_fields(w, d);
   }
   write_active(w, sim.engine().body_pairs());
@@ -173,7 +173,7 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   r.pod(nd);
   if (nd != sim.drivers.size()) throw InputError(path + ": checkpoint driver count differs from the scene's");
   for (std::size_t j = 0; j < nd; ++j) {
-    Driver& d = sim.drivers[j];
+    DriverState& d = sim.drivers[j];
     driver_fields(r, d);
   }
   read_active(r, sim.engine().body_pairs());

@@ -65,7 +65,7 @@ std::vector<std::pair<double, double>> surface_points(const Bodies& b, const Dru
 // The drum's index among the drivers (the scene parser checks it; scenes built in code may not).
 std::uint32_t drum_index(const Drivers& drivers, const OutputSettings::ReposeProbe& spec) {
   for (std::uint32_t j = 0; j < drivers.size(); ++j)
-    if (drivers[j].spec.name == spec.driver && drivers[j].spec.kind == DriverSpec::Kind::cylinder) return j;
+    if (drivers.name(j) == spec.driver && drivers.cylinder(j)) return j;
   throw InputError(input_message(spec.loc.file, spec.loc.line, "driver", "no cylinder driver named '" + spec.driver + "'"));
 }
 
@@ -131,10 +131,11 @@ Probes::Probes(const Simulation& sim, const std::string& dir, bool resume) : sim
 }
 
 DrumSection Probes::section(const Repose& r) const {
-  const Driver& d = sim_.drivers[r.driver];
+  const DriverState& d = sim_.drivers[r.driver];
+  const CylinderShape& drum = *sim_.drivers.cylinder(r.driver);
   const Vec3 g = sim_.scene().forces.gravity.value_or(Vec3::Zero());
   const Vec3 up = -(g - g.dot(d.axis) * d.axis);
-  return {d.center, d.axis, up.norm() > 0.0 ? Vec3(up.normalized()) : Vec3::Zero(), d.spec.radius, d.spec.length};
+  return {d.center, d.axis, up.norm() > 0.0 ? Vec3(up.normalized()) : Vec3::Zero(), drum.radius, drum.length};
 }
 
 void Probes::row() {

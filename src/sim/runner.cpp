@@ -154,7 +154,7 @@ class OutputWriter {
     if (sim.external()) fluid_ = std::make_unique<FluidSeries>(sim, dir_ + "/fluid.csv", !o.resume.empty());
     probes_ = std::make_unique<Probes>(sim, dir_, !o.resume.empty());  // output.probes: flow.csv, angle.csv
     for (std::size_t j = 0; j < sim.drivers.size(); ++j)  // force and torque the particles exert on it
-      driver_series_.push_back(std::make_unique<CsvSeries>(dir_ + "/driver_" + sim.drivers[j].spec.name + ".csv",
+      driver_series_.push_back(std::make_unique<CsvSeries>(dir_ + "/driver_" + sim.drivers.name(std::uint32_t(j)) + ".csv",
           std::vector<std::string>{"time", "fx", "fy", "fz", "tx", "ty", "tz", "x", "y", "z"}, !o.resume.empty()));
   }
 
@@ -187,7 +187,7 @@ class OutputWriter {
                   e.elastic_parts.rolling, e.dissipated_dashpot, e.dissipated_sliding, e.dissipated_rolling,
                   e.patch_work});
     for (std::size_t j = 0; j < driver_series_.size(); ++j) {
-      const Driver& d = sim_.drivers[j];
+      const DriverState& d = sim_.drivers[j];
       const Vec3 x = sim_.drivers.center(std::uint32_t(j));
       driver_series_[j]->row({sim_.time(), d.force.x(), d.force.y(), d.force.z(), d.torque.x(), d.torque.y(),
                               d.torque.z(), x.x(), x.y(), x.z()});

@@ -72,7 +72,7 @@ void Simulation::external_forces() {
 // Particles get -force and -torque (about the centre) of each driver.
 void Simulation::driver_work_half() {
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
-    const Driver& d = drivers[j];
+    const DriverState& d = drivers[j];
     ledger.driver_work -= 0.5 * (d.force.dot(drivers.velocity_at(j, drivers.center(j))) + d.torque.dot(d.omega)) * dt_;
   }
 }
@@ -107,7 +107,7 @@ EnergyRow Simulation::energy() const {
     e.rotational += 0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum();
     mass_moment += bodies.mass[b] * bodies.position[b];
   }
-  e.elastic_parts = engine_->elastic();
+  e.elastic_parts = engine_->elastic(drivers);
   e.elastic = e.elastic_parts.normal + e.elastic_parts.tangential + e.elastic_parts.rolling;
   e.dissipated = ledger.dissipated;
   e.dissipated_sliding = ledger.sliding;

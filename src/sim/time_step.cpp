@@ -186,8 +186,7 @@ double surface_speed(const Bodies& bodies, const std::vector<Shape>& shapes, std
 
 // m/s, speed driver j's motion will give its surface at point x (its velocity is set only
 // once it advances): translation plus rotation about its axis.
-double driver_speed_at(const Driver& d, const Vec3& x) {
-  const Motion& m = d.spec.motion;
+double driver_speed_at(const MotionSettings& m, const Vec3& x) {
   const Vec3 spin = m.rotates ? Vec3(m.omega * m.rotation_axis) : Vec3::Zero();  // rad/s
   return (m.velocity + spin.cross(x - m.rotation_center)).norm();
 }
@@ -217,7 +216,7 @@ std::string fast_impact_warning(const Bodies& bodies, const std::vector<Shape>& 
     double driver_speed = 0.0;                              // m/s, the fastest driver surface at the body
     long driver = -1;
     for (std::uint32_t j = 0; j < drivers.size(); ++j) {
-      const double v = driver_speed_at(drivers[j], bodies.position[b]);
+      const double v = driver_speed_at(drivers.motion(j), bodies.position[b]);
       if (drivers[j].active && (driver < 0 || v > driver_speed)) { driver_speed = v; driver = j; }
     }
     const bool by_driver = driver >= 0 && (n == 1 || driver_speed >= other);
@@ -229,7 +228,7 @@ std::string fast_impact_warning(const Bodies& bodies, const std::vector<Shape>& 
     if (closing <= worst * allowed) continue;
     worst = closing / allowed;
     const std::string who = format("warning: body %zu (shape '%s') may hit %s at %.3g m/s", b, shapes[bodies.shape[b]].name.c_str(),
-                                   by_driver ? ("driver '" + drivers[driver].spec.name + "'").c_str()
+                                   by_driver ? ("driver '" + drivers.name(std::uint32_t(driver)) + "'").c_str()
                                                             : "another body", closing);
     if (by_overlap <= by_step) {
       const double kn_needed = bodies.mass[b] * std::pow(closing / (kOverlapFraction * r_in), 2);  // N/m
@@ -261,7 +260,7 @@ std::string OverlapWatch::check(const PairList& body_pairs, const PairList& driv
         const double overlap = -list->slots[s].history.gap;  // m
         if (!list->active[s] || overlap <= kOverlapFraction * r) continue;
         warned_ = true;
-        const std::string partner = with_driver ? "driver '" + drivers[p.j].spec.name + "'" : format("body %u", p.j);
+        const std::string partner = with_driver ? "driver '" + drivers.name(p.j) + "'" : format("body %u", p.j);
         return format("warning: t = %.4g s: an overlap of %.3g mm between body %u and %s exceeds %.2g x the inscribed "
                       "radius %.3g mm: the impact is too fast for kn = %.3g N/m (unphysical; raise kn or lower the speeds)",
                       time, 1e3 * overlap, p.i, partner.c_str(), kOverlapFraction, 1e3 * r,

@@ -53,7 +53,7 @@ TEST_CASE("a tilted float32 floor, not quite coplanar, still gives one contact e
   for (Tri& t : tris) t = {tilt * t.a + Vec3(0.3, 0.2, 0.1), tilt * t.b + Vec3(0.3, 0.2, 0.1), tilt * t.c + Vec3(0.3, 0.2, 0.1)};
   write_binary_stl(dir.file("tilted.stl"), tris);  // rounded to float: ~1e-8 m off the plane
   const Drivers drivers({stl_spec(dir.file("tilted.stl"))});
-  CHECK(drivers[0].mesh->edges.size() == 32);  // still flat inside: only the rim is made of features
+  CHECK(std::get<MeshDriver>(drivers.kind(0)).features().edges.size() == 32);  // still flat inside: only the rim is made of features
   const Shape sphere = one_vertex_shape(kR);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> xy(-0.015, 0.015), z(0.0035, 0.004);
@@ -99,8 +99,7 @@ TEST_CASE("a sphere around a cube mesh touches its face, edge or vertex like the
 TEST_CASE("a cube particle lying on a meshed floor has the four springs it has on a wall", "[driver][mesh]") {
   TempFolder dir;
   write_ascii_stl(dir.file("floor.stl"), floor_triangles(10, 0.004));
-  DriverSpec wall;
-  wall.kind = DriverSpec::Kind::wall;
+  const DriverSettings wall;  // a wall through the origin, normal +z
   const Drivers drivers({stl_spec(dir.file("floor.stl")), wall});
   const double h = 0.003, r = 0.0005;
   const Shape cube = cube_particle(h, r);

@@ -13,6 +13,7 @@
 #include "driver/drivers.hpp"
 #include "geometry/face_planes.hpp"
 #include "geometry/shadowing.hpp"
+#include "polydem/error.hpp"
 
 namespace polydem::test {
 
@@ -91,12 +92,14 @@ inline std::vector<Tri> cube_triangles(double h) {
   return tris;
 }
 
-inline DriverSpec stl_spec(const std::string& file, const char* name = "mesh") {
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::stl;
+inline DriverSettings stl_spec(const std::string& file, const char* name = "mesh") {
+  DriverSettings d;
   d.name = name;
-  d.file = file;
-  d.loc = d.file_loc = {"scene.yaml", 7};
+  MeshSettings mesh;
+  mesh.file = file;
+  mesh.where = input_message("scene.yaml", 7, "file", "driver '" + d.name + "': ");
+  d.kind = mesh;
+  d.loc = {"scene.yaml", 7};
   return d;
 }
 

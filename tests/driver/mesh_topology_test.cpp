@@ -17,7 +17,7 @@ MeshFeatures features_of(const std::vector<Tri>& tris, const std::string& path, 
   return MeshFeatures(read_stl(path), 1.0, skipped);
 }
 
-std::string error_of(const std::vector<DriverSpec>& specs) {
+std::string error_of(const std::vector<DriverSettings>& specs) {
   try {
     Drivers drivers(specs);
   } catch (const InputError& e) {
@@ -88,7 +88,7 @@ TEST_CASE("the grid search cost follows the triangles near the body, not the mes
     write_binary_stl(dir.file("floor.stl"), floor_triangles(n, cell));
     const Drivers drivers({stl_spec(dir.file("floor.stl"))});
     std::size_t skipped = 0;
-    const MeshFeatures& m = *drivers[0].mesh;
+    const MeshFeatures& m = std::get<MeshDriver>(drivers.kind(0)).features();
     std::vector<std::uint32_t> faces;
     examined.push_back(m.faces_near(Vec3(0.0012, 0.0013, 0.004), 0.006, faces));
     found.push_back(faces.size());
@@ -110,7 +110,7 @@ TEST_CASE("the grid search cost follows the triangles near the body, not the mes
   write_binary_stl(dir.file("fine.stl"), floor_triangles(300, cell / 3));
   const Drivers fine({stl_spec(dir.file("fine.stl"))});
   std::vector<std::uint32_t> faces;
-  fine[0].mesh->faces_near(Vec3(0.0012, 0.0013, 0.004), 0.006, faces);
+  std::get<MeshDriver>(fine.kind(0)).features().faces_near(Vec3(0.0012, 0.0013, 0.004), 0.006, faces);
   CHECK(faces.size() > 6 * found[0]);  // 9 x the triangle density, less the edge effects
 }
 

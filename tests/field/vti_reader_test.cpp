@@ -50,8 +50,8 @@ std::string error_of(const std::function<void()>& f) {
   return "";
 }
 
-ForceSettings::FluidField settings(const std::string& file) {
-  ForceSettings::FluidField f;
+FieldSettings::FluidField settings(const std::string& file) {
+  FieldSettings::FluidField f;
   f.file = file;
   f.file_loc = {"scene.yaml", 14};
   return f;

@@ -31,25 +31,29 @@ GeneratorSpec generator(GeneratorSpec::Kind kind, int count, const BoxRegion& bo
   return g;
 }
 
-DriverSpec wall(const Vec3& point, const Vec3& normal) {
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::wall;
-  d.point = point;
-  d.normal = normal;
+DriverSettings wall(const Vec3& point, const Vec3& normal) {
+  DriverSettings d;
+  d.kind = WallSettings{point, normal};
   return d;
 }
 
-DriverSpec cylinder(const Vec3& center, const Vec3& axis, double radius, bool inside) {
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::cylinder;
-  d.center = center;
-  d.axis = axis;
-  d.radius = radius;
-  d.inside = inside;
+DriverSettings cylinder(const Vec3& center, const Vec3& axis, double radius, bool inside) {
+  DriverSettings d;
+  d.kind = CylinderSettings{center, axis, radius, std::nullopt, inside};
   return d;
 }
 
-Scene scene_with(const GeneratorSpec& g, const std::vector<DriverSpec>& drivers) {
+DriverSettings mesh_driver(const std::string& name, const std::string& file, int line) {
+  DriverSettings d;
+  d.name = name;
+  MeshSettings m;
+  m.file = file;
+  m.where = input_message("scene.yaml", line, "file", "driver '" + name + "': ");
+  d.kind = m;
+  return d;
+}
+
+Scene scene_with(const GeneratorSpec& g, const std::vector<DriverSettings>& drivers) {
   Scene s;
   s.simulation.seed = 5;
   s.generators = {g};
@@ -60,7 +64,7 @@ Scene scene_with(const GeneratorSpec& g, const std::vector<DriverSpec>& drivers)
 // A 20 x 20 x 5 cm box: 20 x 20 x 5 lattice sites at x, y = +-5 mm, +-15 mm, ... +-95 mm.
 const BoxRegion kBox{Vec3(-0.1, -0.1, 0.0), Vec3(0.1, 0.1, 0.05)};
 // Cut by the wall x = 0 (bodies on x > 0) and by a drum of radius 5 cm about the z axis.
-const std::vector<DriverSpec> kCut = {wall(Vec3::Zero(), Vec3::UnitX()),
+const std::vector<DriverSettings> kCut = {wall(Vec3::Zero(), Vec3::UnitX()),
                                       cylinder(Vec3(0, 0, 0.025), Vec3::UnitZ(), 0.05, true)};
 
 // Sites of kBox whose sphere lies on the wall's side and inside the drum, counted by brute force:
@@ -119,15 +123,11 @@ TEST_CASE("lattice: a count above the clear sites says how many fit", "[generate
 
 TEST_CASE("random: bodies stay clear of a wall, a post and a ball", "[generate]") {
   const ShapeLibrary lib = library();
-  DriverSpec post = cylinder(Vec3(0.05, 0, 0.025), Vec3(0, 1, 1).normalized(), 0.02, false);
-  post.length = 0.04;
-  DriverSpec ball;
-  ball.kind = DriverSpec::Kind::ball;
-  ball.center = Vec3(-0.05, 0.03, 0.02);
-  ball.radius = 0.03;
-  const DriverSpec tilted = wall(Vec3(0, 0, 0.01), Vec3(0.3, 0.2, 1).normalized());
+  const CylinderSettings post{Vec3(0.05, 0, 0.025), Vec3(0, 1, 1).normalized(), 0.02, 0.04, false};
+  const BallSettings ball{Vec3(-0.05, 0.03, 0.02), 0.03};
+  const WallSettings tilted{Vec3(0, 0, 0.01), Vec3(0.3, 0.2, 1).normalized()};
   const auto bodies = expand_bodies(
-      scene_with(generator(GeneratorSpec::Kind::random, 400, kBox), {post, ball, tilted}), lib);
+      scene_with(generator(GeneratorSpec::Kind::random, 400, kBox), {{"", post}, {"", ball}, {"", tilted}}), lib);
   REQUIRE(bodies.size() == 400u);
   double worst = -1.0;
   for (const BodySpec& b : bodies) {
@@ -143,7 +143,7 @@ TEST_CASE("random: bodies stay clear of a wall, a post and a ball", "[generate]"
 TEST_CASE("random and lattice: drivers out of the way change no body", "[generate]") {
   const ShapeLibrary lib = library();
   // Touching the region's faces from outside, and a drum around it: nothing is in the way.
-  const std::vector<DriverSpec> around = {
+  const std::vector<DriverSettings> around = {
       wall(Vec3(0, 0, 0), Vec3::UnitZ()),
       cylinder(Vec3(0, 0, 0), Vec3::UnitZ(), 0.1 * std::sqrt(2.0), true)};
   for (auto kind : {GeneratorSpec::Kind::random, GeneratorSpec::Kind::lattice}) {
@@ -174,15 +174,13 @@ TEST_CASE("random: bodies stay clear of an STL mesh; a region it fills says how 
              std::to_string(v[k].z()) + "\n";
     stl += "endloop\nendfacet\n";
   }
-  DriverSpec mesh;
-  mesh.kind = DriverSpec::Kind::stl;
-  mesh.name = "tet";
-  mesh.file = dir.write("tet.stl", stl + "endsolid t\n");
+  DriverSettings tet = mesh_driver("tet", dir.write("tet.stl", stl + "endsolid t\n"), 0);
+  MeshSettings& mesh = std::get<MeshSettings>(tet.kind);
   mesh.scale = 0.001;
   mesh.rotation = Quat(Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()));
   mesh.translation = Vec3(-0.03, -0.02, 0.0);
   const auto bodies =
-      expand_bodies(scene_with(generator(GeneratorSpec::Kind::random, 500, kBox), {mesh}), lib);
+      expand_bodies(scene_with(generator(GeneratorSpec::Kind::random, 500, kBox), {tet}), lib);
   REQUIRE(bodies.size() == 500u);
   double nearest = 1e300;  // m, the smallest sampled centre-triangle distance
   std::array<Vec3, 4> w;
@@ -200,7 +198,7 @@ TEST_CASE("random: bodies stay clear of an STL mesh; a region it fills says how 
   mesh.rotation = Quat::Identity();
   mesh.translation = Vec3::Zero();
   const std::string msg = test::input_error_of([&] {
-    expand_bodies(scene_with(generator(GeneratorSpec::Kind::random, 5, slab), {mesh}), lib);
+    expand_bodies(scene_with(generator(GeneratorSpec::Kind::random, 5, slab), {tet}), lib);
   });
   CHECK(contains(msg, "scene.yaml:12: key 'count': placed 0 of 5 bodies"));
   CHECK(contains(msg, "or a driver"));
@@ -209,11 +207,7 @@ TEST_CASE("random: bodies stay clear of an STL mesh; a region it fills says how 
 
 TEST_CASE("generators: a missing STL names the driver's file key", "[generate]") {
   const ShapeLibrary lib = library();
-  DriverSpec mesh;
-  mesh.kind = DriverSpec::Kind::stl;
-  mesh.name = "plate";
-  mesh.file = "/nonexistent/plate.stl";
-  mesh.file_loc = {"scene.yaml", 30};
+  const DriverSettings mesh = mesh_driver("plate", "/nonexistent/plate.stl", 30);
   const std::string msg = test::input_error_of([&] {
     expand_bodies(scene_with(generator(GeneratorSpec::Kind::lattice, 5, kBox), {mesh}), lib);
   });

@@ -156,8 +156,8 @@ TEST_CASE("directions: zero is an error, others are normalized", "[scene][errors
       dir.write("scene.yaml",
                 edited({{10, "  - wall: {name: floor, point: [0, 0, 0], normal: [0, 3, 4]}"},
                         {11, "  - cylinder: {center: [0, 0, 0], axis: [0, 0, 2], radius: 1}"}})));
-  CHECK((s.drivers[0].normal - Vec3(0, 0.6, 0.8)).norm() < 1e-15);
-  CHECK((s.drivers[1].axis - Vec3::UnitZ()).norm() < 1e-15);
+  CHECK((std::get<WallSettings>(s.drivers[0].kind).normal - Vec3(0, 0.6, 0.8)).norm() < 1e-15);
+  CHECK((std::get<CylinderSettings>(s.drivers[1].kind).axis - Vec3::UnitZ()).norm() < 1e-15);
   CHECK(s.drivers[1].name == "cylinder_2");
   const Scene q = load_scene(dir.write(
       "q.yaml",

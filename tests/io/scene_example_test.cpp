@@ -139,28 +139,31 @@ TEST_CASE("SCENE.md example: drivers and their motions", "[scene]") {
   test::TempDir dir;
   const Scene s = load_example(dir, kContact);
   REQUIRE(s.drivers.size() == 6);
-  using K = DriverSpec::Kind;
-  const auto& floor = s.drivers[0];
-  CHECK((floor.kind == K::wall && floor.name == "floor" && near(floor.normal, Vec3::UnitZ())));
-  const auto& drum = s.drivers[1];
-  CHECK((drum.kind == K::cylinder && drum.name == "drum"));
-  CHECK(near(drum.axis, Vec3::UnitY()));
-  CHECK(drum.radius == 0.15);
-  CHECK(drum.length.value() == 0.1);
-  CHECK(drum.inside);
-  CHECK(drum.motion.rotates);
-  CHECK(near(drum.motion.rotation_axis, Vec3::UnitY()));
-  CHECK(drum.motion.omega == Approx(kPi));  // 30 rpm = 30 x 2 pi / 60 rad/s
-  const auto& ball = s.drivers[2];
-  CHECK((ball.kind == K::ball && ball.radius == 0.05 && near(ball.center, Vec3(0, 0, 1))));
-  CHECK(near(ball.motion.velocity, Vec3(0, 0, -2)));
-  const auto& stl = s.drivers[3];
-  CHECK(stl.kind == K::stl);
-  CHECK(fs::equivalent(stl.file, dir.path / "samples/drum/hopper.stl"));
-  CHECK(stl.scale == 0.001);
+  const auto* floor = std::get_if<WallSettings>(&s.drivers[0].kind);
+  REQUIRE(floor);
+  CHECK((s.drivers[0].name == "floor" && near(floor->normal, Vec3::UnitZ())));
+  const auto* drum = std::get_if<CylinderSettings>(&s.drivers[1].kind);
+  REQUIRE(drum);
+  CHECK(s.drivers[1].name == "drum");
+  CHECK(near(drum->axis, Vec3::UnitY()));
+  CHECK(drum->radius == 0.15);
+  CHECK(drum->length.value() == 0.1);
+  CHECK(drum->inside);
+  const MotionSettings& turn = s.drivers[1].motion;
+  CHECK(turn.rotates);
+  CHECK(near(turn.rotation_axis, Vec3::UnitY()));
+  CHECK(turn.omega == Approx(kPi));  // 30 rpm = 30 x 2 pi / 60 rad/s
+  const auto* ball = std::get_if<BallSettings>(&s.drivers[2].kind);
+  REQUIRE(ball);
+  CHECK((ball->radius == 0.05 && near(ball->center, Vec3(0, 0, 1))));
+  CHECK(near(s.drivers[2].motion.velocity, Vec3(0, 0, -2)));
+  const auto* stl = std::get_if<MeshSettings>(&s.drivers[3].kind);
+  REQUIRE(stl);
+  CHECK(fs::equivalent(stl->file, dir.path / "samples/drum/hopper.stl"));
+  CHECK(stl->scale == 0.001);
   CHECK(s.drivers[4].motion.remove_at.value() == 0.5);
   CHECK(s.drivers[5].motion.force.value() == 50.0);
-  CHECK(near(s.drivers[5].normal, -Vec3::UnitZ()));
+  CHECK(near(std::get<WallSettings>(s.drivers[5].kind).normal, -Vec3::UnitZ()));
   CHECK(s.drivers[5].loc.line == 39);
 }
 

@@ -68,8 +68,7 @@ inline Scene base_scene(const ContactParams& config, bool floor, std::optional<V
   s.forces.contact.config_driver = config;
   s.forces.contact.has_config_driver = true;
   if (floor) {
-    DriverSpec d;
-    d.kind = DriverSpec::Kind::wall;
+    DriverSettings d;  // a wall through the origin, normal +z
     d.name = "floor";
     s.drivers.push_back(d);
   }

@@ -46,10 +46,9 @@ struct Pile {
     scene.forces.contact.config.damp_tangential = scene.forces.contact.config_driver.damp_tangential = damp_tangential;
     for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
                                  {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
-      DriverSpec d;
+      DriverSettings d;
       d.name = "side";
-      d.point = point;
-      d.normal = normal;
+      d.kind = WallSettings{point, normal};
       scene.drivers.push_back(d);
     }
     std::mt19937_64 rng(7);

@@ -14,12 +14,13 @@ namespace {
 
 constexpr double kG = 9.807, kRadius = 0.005, kKn = 1e5;
 
-DriverSpec drum(double radius, double omega) {
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::cylinder;
+DriverSettings drum(double radius, double omega) {
+  DriverSettings d;
   d.name = "drum";
-  d.axis = Vec3::UnitX();
-  d.radius = radius;
+  CylinderSettings c;
+  c.axis = Vec3::UnitX();
+  c.radius = radius;
+  d.kind = c;
   if (omega != 0.0) {
     d.motion.rotates = true;
     d.motion.rotation_axis = Vec3::UnitX();
@@ -64,10 +65,9 @@ TEST_CASE("a rotating drum moves the contact at the wall's velocity", "[driver]"
 TEST_CASE("a sphere dropped on a ball driver rebounds with en", "[driver][impact]") {
   for (double en : {0.3, 0.7}) {
     Scene scene = base_scene(law(kKn, en), false);
-    DriverSpec ball;
-    ball.kind = DriverSpec::Kind::ball;
+    DriverSettings ball;
     ball.name = "ball";
-    ball.radius = 0.02;
+    ball.kind = BallSettings{Vec3::Zero(), 0.02};
     scene.drivers.push_back(ball);
     const ShapeLibrary lib = library({sphere_shape(kRadius)});
     scene.simulation.dt = kPi * std::sqrt(2700.0 * lib.shapes[0].volume / kKn) / 400.0;
@@ -94,11 +94,9 @@ TEST_CASE("a gate removed at its time lets the body fall", "[driver]") {
 TEST_CASE("a moving ball driver finds and strikes a body it started far from", "[driver][impact]") {
   const double en = 0.5, speed = 1.0;  // m/s, the impactor's speed
   Scene scene = base_scene(law(kKn, en), false);
-  DriverSpec ball;
-  ball.kind = DriverSpec::Kind::ball;
+  DriverSettings ball;
   ball.name = "impactor";
-  ball.radius = 0.02;
-  ball.center = {0, 0, 0.05};  // 25 mm above the sphere's top: far beyond the skin
+  ball.kind = BallSettings{{0, 0, 0.05}, 0.02};  // 25 mm above the sphere's top: far beyond the skin
   ball.motion.velocity = {0, 0, -speed};
   scene.drivers.push_back(ball);
   const ShapeLibrary lib = library({sphere_shape(kRadius)});

@@ -18,10 +18,9 @@ using namespace polydem::test;
 TEST_CASE("elastic frictionless collisions of polyhedra conserve energy", "[energy]") {
   Scene scene = base_scene(law(1e5, 1.0), true, Vec3(0, 0, -9.807));
   for (auto [point, normal] : {std::pair{Vec3(-0.03, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.03, 0, 0), Vec3(-1, 0, 0)}}) {
-    DriverSpec d;
+    DriverSettings d;
     d.name = "side";
-    d.point = point;
-    d.normal = normal;
+    d.kind = WallSettings{point, normal};
     scene.drivers.push_back(d);
   }
   std::vector<BodySpec> specs;

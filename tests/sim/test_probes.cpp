@@ -176,12 +176,9 @@ TEST_CASE("angle of repose of a surface placed on a known slope", "[probes]") {
 
 TEST_CASE("angle.csv: a drum driver and bodies on a 25 degree slope", "[probes]") {
   Scene scene = base_scene(law(1e5, 0.5), false, Vec3(0, 0, -kG));
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::cylinder;
+  DriverSettings d;
   d.name = "drum";
-  d.axis = Vec3::UnitY();
-  d.radius = 0.15;
-  d.length = 0.1;
+  d.kind = CylinderSettings{Vec3::Zero(), Vec3::UnitY(), 0.15, 0.1};
   scene.drivers.push_back(d);
   scene.simulation.dt = 1e-4;
   scene.output.csv_every = kEvery;
@@ -296,11 +293,9 @@ TEST_CASE("bad probe keys name the file, line and key", "[probes][io]") {
 
 TEST_CASE("a repose probe in a scene without bodies asks for a column width", "[probes]") {
   Scene scene = base_scene(law(1e5, 0.5), false, Vec3(0, 0, -kG));
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::cylinder;
+  DriverSettings d;
   d.name = "drum";
-  d.axis = Vec3::UnitY();
-  d.radius = 0.1;
+  d.kind = CylinderSettings{Vec3::Zero(), Vec3::UnitY(), 0.1};
   scene.drivers.push_back(d);
   scene.simulation.dt = 1e-4;
   scene.output.csv_every = kEvery;

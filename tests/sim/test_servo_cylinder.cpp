@@ -19,10 +19,9 @@ constexpr double kG = 9.807, kRadius = 0.005, kKn = 1e5;
 // A sphere on the floor under a servo lid (normal -z) that starts 1 mm above it.
 Scene lid_scene(std::optional<double> force, std::optional<double> pressure) {
   Scene scene = base_scene(law(kKn, 0.3, 0.5, kKn), true, Vec3(0, 0, -kG));
-  DriverSpec lid;
+  DriverSettings lid;
   lid.name = "lid";
-  lid.point = {0, 0, 2 * kRadius + 0.001};
-  lid.normal = -Vec3::UnitZ();
+  lid.kind = WallSettings{{0, 0, 2 * kRadius + 0.001}, -Vec3::UnitZ()};
   lid.motion.force = force;
   lid.motion.pressure = pressure;
   if (pressure) lid.motion.area = 0.01;
@@ -30,14 +29,10 @@ Scene lid_scene(std::optional<double> force, std::optional<double> pressure) {
   return scene;
 }
 
-DriverSpec outer_cylinder(const Vec3& axis, double radius, std::optional<double> length) {
-  DriverSpec d;
-  d.kind = DriverSpec::Kind::cylinder;
+DriverSettings outer_cylinder(const Vec3& axis, double radius, std::optional<double> length) {
+  DriverSettings d;
   d.name = "post";
-  d.axis = axis;
-  d.radius = radius;
-  d.length = length;
-  d.inside = false;
+  d.kind = CylinderSettings{Vec3::Zero(), axis, radius, length, false};
   return d;
 }
 
@@ -93,7 +88,7 @@ TEST_CASE("a servo wall resumed from a checkpoint continues bit for bit", "[driv
 
 TEST_CASE("a sphere rests on the outside of a cylinder with overlap m g / kn", "[driver][cylinder]") {
   const double radius = 0.02;  // m
-  struct Case { const char* what; DriverSpec post; Vec3 start; };
+  struct Case { const char* what; DriverSettings post; Vec3 start; };
   const Case cases[] = {
       {"horizontal, infinite", outer_cylinder(Vec3::UnitX(), radius, std::nullopt), {0.3, 0, radius + kRadius}},
       {"vertical, on its rounded end", outer_cylinder(Vec3::UnitZ(), radius, 0.04), {0, 0, 0.02 + radius + kRadius}},

@@ -79,10 +79,10 @@ Scene box_scene(const ContactParams& particle, const ContactParams& wall, double
   Scene scene = base_scene(particle, true, Vec3(0, 0, -kG));
   scene.forces.contact.config_driver = wall;
   for (int k = 0; k < 4; ++k) {
-    DriverSpec d;
+    DriverSettings d;
     d.name = "side" + std::to_string(k);
-    d.normal = Vec3(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0, 0);
-    d.point = -half * d.normal;
+    const Vec3 normal(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0, 0);
+    d.kind = WallSettings{-half * normal, normal};
     scene.drivers.push_back(d);
   }
   return scene;
@@ -172,24 +172,20 @@ TEST_CASE("energy budget: a rotating drum of polyhedra closes to 0.5% with the d
   ContactParams p = law(1e4, 0.5, 0.5, 0.8e4);
   Scene scene = base_scene(p, false, Vec3(0, 0, -kG));
   const double radius = 0.05, length = 0.055, omega = 30.0 * 2 * kPi / 60.0;  // m, m, rad/s
-  Motion turn;
+  MotionSettings turn;
   turn.rotates = true;
   turn.rotation_axis = Vec3::UnitY();
   turn.omega = omega;
   turn.start = 0.15;  // s, once the bed has settled
-  DriverSpec drum;
-  drum.kind = DriverSpec::Kind::cylinder;
+  DriverSettings drum;
   drum.name = "drum";
-  drum.axis = Vec3::UnitY();
-  drum.radius = radius;
-  drum.length = length;
+  drum.kind = CylinderSettings{Vec3::Zero(), Vec3::UnitY(), radius, length};
   drum.motion = turn;
   scene.drivers.push_back(drum);
   for (double side : {-1.0, 1.0}) {
-    DriverSpec wall;
+    DriverSettings wall;
     wall.name = side < 0 ? "front" : "back";
-    wall.point = Vec3(0, side * 0.5 * length, 0);
-    wall.normal = Vec3(0, -side, 0);
+    wall.kind = WallSettings{Vec3(0, side * 0.5 * length, 0), Vec3(0, -side, 0)};
     wall.motion = turn;
     scene.drivers.push_back(wall);
   }

@@ -1,20 +1,22 @@
-// Contacts of a posed body with a mesh driver: candidates from the grid around the body's
-// bounding sphere (taken into the mesh frame, so a moving mesh needs no new index), and the
-// feature-pair kernels: two-sided faces, and edges and vertices through the body-body kernels
-// (as a segment or a point of radius 0) plus the normal-cone test of mesh.hpp.
+#include "driver/mesh_driver.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 
 #include "driver/mesh.hpp"
-#include "driver/surfaces.hpp"
 #include "geometry/segment.hpp"
+#include "output/vtk.hpp"
+#include "polydem/error.hpp"
+#include "shape/point_sources.hpp"
 
 namespace polydem {
 
 namespace {
 
-Vec3 to_mesh(const Driver& d, const Vec3& p) { return d.orientation.conjugate() * (p - d.center); }
-Vec3 to_world(const Driver& d, const Vec3& p) { return d.center + d.orientation * p; }
+Vec3 to_mesh(const Placement& d, const Vec3& p) { return d.orientation.conjugate() * (p - d.center); }
+Vec3 to_world(const Placement& d, const Vec3& p) { return d.center + d.orientation * p; }
 
 const Shape& mesh_point_shape() {
   static const Shape s = [] { Shape p; p.vertices = {Vec3::Zero()}; return p; }();
@@ -33,7 +35,7 @@ struct LocalBody {
   double core_radius = 0.0;  // m, farthest core vertex from the centre
 };
 
-void localise(const Driver& d, const PosedBody& a, LocalBody& out) {
+void localise(const Placement& d, const PosedBody& a, LocalBody& out) {
   const Shape& s = *a.shape;
   out.vertices.resize(s.vertices.size());
   out.core_radius = 0.0;
@@ -99,8 +101,7 @@ bool in_vertex_cone(const MeshFeatures& m, std::uint32_t v, const Vec3& n) {
 
 // True when the projection of p on face f is over the face: its feature edges are closed (a
 // duplicate with the edge is shadowed), a flat edge belongs to one of its two faces only.
-bool over_face(const Driver& d, std::uint32_t f, const Vec3* w, const Vec3& p, const Vec3& n) {
-  const MeshFeatures& m = *d.mesh;
+bool over_face(const Placement& d, const MeshFeatures& m, std::uint32_t f, const Vec3* w, const Vec3& p, const Vec3& n) {
   for (int k = 0; k < 3; ++k) {
     const Vec3 e = w[(k + 1) % 3] - w[k];
     const double margin = kInteriorMargin * e.norm();  // m
@@ -116,8 +117,8 @@ bool over_face(const Driver& d, std::uint32_t f, const Vec3* w, const Vec3& p, c
   return true;
 }
 
-bool face_contact(const Driver& d, const PosedBody& a, std::uint32_t v, std::uint32_t f, double max_gap, ContactPoint& out) {
-  const MeshFeatures& m = *d.mesh;
+bool face_contact(const Placement& d, const MeshFeatures& m, const PosedBody& a, std::uint32_t v, std::uint32_t f,
+                  double max_gap, ContactPoint& out) {
   const Vec3 w[3] = {to_world(d, m.vertices[m.faces[f][0]]), to_world(d, m.vertices[m.faces[f][1]]),
                      to_world(d, m.vertices[m.faces[f][2]])};
   const Vec3 n = d.orientation * m.face_normals[f];
@@ -125,21 +126,43 @@ bool face_contact(const Driver& d, const PosedBody& a, std::uint32_t v, std::uin
   const double centre_side = (a.position - w[0]).dot(n);  // two-sided: the body's centre picks the side
   const Vec3 up = (centre_side != 0.0 ? centre_side : (p - w[0]).dot(n)) >= 0.0 ? n : Vec3(-n);
   const double gap = (p - w[0]).dot(up) - a.radius;
-  if (gap >= max_gap || !over_face(d, f, w, p, n)) return false;
+  if (gap >= max_gap || !over_face(d, m, f, w, p, n)) return false;
   out.normal = up;
   out.gap = gap;
   out.point = p - up * (a.radius + 0.5 * gap);  // middle of the overlap
   return true;
 }
 
-}  // namespace
-
-bool mesh_near(const Driver& d, const Vec3& center, double reach) {
-  return d.mesh->any_face_near(to_mesh(d, center), reach);
+// The STL mesh in its frame; errors and warnings start with `where` (the scene's `file` key).
+std::shared_ptr<const MeshFeatures> load_mesh(const MeshSettings& s) {
+  try {
+    std::size_t skipped = 0;
+    auto mesh = std::make_shared<const MeshFeatures>(read_stl(s.file), s.scale, skipped);
+    if (skipped > 0)
+      std::fprintf(stderr, "warning: %s%zu zero-area triangle(s) of %s skipped\n", s.where.c_str(), skipped, s.file.c_str());
+    return mesh;
+  } catch (const InputError& e) {
+    throw InputError(s.where + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(s.where + s.file + ": " + e.what());
+  }
 }
 
-void mesh_candidates(const Driver& d, const PosedBody& a, double range, std::vector<FeaturePair>& out) {
-  const MeshFeatures& m = *d.mesh;
+}  // namespace
+
+MeshDriver::MeshDriver(const MeshSettings& s, Placement& at) : mesh_(load_mesh(s)) {
+  at.center = s.translation;
+  at.orientation = s.rotation.normalized();
+  at.normal = at.orientation * Vec3::UnitX();  // two orthogonal markers: any turn moves one (list rebuilds)
+  at.axis = at.orientation * Vec3::UnitY();
+}
+
+bool MeshDriver::near(const Placement& d, const Vec3& center, double reach) const {
+  return mesh_->any_face_near(to_mesh(d, center), reach);
+}
+
+void MeshDriver::candidates(const Placement& d, const PosedBody& a, double range, std::vector<FeaturePair>& out) const {
+  const MeshFeatures& m = *mesh_;
   const Shape& s = *a.shape;
   thread_local LocalBody body;
   thread_local NearMesh near;
@@ -176,9 +199,9 @@ void mesh_candidates(const Driver& d, const PosedBody& a, double range, std::vec
         out.push_back({PairType::face_vertex, f, u});
 }
 
-bool mesh_contact(const Driver& d, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) {
-  const MeshFeatures& m = *d.mesh;
-  if (f.type == PairType::vertex_face) return face_contact(d, a, f.a, f.b, max_gap, out);
+bool MeshDriver::contact(const Placement& d, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const {
+  const MeshFeatures& m = *mesh_;
+  if (f.type == PairType::vertex_face) return face_contact(d, m, a, f.a, f.b, max_gap, out);
   const bool edge = f.type == PairType::vertex_edge || f.type == PairType::edge_edge;
   Vec3 ends[2];
   PosedBody partner{nullptr, ends, Mat3::Identity(), Vec3::Zero(), 0.0, 1.0};
@@ -195,6 +218,13 @@ bool mesh_contact(const Driver& d, const PosedBody& a, FeaturePair f, double max
   if (!feature_contact(a, partner, {f.type, f.a, 0}, max_gap, out)) return false;
   const Vec3 n = d.orientation.conjugate() * out.normal;
   return edge ? in_edge_cone(m, f.b, n) : in_vertex_cone(m, f.b, n);
+}
+
+DriverMesh MeshDriver::drawing(const Placement& at, const std::string& name, double) const {
+  DriverMesh m{name, {}, {}};
+  for (const Vec3& v : mesh_->vertices) m.points.push_back(at.center + at.orientation * v);
+  for (const std::array<int, 3>& t : mesh_->faces) m.polygons.push_back({t[0], t[1], t[2]});
+  return m;
 }
 
 }  // namespace polydem
