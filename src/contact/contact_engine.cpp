@@ -45,6 +45,8 @@ struct BodyPartner {
     return separated_along_centres(a, posed[j], band);
   }
   double radius(std::uint32_t j) const { return posed[j].radius; }
+  bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
+  const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
   RigidMotion motion(std::uint32_t j) const {
     return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j]};
@@ -70,6 +72,8 @@ struct DriverPartner {
     const bool rounded = d.kind == DriverSpec::Kind::ball || (d.kind == DriverSpec::Kind::cylinder && !d.inside);
     return rounded ? d.radius : 0.0;
   }
+  bool convex(std::uint32_t) const { return true; }
+  const Shape* shape(std::uint32_t) const { return nullptr; }
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
     const Driver& d = (*drivers)[j];
