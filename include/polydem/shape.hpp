@@ -1,5 +1,6 @@
 #pragma once
-// A spheropolyhedron shape: a convex polyhedron swept by a sphere of radius `radius`.
+// A spheropolyhedron shape: vertices, edges and planar convex faces swept by a sphere of radius
+// `radius`; convex or not (a polyline, a cluster of spheres, an open surface), decided at load.
 #include <array>
 #include <string>
 #include <vector>
@@ -20,9 +21,14 @@ struct Shape {
   std::vector<Vec3> vertices;               // m, principal frame, about the centre of mass
   std::vector<std::array<int, 2>> edges;    // vertex index pairs, each edge once
   std::vector<std::vector<int>> faces;      // convex polygons, counter-clockwise seen from outside
+  // True when the core is a convex polyhedron, a segment or a point (decided at load): only
+  // then do the contact fast paths hold (vertex-over-face shadowing, one patch per body pair).
+  bool convex = true;
+  bool surface = false;                     // an open surface (Rockable's isSurface): faces two-sided
 
   // Mass properties of the rounded body (filled by compute_mass_properties).
-  double volume = 0.0;                      // m^3, Steiner volume of the rounded body
+  double volume = 0.0;                      // m^3, volume of the rounded body (overlaps counted once)
+  double mass_error = 0.0;                  // relative error bound of volume and inertia (0: closed form)
   Vec3 inertia_per_mass = Vec3::Zero();     // m^2, principal moments of inertia / mass
   double bounding_radius = 0.0;             // m, max |vertex| + radius (about the centre of mass)
   std::vector<Vec3> face_normals;           // outward unit normals, one per face

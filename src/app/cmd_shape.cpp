@@ -28,7 +28,9 @@ const char* kInfoHelp =
     "Reads a shape library (.shp Rockable format or .yaml) and prints, per shape: vertex,\n"
     "edge and face counts, Minkowski radius (m), volume of the rounded body (m^3), centre of\n"
     "mass in the frame the shape was given in (m), principal inertia per unit mass (m^2,\n"
-    "ascending) and bounding radius about the centre (m). --json prints a JSON list instead.\n";
+    "ascending), bounding radius about the centre (m), whether the core is convex, and the\n"
+    "relative error bound of the mass properties (exact: closed forms; non-convex shapes that\n"
+    "are not apart balls: a quadrature). --json prints a JSON list instead.\n";
 
 const char* kHullHelp =
     "usage: polydem shape hull INPUT --radius R --name NAME -o OUT.shp [--append]\n"
@@ -69,27 +71,44 @@ void print_json(const std::vector<Shape>& shapes) {
   for (size_t i = 0; i < shapes.size(); ++i) {
     const Shape& s = shapes[i];
     char numbers[200];
-    std::snprintf(numbers, sizeof numbers, "\"radius\": %.17g, \"volume\": %.17g, \"bounding_radius\": %.17g",
-                  s.radius, s.volume, s.bounding_radius);
+    std::snprintf(numbers, sizeof numbers,
+                  "\"radius\": %.17g, \"volume\": %.17g, \"bounding_radius\": %.17g, \"mass_error\": %.3g",
+                  s.radius, s.volume, s.bounding_radius, s.mass_error);
     std::cout << (i ? ",\n " : "\n ") << "{\"name\": " << json_string(s.name)
               << ", \"nv\": " << s.vertices.size() << ", \"ne\": " << s.edges.size()
-              << ", \"nf\": " << s.faces.size() << ", " << numbers
+              << ", \"nf\": " << s.faces.size() << ", \"convex\": " << (s.convex ? "true" : "false")
+              << ", \"surface\": " << (s.surface ? "true" : "false") << ", " << numbers
               << ", \"center\": " << json_vec(s.input_center)
               << ", \"inertia_per_mass\": " << json_vec(s.inertia_per_mass) << "}";
   }
   std::cout << "\n]\n";
 }
 
+// "exact" for closed forms, else the quadrature's relative error bound.
+std::string mass_accuracy(const Shape& s) {
+  if (s.mass_error == 0.0) return "exact";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1e", s.mass_error);
+  return buf;
+}
+
 void print_table(const std::vector<Shape>& shapes) {
-  std::printf("%-16s %4s %4s %4s %11s %11s %35s %35s %11s\n", "name", "nv", "ne", "nf", "radius m",
-              "volume m^3", "centre of mass (input frame) m", "I/m principal m^2", "bounding m");
+  std::printf("%-16s %4s %4s %4s %6s %11s %11s %35s %35s %11s %8s\n", "name", "nv", "ne", "nf", "convex",
+              "radius m", "volume m^3", "centre of mass (input frame) m", "I/m principal m^2", "bounding m",
+              "mass err");
   for (const Shape& s : shapes) {
     const Vec3& c = s.input_center;
     const Vec3& i = s.inertia_per_mass;
-    std::printf("%-16s %4zu %4zu %4zu %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e\n",
-                s.name.c_str(), s.vertices.size(), s.edges.size(), s.faces.size(), s.radius, s.volume, c.x(),
-                c.y(), c.z(), i.x(), i.y(), i.z(), s.bounding_radius);
+    std::printf("%-16s %4zu %4zu %4zu %6s %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e %8s\n",
+                s.name.c_str(), s.vertices.size(), s.edges.size(), s.faces.size(), s.convex ? "yes" : "no",
+                s.radius, s.volume, c.x(), c.y(), c.z(), i.x(), i.y(), i.z(), s.bounding_radius,
+                mass_accuracy(s).c_str());
   }
+  for (const Shape& s : shapes)
+    std::printf("%s: convex: %s%s, mass properties: %s\n", s.name.c_str(), s.convex ? "yes" : "no",
+                s.surface ? " (open surface)" : "",
+                s.mass_error == 0.0 ? "exact (closed form or given)"
+                                    : ("quadrature, relative error below " + mass_accuracy(s)).c_str());
 }
 
 int info(const std::vector<std::string>& args) {

@@ -46,6 +46,8 @@ struct BodyPartner {
   }
   double radius(std::uint32_t j) const { return posed[j].radius; }
   double r_star(double r_i, std::uint32_t j) const { return r_i * posed[j].radius / (r_i + posed[j].radius); }  // m
+  bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
+  const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
   RigidMotion motion(std::uint32_t j) const {
     return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j]};
@@ -68,6 +70,8 @@ struct DriverPartner {
   bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
   double radius(std::uint32_t j) const { return drivers->rounding(j); }  // balls and posts: a rounded point, segment
   double r_star(double r_i, std::uint32_t j) const { return drivers->r_star(j, r_i); }  // m
+  bool convex(std::uint32_t) const { return true; }
+  const Shape* shape(std::uint32_t) const { return nullptr; }
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
     const DriverState& d = (*drivers)[j];

@@ -7,6 +7,7 @@
 #include "contact/law.hpp"
 #include "geometry/shadowing.hpp"
 #include "contact/contact_lists.hpp"
+#include "contact/contact_regions.hpp"
 
 namespace polydem {
 
@@ -93,16 +94,19 @@ struct PairScratch {
   std::vector<FoundContact> found;
   std::vector<std::uint8_t> drop;
   std::vector<double> weight;
+  std::vector<std::uint32_t> region;  // contact region of each found contact (non-convex pairs)
   std::vector<std::uint8_t> now_on;
 };
 
-// Removes the found contacts that a vertex-face contact of the same vertex shadows.
-inline void drop_shadowed(const PairList& list, double radii, PairScratch& scratch) {
+// Removes the found contacts that a vertex-face contact of the same vertex shadows (a face of a
+// convex body only: `a_convex`, `b_convex`).
+inline void drop_shadowed(const PairList& list, double radii, bool a_convex, bool b_convex, PairScratch& scratch) {
   auto& found = scratch.found;
   if (found.size() < 2) return;
   scratch.drop.resize(found.size());
   mark_shadowed(found.size(), [&](std::size_t k) { return list.features[found[k].slot]; },
-                [&](std::size_t k) { return found[k].geometry.gap; }, radii, scratch.drop.data());
+                [&](std::size_t k) { return found[k].geometry.gap; }, radii, scratch.drop.data(), a_convex,
+                b_convex);
   std::size_t kept = 0;
   for (std::size_t k = 0; k < found.size(); ++k)
     if (!scratch.drop[k]) found[kept++] = found[k];
@@ -124,6 +128,8 @@ struct RigidMotion {
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
 //   double radius(j): the partner's rounding radius (m)
 //   double r_star(r_i, j): m, the curvature radius of a contact of a body of rounding r_i with j (Hertz)
+//   bool convex(j): the partner's core is convex (drivers: true; a mesh keeps its own rules)
+//   const Shape* shape(j): the partner body's shape, null for a driver (contact regions)
 //   Vec3 center(j), RigidMotion motion(j), double m_eff(i, j)
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 
@@ -152,7 +158,8 @@ template <class Partner>
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
   }
-  if (shadowing && shadowable) drop_shadowed(list, a.radius + partner.radius(p.j), scratch);  // rare: nothing to drop otherwise
+  if (shadowing && shadowable)  // rare: nothing to drop otherwise
+    drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
 }
 
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
@@ -205,7 +212,13 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     totals.energy = hand_over_history(list, list.slot_begin[k], list.slot_begin[k + 1], was_touching,
                                       scratch.found, scratch.now_on, &law, r_star);
   if (scratch.found.empty()) return totals;
-  patch_weights(scratch.found, band, scratch.weight);
+  if (scratch.found.size() > 1 && !(a.shape->convex && partner.convex(p.j)))
+    region_patch_weights(
+        scratch.found.size(), [&](std::size_t c) { return list.features[scratch.found[c].slot]; },
+        [&](std::size_t c) { return scratch.found[c].geometry.gap; }, *a.shape, partner.shape(p.j), band,
+        scratch.weight, scratch.region);
+  else
+    patch_weights(scratch.found, band, scratch.weight);
   apply_law<Parts>(law, dt, bodies, partner, list, k, scratch, r_star, totals);
   return totals;
 }

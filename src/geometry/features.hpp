@@ -45,12 +45,13 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
 // Evaluates one feature pair. Returns false when the closest points do not lie strictly inside
 // the features (the lower-dimensional pair covers the boundary), when edges are parallel
 // (edge_edge), or when gap >= max_gap. On true fills `out`.
-// Both bodies must be convex with their centre inside the core: pairs whose normal points into a
-// body as seen from its centre (cores passed through each other) are rejected, never inverted.
-// Vertex-face uses the signed distance along the face body's outward normal, so the normal
-// never inverts: a vertex below the face plane (cores interpenetrating) keeps pushing out
-// through the face it is least deep under, down to a depth rA + rB, past which the pair is
-// rejected (Rockable instead takes |distance| and flips the normal, pushing the vertex deeper).
+// Between convex cores (centre inside): pairs whose normal points into a body as seen from its
+// centre (cores passed through each other) are rejected, never inverted. Vertex-face uses the
+// signed distance along the face body's outward normal, so the normal never inverts: a vertex
+// below the face plane (cores interpenetrating) keeps pushing out through the face it is least
+// deep under, down to a depth rA + rB, past which the pair is rejected (Rockable instead takes
+// |distance| and flips the normal, pushing the vertex deeper). A pair with a non-convex body
+// has no such rule, and the faces of a non-convex body are two-sided (|distance|, as Rockable).
 // One kernel per PairType (kernels.cpp), called through the table: inline, the per-step loop
 // makes one call per candidate, not two.
 using FeatureKernel = bool (*)(const PosedBody&, const PosedBody&, int, int, double, ContactPoint&);

@@ -48,10 +48,14 @@ inline bool clearly_negative(double uw, const Vec3& w) {
 // that it cannot be a normal of either core at its closest point: the closest-point direction
 // turned over because the cores pass through each other. A closest pair of separated convex
 // cores always passes: n.(cb - xB) >= 0 and n.(ca - xA) <= 0.
+// Only convex cores are judged so: a non-convex body's centre may lie outside its core (a bent
+// polyline) or behind a feature it touches with (the inside of a hook), so the rule does not
+// hold there; their cores are thin sets, whose closest points do not turn over.
 inline bool points_into(const Vec3& n, const Vec3& ca, const Vec3& cb, const PosedBody& A, const PosedBody& B) {
   const Vec3 wb = cb - B.position;
   const Vec3 wa = A.position - ca;
-  return clearly_negative(n.dot(wb), wb) || clearly_negative(n.dot(wa), wa);
+  return (clearly_negative(n.dot(wb), wb) || clearly_negative(n.dot(wa), wa)) && A.shape->convex &&
+         B.shape->convex;  // read last: the rule rarely fires
 }
 
 // For a vertex p inside B's core at signed depth d < 0 below face f: true when f is the face it
@@ -117,6 +121,17 @@ inline bool inside_face(const PosedBody& B, int f, const Vec3& p) {
   return true;
 }
 
+// A vertex at signed distance d < 0 of a face of a non-convex body: its faces are two-sided
+// (an open surface, a plate, a facet of a hollow), so the vertex touches the back side, with the
+// normal reversed (as Rockable and exaDEM take |d|).
+bool back_side(const PosedBody& A, const PosedBody& B, const Vec3& ca, const Vec3& n, double d, double max_gap,
+               ContactPoint& out) {
+  const double gap = -d - A.radius - B.radius;
+  if (gap >= max_gap) return false;
+  fill(A, B, ca, ca - d * n, -n, gap, out);
+  return true;
+}
+
 // The polygon test first: it rejects a quarter of the calls on a cube pile, the depth test few.
 // Depth, normal and gap are then made in the world, as before the edge planes: the same bits.
 bool vertex_face(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
@@ -125,6 +140,7 @@ bool vertex_face(const PosedBody& A, const PosedBody& B, int a, int b, double ma
   const Vec3 n = B.rotation * B.shape->face_normals[b];  // outward normal of B's face, world
   const double d = (ca - B.vertices[B.shape->faces[b][0]]).dot(n);  // signed: negative below the face plane
   const double rsum = A.radius + B.radius;
+  if (d < 0.0 && !B.shape->convex) return back_side(A, B, ca, n, d, max_gap, out);
   if (d <= -rsum || d - rsum >= max_gap) return false;
   if (d < 0.0 && !is_exit_face(B, b, ca, d)) return false;
   fill(A, B, ca, ca - d * n, n, d - rsum, out);

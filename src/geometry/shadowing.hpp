@@ -1,5 +1,5 @@
 #pragma once
-// The SPEC's boundary rule across feature pairs: for convex cores, a vertex whose projection
+// The SPEC's boundary rule across feature pairs: for a convex face body, a vertex whose projection
 // falls inside a face and lies on its outer side has that projection as its unique closest
 // point (p - q is in the face's normal cone), so the vertex-edge and vertex-vertex pairs of
 // the same vertex against that body are duplicates of the vertex-face one. Without this, a
@@ -19,17 +19,20 @@ inline bool may_be_shadowed(PairType t) {
 }
 
 // Marks drop[k] = 1 for the contacts (keys[k], gaps[k]) of one body pair that a vertex-face or
-// face-vertex contact of the same vertex shadows; `radii` = rA + rB (m).
+// face-vertex contact of the same vertex shadows; `radii` = rA + rB (m). A face shadows only when
+// its body is convex (`a_convex`, `b_convex`): over a non-convex core the projection need not
+// be the closest point (a vertex over a face may be nearer an edge of another arm).
 template <class KeyAt, class GapAt>
-void mark_shadowed(std::size_t n, const KeyAt& key_at, const GapAt& gap_at, double radii, std::uint8_t* drop) {
+void mark_shadowed(std::size_t n, const KeyAt& key_at, const GapAt& gap_at, double radii, std::uint8_t* drop,
+                   bool a_convex = true, bool b_convex = true) {
   constexpr int kMax = 64;  // vertices over a face per pair: more than any real contact patch
   std::uint32_t over_a[kMax], over_b[kMax];
   int na = 0, nb = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const FeaturePair f = key_at(k);
     if (gap_at(k) < -radii) continue;  // the vertex is inside the other core: no unique closest point
-    if (f.type == PairType::vertex_face && na < kMax) over_a[na++] = f.a;
-    if (f.type == PairType::face_vertex && nb < kMax) over_b[nb++] = f.b;
+    if (f.type == PairType::vertex_face && b_convex && na < kMax) over_a[na++] = f.a;
+    if (f.type == PairType::face_vertex && a_convex && nb < kMax) over_b[nb++] = f.b;
   }
   auto listed = [](const std::uint32_t* v, int count, std::uint32_t x) {
     for (int i = 0; i < count; ++i)

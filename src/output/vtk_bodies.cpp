@@ -59,11 +59,59 @@ UnitMesh swept_sphere(const Shape& s) {
   return m;
 }
 
+// Appends `part` to `m`, its corner indices shifted past m's points.
+void append(UnitMesh& m, const UnitMesh& part) {
+  const int base = int(m.points.size());
+  m.points.insert(m.points.end(), part.points.begin(), part.points.end());
+  for (std::vector<int> f : part.faces) {
+    for (int& i : f) i += base;
+    m.faces.push_back(std::move(f));
+  }
+}
+
+// The open side of a cylinder of radius r around segment [a, b]: kSides quads.
+UnitMesh tube(const Vec3& a, const Vec3& b, double r) {
+  constexpr int kSides = 16;
+  const Vec3 t = (b - a).normalized();
+  const Vec3 u = t.unitOrthogonal(), w = t.cross(u);
+  UnitMesh m;
+  for (int k = 0; k < kSides; ++k) {
+    const double phi = 2.0 * kPi * k / kSides;
+    const Vec3 d = r * (std::cos(phi) * u + std::sin(phi) * w);
+    m.points.push_back(a + d);
+    m.points.push_back(b + d);
+  }
+  for (int k = 0; k < kSides; ++k) {
+    const int k1 = (k + 1) % kSides;
+    m.faces.push_back({2 * k, 2 * k1, 2 * k1 + 1, 2 * k + 1});  // counter-clockwise seen from outside
+  }
+  return m;
+}
+
+// A polyline or a cluster drawn as what it is: a sphere per vertex and a tube per edge (their
+// overlaps drawn twice), not the hull of the swept spheres.
+UnitMesh tubes_and_spheres(const Shape& s) {
+  static const UnitMesh sphere = make_icosphere();
+  UnitMesh m;
+  for (const Vec3& v : s.vertices) {
+    UnitMesh ball = sphere;
+    for (Vec3& p : ball.points) p = v + s.radius * p;
+    append(m, ball);
+  }
+  for (const auto& e : s.edges) append(m, tube(s.vertices[e[0]], s.vertices[e[1]], s.radius));
+  return m;
+}
+
 // Per shape, the polygons to draw in the principal frame at scale 1.
 std::vector<UnitMesh> shape_meshes(const std::vector<Shape>& shapes) {
   std::vector<UnitMesh> out;
   out.reserve(shapes.size());
-  for (const Shape& s : shapes) out.push_back(s.faces.empty() ? swept_sphere(s) : UnitMesh{s.vertices, s.faces});
+  for (const Shape& s : shapes) {
+    if (!s.faces.empty())
+      out.push_back(UnitMesh{s.vertices, s.faces});
+    else
+      out.push_back(s.convex ? swept_sphere(s) : tubes_and_spheres(s));
+  }
   return out;
 }
 

@@ -7,7 +7,9 @@
 
 #include "geometry/face_planes.hpp"
 #include "polydem/error.hpp"
+#include "shape/moments.hpp"
 #include "shape/topology.hpp"
+#include "shape/union_mass.hpp"
 
 // The rounded body is cut exactly into: the core polyhedron, one prism per face (face x [0, r]
 // along its normal), one cylindrical wedge per edge (angle = exterior dihedral angle) and one
@@ -23,19 +25,6 @@
 
 namespace polydem {
 namespace {
-
-// Volume integrals of 1, x and x x^T over a piece of the body.
-struct Moments {
-  double volume = 0.0;
-  Vec3 first = Vec3::Zero();
-  Mat3 second = Mat3::Zero();
-
-  void add(const Moments& o) {
-    volume += o.volume;
-    first += o.first;
-    second += o.second;
-  }
-};
 
 // Moments of a piece given about point p, moved to the origin.
 Moments shifted(const Moments& local, const Vec3& p) {
@@ -231,7 +220,7 @@ Mat3 principal_axes(const Mat3& inertia, Vec3& moments) {
 
 }  // namespace
 
-void compute_mass_properties(Shape& s) {
+void compute_mass_properties(Shape& s, int quadrature_cells) {
   check_radius(s);
   prepare_topology(s);
   // Integrate about the vertex centroid: far-off inputs would lose digits to cancellation.
@@ -239,7 +228,8 @@ void compute_mass_properties(Shape& s) {
   for (const Vec3& v : s.vertices) origin += v;
   origin /= static_cast<double>(s.vertices.size());
   for (Vec3& v : s.vertices) v -= origin;
-  const Moments m = rounded_body(s);
+  s.mass_error = 0.0;
+  const Moments m = s.convex ? rounded_body(s) : union_moments(s, quadrature_cells, s.mass_error);
   if (!(m.volume > 0.0))
     throw InputError("shape '" + s.name + "': zero volume (give a radius > 0 or a solid polyhedron)");
   const Vec3 center = m.first / m.volume;

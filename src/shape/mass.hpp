@@ -1,5 +1,5 @@
 #pragma once
-// Exact mass properties of a spheropolyhedron (core polyhedron swept by a sphere of radius r).
+// Mass properties of a spheropolyhedron (vertices, edges and faces swept by a sphere of radius r).
 #include "polydem/shape.hpp"
 
 namespace polydem {
@@ -7,12 +7,14 @@ namespace polydem {
 // Volume, centre of mass and inertia of the ROUNDED body, for a shape given in any frame.
 // Moves the vertices into the principal frame about the centre of mass (moments ascending,
 // right-handed), sets input_center/input_rotation, inertia_per_mass, bounding_radius,
-// face_normals and edge_planes, and fills `edges` from the faces when it is empty. Exact
-// (closed forms, no quadrature): only round-off error. Supported topologies: one vertex
-// (sphere), two vertices and one edge (segment), or faces closing every edge twice (a solid or
-// a two-sided plate).
-// Throws InputError "shape 'NAME': ..." for any other topology or a zero volume.
-void compute_mass_properties(Shape& s);
+// face_normals and edge_planes, and fills `edges` from the faces when it is empty. A convex
+// core (sphere, segment, convex polyhedron, plate) has closed forms: only round-off error.
+// Any other shape is the union of its swept elements (union_mass.hpp): spheres apart from
+// each other are closed forms; otherwise a quadrature on `quadrature_cells`^2 lines, its
+// relative error bound in mass_error.
+// Throws InputError "shape 'NAME': ..." for bad indices, degenerate elements or a zero volume.
+inline constexpr int kQuadratureCells = 1024;
+void compute_mass_properties(Shape& s, int quadrature_cells = kQuadratureCells);
 
 // For shapes whose mass properties were given (a .shp with preCompDone y): checks the
 // topology, orients the faces outward, fills edges, face_normals, edge_planes and

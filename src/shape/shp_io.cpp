@@ -1,6 +1,9 @@
 #include "shape/shp_io.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -20,7 +23,11 @@ struct Token {
 const std::vector<std::string> kShpKeys = {
     "name",   "radius",       "preCompDone", "nv",           "ne",         "nf",     "volume",
     "I/m",    "position",     "orientation", "obb.extent",   "obb.center", "obb.e1", "obb.e2",
-    "obb.e3", "OBBtreeLevel", "MCnstep",     "fibObbOption", "isSurface"};
+    "obb.e3", "OBBtreeLevel", "MCnstep",     "fibObbOption", "isSurface",  "na"};
+
+bool is_key(const std::string& word) {
+  return word == "<" || word == ">" || std::find(kShpKeys.begin(), kShpKeys.end(), word) != kShpKeys.end();
+}
 
 std::vector<Token> tokenize(std::istream& in) {
   std::vector<Token> tokens;
@@ -39,6 +46,7 @@ std::vector<Token> tokenize(std::istream& in) {
 // What one block says, before the shape is finished.
 struct Block {
   Shape shape;
+  std::vector<int> edge_lines;  // line of each edge, for the duplicate warning
   int line = 0;
   bool has_name = false, has_radius = false, precomputed = false;
   bool has_volume = false, has_inertia = false;
@@ -46,8 +54,8 @@ struct Block {
 
 class BlockParser {
  public:
-  BlockParser(const std::vector<Token>& tokens, size_t pos, std::string file)
-      : tokens_(tokens), pos_(pos), file_(std::move(file)) {}
+  BlockParser(const std::vector<Token>& tokens, size_t pos, std::string file, std::vector<std::string>& warnings)
+      : tokens_(tokens), pos_(pos), file_(std::move(file)), warnings_(warnings) {}
 
   size_t position() const { return pos_; }
 
@@ -97,14 +105,12 @@ class BlockParser {
     return Vec3(x, y, number(key, line));
   }
 
+  // Rockable skips what it does not know: so do we, with a warning, up to the next key.
   void key(Block& b, const Token& t) {
-    if (header_key(b, t) || geometry_key(b.shape, t) || property_key(b, t) || ignored_key(t)) return;
-    if (t.text == "isSurface")
-      throw InputError(input_message(file_, t.line, t.text,
-                                     "open surface shapes are not supported "
-                                     "(use an stl driver for a surface)"));
-    throw InputError(input_message(file_, t.line, t.text,
-                                   "unknown key in a shape block" + did_you_mean(t.text, kShpKeys)));
+    if (header_key(b, t) || geometry_key(b, t) || property_key(b, t) || ignored_key(b, t)) return;
+    warnings_.push_back(input_message(file_, t.line, t.text,
+                                      "unknown key in a shape block, ignored" + did_you_mean(t.text, kShpKeys)));
+    while (pos_ < tokens_.size() && !is_key(tokens_[pos_].text)) ++pos_;
   }
 
   bool header_key(Block& b, const Token& t) {
@@ -126,7 +132,8 @@ class BlockParser {
     return true;
   }
 
-  bool geometry_key(Shape& s, const Token& t) {
+  bool geometry_key(Block& b, const Token& t) {
+    Shape& s = b.shape;
     const std::string& k = t.text;
     constexpr long kMaxCount = 10000000;
     if (k == "nv") {
@@ -137,6 +144,7 @@ class BlockParser {
       for (int i = 0; i < n; ++i) {
         const int a = count(k, t.line, kMaxCount);
         s.edges.push_back({a, count(k, t.line, kMaxCount)});
+        b.edge_lines.push_back(tokens_[pos_ - 1].line);
       }
     } else if (k == "nf") {
       const int n = count(k, t.line, kMaxCount);
@@ -171,13 +179,18 @@ class BlockParser {
     return true;
   }
 
-  // Keys Rockable writes that polydem rebuilds (bounding box) or does not use (its settings).
-  bool ignored_key(const Token& t) {
+  // Keys Rockable writes that polydem rebuilds (bounding box) or does not use (its settings),
+// and isSurface.
+  bool ignored_key(Block& b, const Token& t) {
     const std::string& k = t.text;
     if (k == "obb.extent" || k == "obb.center" || k == "obb.e1" || k == "obb.e2" || k == "obb.e3") {
       vec3(k, t.line);
-    } else if (k == "OBBtreeLevel" || k == "MCnstep" || k == "fibObbOption") {
-      number(k, t.line);
+    } else if (k == "OBBtreeLevel" || k == "MCnstep" || k == "fibObbOption" || k == "na") {
+      number(k, t.line);  // na: exaDEM's count of extra data, 0 in its libraries
+    } else if (k == "isSurface") {
+      b.shape.surface = true;
+      if (pos_ < tokens_.size() && (tokens_[pos_].text == "0" || tokens_[pos_].text == "1"))
+        b.shape.surface = tokens_[pos_++].text == "1";  // a flag, or a flag with its value
     } else {
       return false;
     }
@@ -187,10 +200,31 @@ class BlockParser {
   const std::vector<Token>& tokens_;
   size_t pos_;
   std::string file_;
+  std::vector<std::string>& warnings_;
 };
 
-Shape finish(Block b, const std::string& file) {
+// Edges listed twice (a b, or b a) are merged, with a warning naming the line of the repeat.
+void merge_duplicate_edges(Block& b, const std::string& file, std::vector<std::string>& warnings) {
+  std::vector<std::array<int, 2>> kept;
+  for (std::size_t e = 0; e < b.shape.edges.size(); ++e) {
+    const auto& edge = b.shape.edges[e];
+    const bool repeated = std::any_of(kept.begin(), kept.end(), [&](const std::array<int, 2>& k) {
+      return std::min(k[0], k[1]) == std::min(edge[0], edge[1]) && std::max(k[0], k[1]) == std::max(edge[0], edge[1]);
+    });
+    if (!repeated) {
+      kept.push_back(edge);
+      continue;
+    }
+    warnings.push_back(input_message(file, b.edge_lines[e], "ne",
+                                     "shape '" + b.shape.name + "': edge " + std::to_string(edge[0]) + " " +
+                                         std::to_string(edge[1]) + " is listed twice, merged"));
+  }
+  b.shape.edges = std::move(kept);
+}
+
+Shape finish(Block b, const std::string& file, std::vector<std::string>& warnings) {
   Shape& s = b.shape;
+  merge_duplicate_edges(b, file, warnings);
   if (!b.has_name) throw InputError(input_message(file, b.line, "name", "missing in this shape block"));
   const std::string where = "shape '" + s.name + "': ";
   if (!b.has_radius || !(s.radius > 0.0))
@@ -213,22 +247,26 @@ Shape finish(Block b, const std::string& file) {
 
 }  // namespace
 
-std::vector<Shape> read_shp(std::istream& in, const std::string& file) {
+std::vector<Shape> read_shp(std::istream& in, const std::string& file, std::vector<std::string>* warnings) {
   const std::vector<Token> tokens = tokenize(in);
+  std::vector<std::string> own;
+  std::vector<std::string>& said = warnings ? *warnings : own;
   std::vector<Shape> shapes;
   for (size_t i = 0; i < tokens.size(); ++i) {
     if (tokens[i].text != "<") continue;  // Rockable skips anything between blocks
-    BlockParser parser(tokens, i + 1, file);
-    shapes.push_back(finish(parser.parse(tokens[i].line), file));
+    BlockParser parser(tokens, i + 1, file, said);
+    shapes.push_back(finish(parser.parse(tokens[i].line), file, said));
     i = parser.position() - 1;
   }
+  if (!warnings)
+    for (const std::string& w : own) std::fprintf(stderr, "warning: %s\n", w.c_str());
   return shapes;
 }
 
-std::vector<Shape> read_shp_file(const std::string& path) {
+std::vector<Shape> read_shp_file(const std::string& path, std::vector<std::string>* warnings) {
   std::ifstream in(path);
   if (!in) throw InputError(input_message(path, 0, "", "cannot open the shape file"));
-  return read_shp(in, path);
+  return read_shp(in, path, warnings);
 }
 
 void write_shp(std::ostream& out, const std::vector<Shape>& shapes) {
@@ -251,6 +289,7 @@ void write_shp(std::ostream& out, const std::vector<Shape>& shapes) {
     vec(s.input_center);
     const Quat& q = s.input_rotation;
     out << "\norientation " << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z();
+    if (s.surface) out << "\nisSurface";  // a flag, as Rockable writes it
     out << "\nnv " << s.vertices.size() << '\n';
     for (const Vec3& v : s.vertices) {
       vec(v);

@@ -103,14 +103,58 @@ void check_sizes(const Shape& s) {
       fail(s, "face " + std::to_string(f) + " has zero area");
 }
 
+// Each edge once, in first-listed order (a and b, or b and a, are the same edge).
+void merge_duplicate_edges(Shape& s) {
+  std::set<EdgeKey> seen;
+  std::vector<std::array<int, 2>> kept;
+  for (const auto& e : s.edges)
+    if (seen.insert(key_of(e[0], e[1])).second) kept.push_back(e);
+  s.edges = std::move(kept);
+}
+
+// A sphere (1 vertex) or a segment (2 vertices, 1 edge) is convex; any other set of vertices
+// and edges is a polyline, a cluster of spheres or a mix of both.
 void prepare_faceless(Shape& s) {
+  merge_duplicate_edges(s);
   const size_t nv = s.vertices.size();
-  if (nv == 1 && s.edges.empty()) return;
-  if (nv == 2 && s.edges.empty()) s.edges.push_back({0, 1});
-  if (nv == 2 && s.edges.size() == 1) return;
-  fail(s, "has " + std::to_string(nv) +
-              " vertices and no face: only a sphere (1 vertex) or a "
-              "segment (2 vertices, 1 edge) may have no face (give faces, or hull the points)");
+  s.convex = (nv == 1 && s.edges.empty()) || (nv == 2 && s.edges.size() == 1);
+}
+
+// True when the faces close a convex polyhedron (every face edge on two faces, every listed
+// edge on a face, every vertex on a face and inside every face plane) or are one polygon (a
+// plate). Works on a copy: the faces are oriented outward only once convexity is known.
+bool closes_convex_core(const Shape& given) {
+  if (given.surface) return false;
+  if (given.faces.size() == 1) return true;
+  Shape s = given;
+  const bool plate = s.faces.size() == 2 && thickness(s) <= 1e-9 * extent(s);
+  if (!plate) orient_solid_faces(s);
+  const auto by_edge = faces_by_edge(s);
+  for (const auto& entry : by_edge)
+    if (entry.second.size() != 2) return false;
+  for (const auto& e : s.edges)
+    if (!by_edge.count(key_of(e[0], e[1]))) return false;
+  std::vector<char> on_face(s.vertices.size(), 0);
+  for (const auto& f : s.faces)
+    for (int i : f) on_face[i] = 1;
+  for (char used : on_face)
+    if (!used) return false;
+  const double tolerance = 1e-9 * extent(s);  // m, round-off of coplanar corners
+  for (const auto& f : s.faces) {
+    const Vec3 n = polygon_normal(s.vertices, f);
+    const Vec3& p = s.vertices[f[0]];
+    for (const Vec3& v : s.vertices)
+      if (n.dot(v - p) > tolerance) return false;
+  }
+  return true;
+}
+
+// A non-convex or open set of faces: kept as given (two-sided in contact), the edges are the
+// listed ones and every face edge, each once.
+void prepare_open_faces(Shape& s) {
+  s.convex = false;
+  for (const auto& entry : faces_by_edge(s)) s.edges.push_back({entry.first.first, entry.first.second});
+  merge_duplicate_edges(s);
 }
 
 }  // namespace
@@ -134,16 +178,20 @@ void prepare_topology(Shape& s) {
     s.face_normals.clear();
     return;
   }
+  if (!closes_convex_core(s)) {
+    prepare_open_faces(s);
+    check_sizes(s);
+    s.face_normals.clear();
+    for (const auto& f : s.faces) s.face_normals.push_back(polygon_normal(s.vertices, f));
+    return;
+  }
+  s.convex = true;
   // One polygon alone (as some Rockable libraries give plates): its back side is added.
   if (s.faces.size() == 1) s.faces.emplace_back(s.faces[0].rbegin(), s.faces[0].rend());
   // A plate (two faces in one plane) keeps its two opposite orders as given.
   const bool plate = s.faces.size() == 2 && thickness(s) <= 1e-9 * extent(s);
   if (!plate) orient_solid_faces(s);
   const auto by_edge = faces_by_edge(s);
-  for (const auto& [key, faces] : by_edge)
-    if (faces.size() != 2)
-      fail(s, "edge " + std::to_string(key.first) + "-" + std::to_string(key.second) + " borders " +
-                  std::to_string(faces.size()) + " face(s); a closed convex polyhedron needs 2");
   if (s.edges.empty()) {
     for (const auto& entry : by_edge) s.edges.push_back({entry.first.first, entry.first.second});
   } else {

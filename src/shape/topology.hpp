@@ -16,10 +16,12 @@ struct EdgeFaces {
 // Unit normal of a polygon by Newell's method (robust for slightly non-planar polygons).
 Vec3 polygon_normal(const std::vector<Vec3>& vertices, const std::vector<int>& face);
 
-// Checks indices and topology, reverses faces that point inward (solids only), adds the
-// back face of a lone polygon (a plate given with one face), fills
-// `edges` from the faces when empty (or checks they match) and `face_normals`.
-// Throws InputError "shape 'NAME': ..." on a topology the mass properties cannot handle.
+// Checks indices, decides `convex` and prepares the faces. A convex core (closed convex
+// faces, one polygon, a segment, a point): faces reversed to point outward, the back face of a
+// lone polygon added, `edges` filled from the faces when empty (or checked to match). Any other
+// set (polylines, clusters, open or non-convex faces): faces kept as given, `edges` the listed
+// ones plus every face edge, each once. Fills `face_normals`.
+// Throws InputError "shape 'NAME': ..." on bad indices, zero-length edges, zero-area faces.
 void prepare_topology(Shape& s);
 
 // For each edge of s.edges, the two faces that share it (after prepare_topology).

@@ -11,9 +11,9 @@
 namespace polydem {
 namespace {
 
-const std::vector<std::string> kYamlKeys = {"name",     "radius",     "vertices", "faces",
-                                            "edges",    "points",     "volume",   "inertia_per_mass",
-                                            "position", "orientation"};
+const std::vector<std::string> kYamlKeys = {"name",     "radius",      "vertices", "faces",
+                                            "edges",    "points",      "volume",   "inertia_per_mass",
+                                            "position", "orientation", "convex",   "surface"};
 
 int line_of(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
@@ -89,6 +89,12 @@ class ShapeEntry {
     return out;
   }
 
+  bool flag(const std::string& key) const {
+    const YAML::Node n = node_[key];
+    if (n.IsScalar() && (n.Scalar() == "true" || n.Scalar() == "false")) return n.Scalar() == "true";
+    fail(n, key, "expected true or false");
+  }
+
   const YAML::Node& node() const { return node_; }
 
  private:
@@ -104,9 +110,20 @@ void read_topology(const ShapeEntry& e, Shape& s) {
       if (pair.size() != 2) e.fail(e.node()["edges"], "edges", "each edge is a pair [i, j]");
       s.edges.push_back({pair[0], pair[1]});
     }
-  if (s.vertices.size() > 2 && s.faces.empty())
-    e.fail(e.node()["vertices"], "vertices",
-           "more than 2 vertices need 'faces' (or write 'points' to take the hull)");
+  // Two vertices and no `edges` key: a segment (write `edges: []` for two separate spheres).
+  if (s.vertices.size() == 2 && s.faces.empty() && !e.has("edges")) s.edges.push_back({0, 1});
+  if (e.has("surface")) s.surface = e.flag("surface");
+}
+
+// `convex: false` turns the convex fast paths off for a convex core; `convex: true` on a core
+// that is not convex is an error (the fast paths would be wrong).
+void apply_convex_key(const ShapeEntry& e, Shape& s) {
+  if (!e.has("convex")) return;
+  const bool wanted = e.flag("convex");
+  if (wanted && !s.convex)
+    e.fail(e.node()["convex"], "convex",
+           "shape '" + s.name + "' is not convex (its faces do not close a convex polyhedron); leave the key out");
+  s.convex = wanted;
 }
 
 void read_precomputed(const ShapeEntry& e, Shape& s) {
@@ -138,6 +155,7 @@ Shape read_entry(const ShapeEntry& e, const std::string& file) {
     } else {
       compute_mass_properties(s);
     }
+    apply_convex_key(e, s);
     return s;
   } catch (const InputError& error) {
     const std::string what = error.what();

@@ -8,7 +8,9 @@
 namespace polydem {
 
 // A YAML list of shapes, each a mapping with `name`, `radius` and either `vertices`
-// (+ optional `faces`, `edges`) or `points` (convex hull taken). Optional precomputed
+// (+ optional `faces`, `edges`; two vertices without `edges` are a segment) or `points`
+// (convex hull taken); optional `convex: false` (fast paths off) and `surface: true` (an open
+// surface, as Rockable's isSurface). Optional precomputed
 // `volume` + `inertia_per_mass` (+ `position`, `orientation` [w, x, y, z]) keep the vertices
 // as given (principal frame); otherwise mass properties are computed.
 // Throws InputError "FILE:LINE: key 'KEY': ..." with the nearest valid key for unknown ones.

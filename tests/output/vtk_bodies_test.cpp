@@ -170,3 +170,37 @@ TEST_CASE("bodies vtu: an empty body list is a valid file", "[output][vtk]") {
   CHECK(data["n_points"].number == 0);
   CHECK(data["n_cells"].number == 0);
 }
+
+TEST_CASE("bodies vtu: a cross is drawn as its swept shape, a sphere per tip and a tube per arm", "[output][vtk]") {
+  Shape cross;
+  cross.name = "alpha3";
+  cross.radius = 0.002;
+  const double a = 0.005;
+  cross.vertices = {{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}, {0, 0, a}, {0, 0, -a}};
+  cross.edges = {{0, 1}, {2, 3}, {4, 5}};
+  cross.convex = false;
+  Bodies bodies;
+  const Vec3 centre(0.1, 0.2, 0.3);
+  const Quat q = axis_angle({1, 2, 3}, 0.7);
+  add_body(bodies, 0, centre, q, 1.5, Vec3::Zero(), Vec3::Zero(), 0);
+  const TempDir tmp("cross");
+  const std::string path = tmp.path + "/cross.vtu";
+  write_bodies_vtu(path, bodies, {cross});
+  const Json data = read_with_vtk(path);
+  CHECK(data["n_cells"].number == 6 * kIcoFaces + 3 * 16);
+  // Every point lies on a tip's sphere or an arm's tube: at distance r (scaled) from a tip, or
+  // from an arm (a segment through the centre) at a foot inside it. Not the hull of the tips.
+  const double r = 0.002;
+  for (std::size_t k = 0; k < std::size_t(data["n_points"].number); ++k) {
+    const Vec3 p = q.conjugate() * (point_of(data, k) - centre) / 1.5;  // in the shape frame, unscaled
+    double off = INFINITY;  // m, smallest | distance to an element - r |
+    for (const Vec3& v : cross.vertices) off = std::min(off, std::abs((p - v).norm() - r));
+    for (int axis = 0; axis < 3; ++axis)
+      if (std::abs(p[axis]) <= a) {
+        Vec3 foot = Vec3::Zero();
+        foot[axis] = p[axis];
+        off = std::min(off, std::abs((p - foot).norm() - r));
+      }
+    CHECK(off < 1e-12);
+  }
+}

@@ -192,9 +192,8 @@ TEST_CASE("bad shapes for the mass computation are InputErrors", "[mass]") {
   Shape s;
   s.name = "odd";
   s.radius = 0.1;
-  s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-  CHECK_THROWS_AS(compute_mass_properties(s), InputError);  // 3 vertices, no face
   s.vertices = {Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  s.edges = {{0, 1}};
   CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("zero length"));
   s.edges.clear();
   s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0)};
