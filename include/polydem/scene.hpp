@@ -2,6 +2,7 @@
 // A scene file parsed into plain settings structs, one per YAML block (see shared/SCENE.md).
 // Every field is SI; the parser converts unit strings ("5 mm", "30 rpm") on the way in.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -169,6 +170,9 @@ struct Scene {
   std::vector<DriverSpec> drivers;
   ForceSettings forces;
   OutputSettings output;
+  // "simulation.dt", "output.csv_every", ...: where each given key was, for the limits checked
+  // once the time step is known (sim/run_limits).
+  std::map<std::string, SourceLoc> key_locs;
 };
 
 }  // namespace polydem

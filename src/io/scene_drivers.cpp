@@ -109,6 +109,11 @@ DriverSpec read_driver(const YAML::Node& item, std::size_t index, const Scene& s
       std::find(kDriverKinds.begin(), kDriverKinds.end(), kind_name) - kDriverKinds.begin());
   const YamlMap m(body, kind_name, scene.path, line_of(item, line), keys_of(d.kind));
   d.name = m.text("name", kind_name + "_" + std::to_string(index + 1));
+  const bool safe = std::all_of(d.name.begin(), d.name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+  if (d.name.empty() || !safe)  // it names driver_NAME.csv, as probe names do
+    m.fail("name", "'" + d.name + "' must be letters, digits, '_' or '-' (it names driver_NAME.csv)");
   switch (d.kind) {
     case DriverSpec::Kind::wall:
       read_wall(m, d);

@@ -15,8 +15,12 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
   const ContactOperator& op = scene.forces.contact;
   ContactSettings s{};
   if (op.present) {  // a scene without a contact operator (drag only) has no law to prepare
-    s.particle = prepare_law(op.config);
-    s.driver = prepare_law(op.has_config_driver ? op.config_driver : op.config);
+    try {
+      s.particle = prepare_law(op.config);
+      s.driver = prepare_law(op.has_config_driver ? op.config_driver : op.config);
+    } catch (const InputError& e) {  // the law names the key; the operator says where
+      throw InputError(input_message(op.loc.file, op.loc.line, "", e.what()));
+    }
   }
   if (scene.simulation.skin) {
     s.skin = *scene.simulation.skin;
@@ -27,6 +31,13 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
     s.skin = bodies.size() ? 0.1 * r_min : 0.0;
   }
   return s;
+}
+
+// The line of a given key ("simulation.dt"), else of its block ("simulation"), else 0.
+int scene_line(const Scene& scene, const std::string& key) {
+  auto it = scene.key_locs.find(key);
+  if (it == scene.key_locs.end()) it = scene.key_locs.find(key.substr(0, key.find('.')));
+  return it == scene.key_locs.end() ? 0 : it->second.line;
 }
 
 }  // namespace
@@ -41,11 +52,13 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt);
   if (!contacts && !scene.simulation.dt)
-    throw InputError(input_message(scene.path, 0, "dt", "'auto' needs a contact law to estimate the critical step; give a number"));
+    throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
+                                   "'auto' needs a contact law to estimate the critical step; give a number"));
   dt_ = dt_estimate_.chosen;
   drivers.set_contact_stiffness(cs.driver.kn, dt_estimate_.critical_normal);  // a servo's default gain
   if (!std::isfinite(dt_) || dt_ <= 0.0)
-    throw InputError(input_message(scene.path, 0, "dt", "cannot choose a time step automatically for this scene; give simulation.dt"));
+    throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
+                                   "cannot choose a time step automatically for this scene; give simulation.dt"));
   for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
