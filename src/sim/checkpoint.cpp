@@ -34,8 +34,10 @@ struct Header {  // format 06, after the magic
 };
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + sizeof(Header);
 constexpr std::size_t kChecksumBytes = sizeof(std::uint64_t);
-// Bytes of one stored contact: the pair, then slot_fields (key, flag, ft, mr, point, force, fn, gap; fd, gap, weight).
-constexpr std::size_t kContactBytes03 = 2 * 4 + 1 + 2 + 4 + 1 + 5 * sizeof(Vec3) + 2 * sizeof(double);
+// Bytes of one stored contact in format 03 (the fewest): the pair, then slot_fields (key, flag,
+// ft, mr, point, force, fn, gap; 05 adds fd, gap, weight).
+constexpr std::size_t kContactBytes03 = 2 * 4 + 1 + 2 + 4 + 1 + 4 * sizeof(Vec3) + 2 * sizeof(double);
+static_assert(kContactBytes03 == 128);
 constexpr double kUnitTolerance = 1e-6;  // |q| - 1 of a stored orientation (round-off is ~1e-15)
 
 struct Writer {
