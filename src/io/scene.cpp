@@ -47,6 +47,8 @@ void require_sequence(const YAML::Node& node, const std::string& file, int line,
 
 namespace {
 
+constexpr long long kMaxThreads = 65536;  // an int for OpenMP; far beyond any machine's cores
+
 // yaml-cpp's message for a tab in the indentation does not say so.
 std::string tab_hint(const std::string& text, int line) {
   std::istringstream lines(text);
@@ -89,7 +91,10 @@ SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   s.duration = check_positive(m, "duration", m.quantity("duration", Dimension::time));
   if (m.has("dt") && m.scalar("dt") != "auto")
     s.dt = check_positive(m, "dt", m.quantity("dt", Dimension::time));
-  s.threads = static_cast<int>(m.integer("threads", 0, 0));
+  const long long threads = m.integer("threads", 0, 0);
+  if (threads > kMaxThreads)
+    m.fail("threads", "at most " + std::to_string(kMaxThreads) + ", got " + m.scalar("threads"));
+  s.threads = static_cast<int>(threads);
   if (m.has("skin")) s.skin = check_positive(m, "skin", m.quantity("skin", Dimension::length));
   s.seed = m.unsigned64("seed", 0);
   note_locs(m, "simulation", {"duration", "dt", "threads", "skin"}, scene);

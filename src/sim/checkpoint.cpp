@@ -260,7 +260,9 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Outp
 
 void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress, bool force) {
   const std::string bytes = read_file(path);
-  const auto is = [&](const char (&m)[8]) { return bytes.size() >= sizeof(m) && std::memcmp(bytes.data(), m, sizeof(m)) == 0; };
+  const auto is = [&](const char (&m)[8]) {
+    return bytes.size() >= sizeof(m) && std::memcmp(bytes.data(), m, sizeof(m)) == 0;
+  };
   if (!is(kMagic) && !is(kMagic05) && !is(kMagic04) && !is(kMagic03))
     throw InputError(path + ": not a polydem checkpoint (formats 03 to " + std::string(kMagic + 6, 2) + " resume)");
   if (is(kMagic)) check_header(bytes, path, sim, force);

@@ -38,7 +38,9 @@ class Schedule {
     if (every_ <= 0 || t < next_ - 0.5 * dt) return false;
     while (next_ <= t + 0.5 * dt) {
       const double next = next_ + every_;
-      if (next == next_) throw RunError("an output interval of " + std::to_string(every_) + " s is below the round-off of t = " + std::to_string(t) + " s");
+      if (next == next_)  // check_run_limits keeps intervals above this; a guard, not a hang
+        throw RunError("an output interval of " + std::to_string(every_) + " s is below the round-off of t = " +
+                       std::to_string(t) + " s");
       next_ = next;
     }
     return true;

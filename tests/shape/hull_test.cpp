@@ -114,7 +114,8 @@ TEST_CASE("hull: points far from the line or plane they would be flattened to ar
   std::vector<Vec3> points;
   for (int k = 0; k < 7; ++k) points.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
   points.emplace_back(1e9, 1e9, 1e9);
-  CHECK_THROWS_WITH(build_hull_shape(points, 0.001, "far"), Catch::Contains("off the line") && Catch::Contains("beyond the radius"));
+  CHECK_THROWS_WITH(build_hull_shape(points, 0.001, "far"),
+                    Catch::Contains("off the line") && Catch::Contains("beyond the radius"));
   // Within the radius, the segment holds them all: accepted.
   const Shape rod = build_hull_shape({Vec3(0, 0, 0), Vec3(1e9, 0, 0), Vec3(5e8, 0.5, 0)}, 1.0, "rod");
   CHECK(rod.vertices.size() == 2);
