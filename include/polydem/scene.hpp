@@ -4,6 +4,7 @@
 // drivers and the field forces are the stages' own settings (driver/, field/): the parser
 // builds them, the simulation hands them over.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -106,6 +107,9 @@ struct Scene {
   std::vector<DriverSettings> drivers;
   ForceSettings forces;
   OutputSettings output;
+  // "simulation.dt", "output.csv_every", ...: where each given key was, for the limits checked
+  // once the time step is known (sim/run_limits).
+  std::map<std::string, SourceLoc> key_locs;
 };
 
 }  // namespace polydem

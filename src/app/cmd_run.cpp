@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "io/generate.hpp"
 #include "io/scene.hpp"
 #include "polydem/error.hpp"
+#include "sim/run_limits.hpp"
 #include "sim/runner.hpp"
 
 namespace polydem {
@@ -16,14 +18,17 @@ namespace polydem {
 namespace {
 
 const char* kRunHelp =
-    "usage: polydem run SCENE.yaml [--out DIR] [--threads N] [--until T] [--resume CHECKPOINT]\n"
+    "usage: polydem run SCENE.yaml [--out DIR] [--threads N] [--until T] [--resume CHECKPOINT [--force]]\n"
     "  --out DIR        output folder (default: output.dir of the scene, else out/ beside it)\n"
     "  --threads N      OpenMP threads (default: simulation.threads, else all cores);\n"
     "                   results are bitwise identical for any N\n"
     "  --until T        stop at simulated time T (s, or with a unit: \"0.1 s\")\n"
-    "  --resume FILE    continue bit for bit from a checkpoint_NNNNNN.bin of this scene\n"
+    "  --resume FILE    continue bit for bit from a checkpoint_NNNNNN.bin of this scene; the CSV\n"
+    "                   files of the output folder are cut back to the checkpoint's time\n"
+    "  --force          resume a checkpoint written for another scene (with a warning)\n"
     "Writes scene.pvd (ParaView), bodies/drivers/contacts VTK files, energy.csv and checkpoints.\n"
-    "Ctrl-C stops at the end of the current step and writes a checkpoint to resume from.\n";
+    "Ctrl-C or SIGTERM stops at the end of the current step and writes a checkpoint to resume\n"
+    "from. Exit codes: 0 done, 1 bad input, 2 the run failed, 3 interrupted (checkpoint written).\n";
 
 const char* kCheckHelp =
     "usage: polydem check SCENE.yaml\n"
@@ -36,6 +41,7 @@ struct RunArgs {
   std::optional<int> threads;
   std::optional<double> until;
   std::string resume;
+  bool force = false;
 };
 
 double parse_seconds(const std::string& text) {
@@ -45,7 +51,7 @@ double parse_seconds(const std::string& text) {
   std::string unit = text.substr(used);
   while (!unit.empty() && unit.front() == ' ') unit.erase(unit.begin());
   const std::map<std::string, double> units{{"", 1.0}, {"s", 1.0}, {"ms", 1e-3}, {"us", 1e-6}, {"min", 60.0}};
-  if (used == 0 || !units.count(unit) || v < 0)
+  if (used == 0 || !units.count(unit) || !(v >= 0) || !std::isfinite(v))
     throw InputError("--until: expected a time such as 0.5 or \"500 ms\", got '" + text + "'");
   return v * units.at(unit);
 }
@@ -62,16 +68,20 @@ RunArgs parse_run_args(const std::vector<std::string>& args, const char* help, b
     else if (run && a == "--out") r.out = value();
     else if (run && a == "--threads") {
       const std::string& v = value();
-      try { r.threads = std::stoi(v); } catch (...) { r.threads = 0; }
-      if (*r.threads < 1) throw InputError("--threads: expected a whole number >= 1, got '" + v + "'");
+      std::size_t used = 0;
+      try { r.threads = std::stoi(v, &used); } catch (...) { r.threads = 0; }
+      if (*r.threads < 1 || used != v.size())
+        throw InputError("--threads: expected a whole number >= 1, got '" + v + "'");
     }
     else if (run && a == "--until") r.until = parse_seconds(value());
     else if (run && a == "--resume") r.resume = value();
+    else if (run && a == "--force") r.force = true;
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see --help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene file per run)");
   }
   if (r.scene.empty()) throw InputError(std::string("missing the scene file\n") + help);
+  if (r.force && r.resume.empty()) throw InputError("--force goes with --resume (see --help)");
   return r;
 }
 
@@ -122,12 +132,24 @@ std::unique_ptr<Simulation> build(const Scene& scene) {
   return std::make_unique<Simulation>(scene, library, expand_bodies(scene, library));
 }
 
+// More threads than cores share them and wait on each other at every loop of the step.
+void warn_threads(int threads, const Scene& scene, bool from_command_line) {
+  const int cores = omp_get_num_procs();
+  if (threads <= cores) return;
+  const std::string where = from_command_line ? std::string("--threads: ") :
+      input_message(scene.key_locs.at("simulation.threads").file, scene.key_locs.at("simulation.threads").line,
+                    "threads", "");
+  std::fprintf(stderr, "warning: %s%d threads on %d cores: they take turns on the cores and the run is much "
+               "slower; give at most %d\n", where.c_str(), threads, cores, cores);
+}
+
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args) {
   const RunArgs a = parse_run_args(args, kRunHelp, true);
   const Scene scene = load_scene(a.scene);
   const int threads = a.threads ? *a.threads : scene.simulation.threads;
+  if (threads > 0) warn_threads(threads, scene, bool(a.threads));
   if (threads > 0) omp_set_num_threads(threads);
   const auto built = build(scene);
   Simulation& sim = *built;
@@ -137,6 +159,7 @@ int cmd_run(const std::vector<std::string>& args) {
   o.out_dir = a.out ? *a.out : scene.output.dir;
   o.until = a.until;
   o.resume = a.resume;
+  o.force = a.force;
   std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s, %d threads, output in %s\n",
                sim.bodies.size(), sim.drivers.size(), sim.dt(), omp_get_max_threads(), o.out_dir.c_str());
   const RunSummary s = run_simulation(sim, o);
@@ -147,7 +170,7 @@ int cmd_run(const std::vector<std::string>& args) {
                s.rebuilds, o.out_dir.c_str());
   std::fprintf(stderr, "polydem: last list: %zu body pairs, %zu driver pairs, %zu candidate feature pairs; %zu contacts\n",
                c.body_pairs, c.driver_pairs, c.slots, c.contacts);
-  return 0;
+  return s.interrupted ? kExitInterrupted : 0;
 }
 
 int cmd_check(const std::vector<std::string>& args) {
@@ -155,6 +178,7 @@ int cmd_check(const std::vector<std::string>& args) {
   const auto sim = build(load_scene(a.scene));
   std::printf("scene: %s: valid\n", a.scene.c_str());
   print_counts(*sim);
+  for (const std::string& w : check_run_limits(*sim, std::nullopt)) std::fprintf(stderr, "%s\n", w.c_str());
   warn_unsafe_step(*sim);
   warn_fast_impacts(*sim);
   return 0;

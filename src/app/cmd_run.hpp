@@ -4,6 +4,9 @@
 
 namespace polydem {
 
+// Exit code of a run stopped by SIGINT or SIGTERM after writing its checkpoint.
+constexpr int kExitInterrupted = 3;
+
 // `polydem run SCENE.yaml [--out DIR] [--threads N] [--until T] [--resume CHECKPOINT]`
 int cmd_run(const std::vector<std::string>& args);
 // `polydem check SCENE.yaml`

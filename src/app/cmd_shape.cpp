@@ -162,7 +162,14 @@ int hull(const std::vector<std::string>& args) {
   if (!radius)
     throw InputError(input_message("command line", 0, "--radius",
                                    "'" + opt["--radius"] + "' is not a length (write 0.0005 or \"0.5 mm\")"));
-  Shape shape = build_hull_shape(read_points(opt["input"]), *radius, opt["--name"]);
+  Shape shape;
+  try {
+    shape = build_hull_shape(read_points(opt["input"]), *radius, opt["--name"]);
+  } catch (const InputError& e) {  // the hull names the shape; say which input it came from
+    const std::string what = e.what();
+    if (what.rfind(opt["input"], 0) == 0) throw;
+    throw InputError(opt["input"] + ": " + what);
+  }
   std::vector<Shape> shapes;
   if (opt.count("--append") && std::ifstream(opt["-o"])) shapes = read_shp_file(opt["-o"]);
   for (const Shape& s : shapes)

@@ -1,4 +1,5 @@
-// polydem: the command-line program. Exit codes: 0 ok, 1 bad input, 2 runtime failure.
+// polydem: the command-line program. Exit codes: 0 ok, 1 bad input, 2 runtime failure,
+// 3 interrupted by SIGINT or SIGTERM (a checkpoint written).
 #include <cstdio>
 #include <cstring>
 #include <string>

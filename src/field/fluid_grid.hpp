@@ -11,6 +11,10 @@ namespace polydem {
 
 using Index3 = Eigen::Vector3i;
 
+// The most cells a grid may hold: cell indices are ints (2^31 - 1), and at ~100 bytes a cell
+// (velocity, pressure, density, viscosity, their gradients) 2e8 cells take 20 GB.
+constexpr double kMaxGridCells = 2e8;
+
 struct FluidGrid {
   Vec3 origin = Vec3::Zero();     // m, lower corner of cell (0, 0, 0)
   Vec3 spacing = Vec3::Ones();    // m, cell size per axis
@@ -25,7 +29,8 @@ struct FluidGrid {
   std::vector<Vec3> grad_p;       // Pa/m
   std::vector<Vec3> div_tau;      // N/m^3, -div(mu grad U) - div(mu dev(grad(U)^T)), mu = nu rho
 
-  std::size_t size() const { return std::size_t(cells.prod()); }
+  std::size_t size() const { return std::size_t(cells.x()) * std::size_t(cells.y()) * std::size_t(cells.z()); }
+  // int arithmetic: grids are limited to kMaxGridCells cells
   std::size_t index(const Index3& c) const { return std::size_t(c.x() + cells.x() * (c.y() + cells.y() * c.z())); }
   Vec3 center(const Index3& c) const { return origin + (c.cast<double>().array() + 0.5).matrix().cwiseProduct(spacing); }
   double cell_volume() const { return spacing.prod(); }

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "field/fluid_grid.hpp"  // kMaxGridCells
 #include "field/vti_decode.hpp"
 #include "polydem/error.hpp"
 
@@ -155,7 +156,10 @@ VtiImage parse(const std::string& xml) {
   img.cell_data = !img.arrays.empty();
   if (!img.cell_data) img.arrays = read_section(c, "PointData");
   const Eigen::Vector3i cells = (img.points - Eigen::Vector3i::Ones()).cwiseMax(1);
-  const long long tuples = img.cell_data ? (long long)cells.prod() : (long long)img.points.prod();
+  const long long tuples = img.cell_data ? cells.cast<long long>().prod() : img.points.cast<long long>().prod();
+  if (double(tuples) > kMaxGridCells)
+    throw std::runtime_error("the extent holds " + std::to_string(tuples) + " cells, more than the limit of " +
+                             std::to_string((long long)kMaxGridCells));
   for (const auto& [name, a] : img.arrays)
     if (a.components < 1 || (long long)a.values.size() != tuples * a.components)
       throw std::runtime_error("array '" + name + "' has " + std::to_string(a.values.size()) + " values, expected " +

@@ -47,6 +47,8 @@ void require_sequence(const YAML::Node& node, const std::string& file, int line,
 
 namespace {
 
+constexpr long long kMaxThreads = 65536;  // an int for OpenMP; far beyond any machine's cores
+
 // yaml-cpp's message for a tab in the indentation does not say so.
 std::string tab_hint(const std::string& text, int line) {
   std::istringstream lines(text);
@@ -74,7 +76,14 @@ YAML::Node load_yaml(const std::string& path) {
   }
 }
 
-SimulationSettings read_simulation(const YamlMap& root) {
+// Remembers where each given key of `m` is, as "BLOCK.KEY".
+void note_locs(const YamlMap& m, const std::string& block, const std::vector<std::string>& keys, Scene& scene) {
+  for (const std::string& k : keys)
+    if (m.has(k)) scene.key_locs[block + "." + k] = m.loc(k);
+  scene.key_locs[block] = {m.file(), m.line()};
+}
+
+SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   root.require("simulation", "simulation: {duration: \"1 s\", dt: auto}");
   const YamlMap m =
       root.map("simulation", "simulation", {"duration", "dt", "threads", "skin", "seed"});
@@ -82,9 +91,16 @@ SimulationSettings read_simulation(const YamlMap& root) {
   s.duration = check_positive(m, "duration", m.quantity("duration", Dimension::time));
   if (m.has("dt") && m.scalar("dt") != "auto")
     s.dt = check_positive(m, "dt", m.quantity("dt", Dimension::time));
-  s.threads = static_cast<int>(m.integer("threads", 0, 0));
+  const long long threads = m.integer("threads", 0, 0);
+  if (threads > kMaxThreads)
+    m.fail("threads", "at most " + std::to_string(kMaxThreads) + ", got " + m.scalar("threads"));
+  s.threads = static_cast<int>(threads);
   if (m.has("skin")) s.skin = check_positive(m, "skin", m.quantity("skin", Dimension::length));
   s.seed = m.unsigned64("seed", 0);
+  note_locs(m, "simulation", {"duration", "dt", "threads", "skin"}, scene);
+  if (s.dt && *s.dt > s.duration)
+    m.fail("dt", "the step " + m.scalar("dt") + " is longer than the duration " + m.scalar("duration") +
+                     " (the limit): the run would take no step");
   return s;
 }
 
@@ -103,7 +119,8 @@ std::vector<std::string> read_shape_files(const YamlMap& root, const std::string
   return files;
 }
 
-OutputSettings read_output(const YamlMap& root, const std::string& folder) {
+OutputSettings read_output(const YamlMap& root, Scene& scene) {
+  const std::string& folder = scene.folder;
   const YamlMap m = root.map("output", "output",
                              {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts", "probes"});
   OutputSettings o;
@@ -114,6 +131,7 @@ OutputSettings read_output(const YamlMap& root, const std::string& folder) {
                             {"checkpoint_every", &o.checkpoint_every}})
     if (m.has(key)) *field = check_positive(m, key, m.quantity(key, Dimension::time));
   o.contacts = m.boolean("contacts", true);
+  note_locs(m, "output", {"vtk_every", "csv_every", "checkpoint_every"}, scene);
   return o;
 }
 
@@ -131,7 +149,7 @@ Scene load_scene(const std::string& path) {
   scene.folder = parent.empty() ? "." : parent.string();
   const YamlMap root(doc, "scene", path, 1,
                      {"simulation", "shapes", "bodies", "drivers", "forces", "output"});
-  scene.simulation = read_simulation(root);
+  scene.simulation = read_simulation(root, scene);
   scene.shape_files = read_shape_files(root, scene.folder);
   if (root.has("bodies")) read_bodies(root.node("bodies"), root.line("bodies"), scene);
   if (!scene.bodies.empty() || !scene.generators.empty()) {
@@ -141,7 +159,7 @@ Scene load_scene(const std::string& path) {
   }
   if (root.has("drivers")) read_drivers(root.node("drivers"), root.line("drivers"), scene);
   if (root.has("forces")) read_forces(root.node("forces"), root.line("forces"), scene);
-  scene.output = read_output(root, scene.folder);
+  scene.output = read_output(root, scene);
   read_probes(root, scene);  // after drivers, forces and csv_every: it checks against them
   return scene;
 }

@@ -1,5 +1,6 @@
 // The `drivers:` list: walls, cylinders, balls, STL meshes and their motions.
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 #include "io/scene_parts.hpp"
@@ -120,6 +121,11 @@ DriverSettings read_driver(const YAML::Node& item, std::size_t index, const Scen
   const YamlMap m(body, kind_name, scene.path, line_of(item, line), entry.keys);
   DriverSettings d;
   d.name = m.text("name", kind_name + "_" + std::to_string(index + 1));
+  const bool safe = std::all_of(d.name.begin(), d.name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+  if (d.name.empty() || !safe)  // it names driver_NAME.csv, as probe names do
+    m.fail("name", "'" + d.name + "' must be letters, digits, '_' or '-' (it names driver_NAME.csv)");
   d.kind = entry.read(m, scene);
   if (MeshSettings* mesh = std::get_if<MeshSettings>(&d.kind)) {  // its file's errors name the key and the driver
     const SourceLoc at = m.loc("file");

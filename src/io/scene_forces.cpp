@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 
+#include "field/fluid_grid.hpp"  // kMaxGridCells
 #include "io/scene_parts.hpp"
 #include "polydem/error.hpp"
 
@@ -143,6 +144,11 @@ void read_grid(const YamlMap& f, ForceSettings::FluidField& fl) {
     if (!(fl.grid_max[a] > fl.grid_min[a]))
       g.fail("max", "the grid spacing must be positive: max must exceed min on every axis");
   }
+  const double total = double(fl.cells[0]) * double(fl.cells[1]) * double(fl.cells[2]);
+  if (total > kMaxGridCells)
+    g.fail("cells", std::to_string(fl.cells[0]) + " x " + std::to_string(fl.cells[1]) + " x " +
+                        std::to_string(fl.cells[2]) + " cells is more than the limit of " +
+                        std::to_string(std::int64_t(kMaxGridCells)) + " (about 100 bytes a cell)");
 }
 
 void read_velocity(const YamlMap& f, ForceSettings::FluidField& fl) {

@@ -1,6 +1,8 @@
 #include "output/csv.hpp"
 
 #include <cstdio>
+#include <cstdlib>
+#include <iterator>
 #include <fstream>
 #include <stdexcept>
 
@@ -24,14 +26,33 @@ std::optional<std::string> existing_header(const std::string& path) {
   return line;
 }
 
+// Rewrites `path` (atomically) without the rows whose time is later than `keep_until` and
+// without a last line cut short; leaves it alone when nothing is to go.
+void drop_rows_after(const std::string& path, double keep_until) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::size_t keep = text.find('\n');  // the header stays
+  if (keep == std::string::npos) return;
+  ++keep;
+  while (keep < text.size()) {
+    const std::size_t end = text.find('\n', keep);
+    if (end == std::string::npos) break;  // a partial last line
+    if (!(std::strtod(text.c_str() + keep, nullptr) <= keep_until)) break;  // rows are in time order
+    keep = end + 1;
+  }
+  if (keep < text.size()) replace_file(path, std::string_view(text).substr(0, keep));
+}
+
 }  // namespace
 
-CsvSeries::CsvSeries(std::string path, std::vector<std::string> columns, bool append) : columns_(std::move(columns)) {
+CsvSeries::CsvSeries(std::string path, std::vector<std::string> columns, bool append, double keep_until)
+    : columns_(std::move(columns)) {
   const std::string header = header_line(columns_);
   const std::optional<std::string> old = append ? existing_header(path) : std::nullopt;
   if (old && *old != header)
     throw RunError("cannot append to '" + path + "': its columns are '" + *old + "' but this run writes '" + header +
                    "' (remove the file or write to another output folder)");
+  if (old) drop_rows_after(path, keep_until);
   file_.emplace(std::move(path), append ? "ab" : "wb");
   if (!old) {
     file_->write(header + "\n");

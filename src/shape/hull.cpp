@@ -90,10 +90,18 @@ Shape degenerate_or_solid(const std::vector<Vec3>& points, const std::string& na
     s.vertices = {a};
     return s;
   }
+  // Points dropped as round-off must stay inside the rounding, or the body is not their hull.
+  auto check_dropped = [&](double off, const char* what) {
+    if (off > radius)
+      fail(name, std::string("points up to ") + std::to_string(off) + " m off the " + what + " through the farthest "
+                 "points (" + std::to_string(extent) + " m apart) would be flattened into it, beyond the radius " +
+                 std::to_string(radius) + " m: a stray point far from the others, or mixed units?");
+  };
   const Vec3 dir = (b - a) / extent;
   const Vec3 c = points[farthest_from_line(points, a, dir)];
   if ((c - a).cross(dir).norm() <= kFlatTolerance * extent) {
     if (radius == 0.0) fail(name, "degenerate hull: collinear points" + advice);
+    check_dropped((c - a).cross(dir).norm(), "line");
     s.vertices = {a, b};
     s.edges = {{0, 1}};
     return s;
@@ -103,6 +111,7 @@ Shape degenerate_or_solid(const std::vector<Vec3>& points, const std::string& na
   for (const Vec3& p : points) thickness = std::max(thickness, std::abs(normal.dot(p - a)));
   if (thickness > kFlatTolerance * extent) return solid_hull(points);
   if (radius == 0.0) fail(name, "degenerate hull: coplanar points" + advice);
+  check_dropped(thickness, "plane");
   return plate(points, normal);
 }
 

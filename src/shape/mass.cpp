@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "geometry/face_planes.hpp"
 #include "polydem/error.hpp"
@@ -230,6 +231,12 @@ void compute_mass_properties(Shape& s, int quadrature_cells) {
   for (Vec3& v : s.vertices) v -= origin;
   s.mass_error = 0.0;
   const Moments m = s.convex ? rounded_body(s) : union_moments(s, quadrature_cells, s.mass_error);
+  if (!std::isfinite(m.volume) || !m.first.allFinite() || !m.second.allFinite()) {
+    char sizes[96];
+    std::snprintf(sizes, sizeof(sizes), "radius %.3g m and vertices up to %.3g m", s.radius, max_vertex_norm(s));
+    throw InputError("shape '" + s.name + "': " + sizes + " from their centroid: its volume and inertia overflow "
+                     "a double (sizes are in metres)");
+  }
   if (!(m.volume > 0.0))
     throw InputError("shape '" + s.name + "': zero volume (give a radius > 0 or a solid polyhedron)");
   const Vec3 center = m.first / m.volume;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "polydem/error.hpp"
 
@@ -52,13 +53,18 @@ Vec3 vertex_centroid(const Shape& s) {
   return c / static_cast<double>(s.vertices.size());
 }
 
-// Largest distance of a vertex to the plane of face 0: zero for a plate.
+// Largest distance of a vertex to the plane of the first face with an area: zero for a plate
+// (and for faces that all lack an area).
 double thickness(const Shape& s) {
-  const Vec3 n = polygon_normal(s.vertices, s.faces[0]);
-  const Vec3& p = s.vertices[s.faces[0][0]];
-  double t = 0.0;
-  for (const Vec3& v : s.vertices) t = std::max(t, std::abs(n.dot(v - p)));
-  return t;
+  for (const auto& face : s.faces) {
+    const Vec3 n = polygon_normal(s.vertices, face);
+    if (!(n.norm() > 0.5)) continue;
+    const Vec3& p = s.vertices[face[0]];
+    double t = 0.0;
+    for (const Vec3& v : s.vertices) t = std::max(t, std::abs(n.dot(v - p)));
+    return t;
+  }
+  return 0.0;
 }
 
 double extent(const Shape& s) {
@@ -101,6 +107,22 @@ void check_sizes(const Shape& s) {
   for (size_t f = 0; f < s.faces.size(); ++f)
     if (!(polygon_normal(s.vertices, s.faces[f]).norm() > 0.5))  // Eigen leaves a zero vector zero
       fail(s, "face " + std::to_string(f) + " has zero area");
+}
+
+// Two vertices at one point leave a face or edge without direction, and a "solid" whose
+// faces all lie in one plane has no inside: its centre of mass would be arbitrary.
+void check_distinct_vertices(const Shape& s) {
+  std::vector<int> order(s.vertices.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  const auto less = [&](int a, int b) {
+    const Vec3 &u = s.vertices[a], &v = s.vertices[b];
+    return std::tie(u.x(), u.y(), u.z()) < std::tie(v.x(), v.y(), v.z());
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (size_t k = 1; k < order.size(); ++k)
+    if (s.vertices[order[k - 1]] == s.vertices[order[k]])
+      fail(s, "vertices " + std::to_string(std::min(order[k - 1], order[k])) + " and " +
+                  std::to_string(std::max(order[k - 1], order[k])) + " coincide (merge them, or hull the points)");
 }
 
 // Each edge once, in first-listed order (a and b, or b and a, are the same edge).
@@ -172,6 +194,7 @@ Vec3 polygon_normal(const std::vector<Vec3>& vertices, const std::vector<int>& f
 
 void prepare_topology(Shape& s) {
   check_indices(s);
+  check_distinct_vertices(s);
   if (s.faces.empty()) {
     prepare_faceless(s);
     check_sizes(s);
@@ -189,7 +212,11 @@ void prepare_topology(Shape& s) {
   // One polygon alone (as some Rockable libraries give plates): its back side is added.
   if (s.faces.size() == 1) s.faces.emplace_back(s.faces[0].rbegin(), s.faces[0].rend());
   // A plate (two faces in one plane) keeps its two opposite orders as given.
-  const bool plate = s.faces.size() == 2 && thickness(s) <= 1e-9 * extent(s);
+  const bool flat = thickness(s) <= 1e-9 * extent(s);
+  const bool plate = s.faces.size() == 2 && flat;
+  if (flat && !plate)
+    fail(s, "its " + std::to_string(s.faces.size()) + " faces lie in one plane: a solid needs thickness (give a "
+                "plate as one polygon)");
   if (!plate) orient_solid_faces(s);
   const auto by_edge = faces_by_edge(s);
   if (s.edges.empty()) {

@@ -20,7 +20,8 @@ struct OutputProgress {              // where the writers were, so a resumed run
 };
 
 void write_checkpoint(const std::string& path, const Simulation& sim, const OutputProgress& progress);
-// Restores a checkpoint written for the same scene; throws InputError when it does not fit.
-void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress);
+// Restores a checkpoint written for the same scene; throws InputError when it does not fit or
+// is damaged. `force`: a checkpoint of another scene (fingerprint) resumes with a warning.
+void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress, bool force = false);
 
 }  // namespace polydem

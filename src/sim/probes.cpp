@@ -115,7 +115,8 @@ Probes::Probes(const Simulation& sim, const std::string& dir, bool resume) : sim
         f.last_time = last->first;
         f.last_mass = last->second;
       }
-    f.csv = std::make_unique<CsvSeries>(path, std::vector<std::string>{"time", "mass", "count", "rate"}, resume);
+    f.csv = std::make_unique<CsvSeries>(path, std::vector<std::string>{"time", "mass", "count", "rate"}, resume,
+                                         sim.time() + 0.5 * sim.dt());
     flows_.push_back(std::move(f));
   }
   for (const OutputSettings::ReposeProbe& spec : out.repose_probes) {
@@ -125,7 +126,8 @@ Probes::Probes(const Simulation& sim, const std::string& dir, bool resume) : sim
       throw InputError(input_message(spec.loc.file, spec.loc.line, "column",
                                      "the scene has no bodies to take a column width from: give `column: \"1 cm\"`"));
     r.csv = std::make_unique<CsvSeries>(dir + "/" + spec.name + ".csv",
-                                        std::vector<std::string>{"time", "angle", "points"}, resume);
+                                        std::vector<std::string>{"time", "angle", "points"}, resume,
+                                        sim.time() + 0.5 * sim.dt());
     reposes_.push_back(std::move(r));
   }
 }

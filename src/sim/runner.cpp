@@ -16,13 +16,14 @@
 #include "polydem/error.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim/probes.hpp"
+#include "sim/run_limits.hpp"
 #include "sim/time_step.hpp"
 
 namespace polydem {
 
 namespace {
 
-std::atomic<bool> g_interrupted{false};
+std::atomic<bool> g_interrupted{false};  // SIGINT or SIGTERM: finish the step, write a checkpoint
 void on_interrupt(int) { g_interrupted = true; }
 
 using Clock = std::chrono::steady_clock;
@@ -35,7 +36,13 @@ class Schedule {
   }
   bool due(double t, double dt) {
     if (every_ <= 0 || t < next_ - 0.5 * dt) return false;
-    while (next_ <= t + 0.5 * dt) next_ += every_;
+    while (next_ <= t + 0.5 * dt) {
+      const double next = next_ + every_;
+      if (next == next_)  // check_run_limits keeps intervals above this; a guard, not a hang
+        throw RunError("an output interval of " + std::to_string(every_) + " s is below the round-off of t = " +
+                       std::to_string(t) + " s");
+      next_ = next;
+    }
     return true;
   }
   bool enabled() const { return every_ > 0; }
@@ -94,6 +101,9 @@ double scene_extent(const Bodies& b) {
   return std::max(0.5 * (hi - lo).norm(), 1e-3);
 }
 
+// s: rows of a resumed run's CSV files later than this were written after its checkpoint.
+double resumed_at(const Simulation& sim) { return sim.time() + 0.5 * sim.dt(); }
+
 // fluid_NNNNNN.vti: the fluid grid's cell fields and, with void_fraction, the void fraction.
 void write_fluid_vti(const std::string& path, const Simulation& sim) {
   const FluidGrid& g = *sim.external()->grid();
@@ -117,7 +127,7 @@ class FluidSeries {
       if (std::find(groups_.begin(), groups_.end(), g) == groups_.end()) groups_.push_back(g);
     std::sort(groups_.begin(), groups_.end());
     for (int g : groups_) columns.push_back("vz_group_" + std::to_string(g));
-    csv_ = std::make_unique<CsvSeries>(path, columns, append);
+    csv_ = std::make_unique<CsvSeries>(path, columns, append, resumed_at(sim));
   }
   void row() {
     const ExternalForces& ext = *sim_.external();
@@ -150,12 +160,13 @@ class OutputWriter {
         std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
                                  "driver_work", "contacts", "external_work", "elastic_normal", "elastic_tangential",
                                  "elastic_rolling", "dissipated_dashpot", "dissipated_sliding", "dissipated_rolling",
-                                 "patch_work"}, !o.resume.empty());
+                                 "patch_work"}, !o.resume.empty(), resumed_at(sim));
     if (sim.external()) fluid_ = std::make_unique<FluidSeries>(sim, dir_ + "/fluid.csv", !o.resume.empty());
     probes_ = std::make_unique<Probes>(sim, dir_, !o.resume.empty());  // output.probes: flow.csv, angle.csv
     for (std::size_t j = 0; j < sim.drivers.size(); ++j)  // force and torque the particles exert on it
       driver_series_.push_back(std::make_unique<CsvSeries>(dir_ + "/driver_" + sim.drivers.name(std::uint32_t(j)) + ".csv",
-          std::vector<std::string>{"time", "fx", "fy", "fz", "tx", "ty", "tz", "x", "y", "z"}, !o.resume.empty()));
+          std::vector<std::string>{"time", "fx", "fy", "fz", "tx", "ty", "tz", "x", "y", "z"}, !o.resume.empty(),
+          resumed_at(sim)));
   }
 
   void frame() {
@@ -222,32 +233,85 @@ std::string format_duration(double s) {
   return buf;
 }
 
-[[noreturn]] void fail_non_finite(const Simulation& sim, long body, const Bodies& last_good,
-                                  std::int64_t good_step, const std::string& dir) {
+// m/s^2: gravity beyond this (1000 g) is named as the likely cause of a blow-up.
+constexpr double kStrongGravity = 1e4;
+
+bool driver_moves(const MotionSettings& m) {
+  return m.rotates || m.velocity != Vec3::Zero() || m.force || m.pressure;
+}
+
+// What most likely made the state non-finite, among what the scene sets: gravity, a moving
+// driver whose reaction is no longer finite, the time step, the checkpoint (first check after
+// a resume).
+std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
+  char buf[320];
+  const TimeStepEstimate& e = sim.time_step();
+  if (sim.scene().forces.gravity && sim.scene().forces.gravity->stableNorm() > kStrongGravity) {
+    std::snprintf(buf, sizeof(buf), "gravity of %.3g m/s^2", sim.scene().forces.gravity->stableNorm());
+    return buf;
+  }
+  for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
+    const DriverState& d = sim.drivers[j];
+    if (driver_moves(sim.drivers.motion(std::uint32_t(j))) && !(d.force.allFinite() && d.torque.allFinite()))
+      return "the motion of driver '" + sim.drivers.name(std::uint32_t(j)) + "' (its reaction is no longer finite)";
+  }
+  if (sim.dt() > kUnsafeFraction * e.critical) {
+    std::snprintf(buf, sizeof(buf), "the time step dt = %.3g s is %.2g x the critical step %.3g s of the stiffest "
+                  "contact (reduce dt or kn, or use dt: auto)", sim.dt(), sim.dt() / e.critical, e.critical);
+    return buf;
+  }
+  if (first_check_after_resume) return "the state of the checkpoint resumed from (damaged, or of another scene)";
+  std::snprintf(buf, sizeof(buf), "none of gravity, the drivers or the time step (%.2g x critical) stands out: check "
+                "the forces (drag, fluid), the initial velocities and the contact law", sim.dt() / e.critical);
+  return buf;
+}
+
+[[noreturn]] void fail_non_finite(const Simulation& sim, const std::string& what, const Bodies& last_good,
+                                  std::int64_t good_step, const std::string& dir, bool first_check_after_resume) {
   const std::string good = dir + "/bodies_last_good.vtu";
   write_bodies_vtu(good, last_good, sim.shapes());
-  const TimeStepEstimate& e = sim.time_step();
-  char msg[512];
-  std::snprintf(msg, sizeof(msg),
-                "body %ld (shape '%s') became non-finite by step %lld (t = %.6g s). Likely cause: the time step "
-                "dt = %.3g s is %.2g x the critical step %.3g s of the stiffest contact (reduce dt or kn, or use "
-                "dt: auto). Last good state (step %lld) written to %s",
-                body, sim.shapes()[sim.bodies.shape[body]].name.c_str(), static_cast<long long>(sim.step_index()),
-                sim.time(), sim.dt(), sim.dt() / e.critical, e.critical, static_cast<long long>(good_step),
-                good.c_str());
-  throw RunError(msg);
+  char msg[256];
+  std::snprintf(msg, sizeof(msg), " became non-finite by step %lld (t = %.6g s). Likely cause: ",
+                static_cast<long long>(sim.step_index()), sim.time());
+  throw RunError(what + msg + likely_cause(sim, first_check_after_resume) + ". Last good state (step " +
+                 std::to_string(good_step) + ") written to " + good);
+}
+
+std::string body_name(const Simulation& sim, long body) {
+  return "body " + std::to_string(body) + " (shape '" + sim.shapes()[sim.bodies.shape[body]].name + "')";
+}
+
+// The energy ledger's driver and external work become non-finite while bodies may not.
+std::string non_finite_ledger(const EnergyLedger& l) {
+  if (!std::isfinite(l.driver_work)) return "the drivers' work";
+  if (!std::isfinite(l.external_work)) return "the work of drag and fluid forces";
+  if (!std::isfinite(l.dissipated)) return "the dissipated energy";
+  return "";
+}
+
+// Refuses an --out that is a file, before the filesystem's own message.
+void make_output_folder(const std::string& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw InputError("output folder '" + dir + "' is a file (give a folder to --out or output.dir)");
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError("cannot create the output folder '" + dir + "': " + ec.message());
 }
 
 }  // namespace
 
 RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
-  std::filesystem::create_directories(o.out_dir);
+  for (const std::string& w : check_run_limits(sim, o.until)) std::fprintf(stderr, "%s\n", w.c_str());
+  make_output_folder(o.out_dir);
   OutputProgress progress;
-  if (!o.resume.empty()) read_checkpoint(o.resume, sim, progress);
+  if (!o.resume.empty()) read_checkpoint(o.resume, sim, progress, o.force);
   const OutputSettings& out = sim.scene().output;
   const double dt = sim.dt();
   const double end_time = o.until ? *o.until : sim.scene().simulation.duration;
-  const std::int64_t last_step = std::llround(end_time / dt);
+  const std::int64_t last_step = std::llround(end_time / dt);  // check_run_limits: <= kMaxSteps
+  if (sim.step_index() > last_step)
+    throw InputError(o.resume + ": the checkpoint is at t = " + std::to_string(sim.time()) +
+                     " s, past the end of this run (" + std::to_string(end_time) + " s); give --until beyond it");
   Schedule vtk(out.vtk_every, sim.time()), csv(out.csv_every, sim.time()), ckpt(out.checkpoint_every, sim.time());
   ckpt.due(sim.time(), dt);  // nothing to save at the start (or we resume from this very checkpoint)
   constexpr std::int64_t kCheckSteps = 100;  // finiteness check and last-good copy period
@@ -261,8 +325,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   }
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
+  auto previous_term = std::signal(SIGTERM, on_interrupt);  // batch schedulers send it before killing
   Bodies last_good = sim.bodies;
   std::int64_t good_step = sim.step_index();
+  bool first_check = !o.resume.empty();  // a blow-up before the first check after a resume blames the checkpoint
   const auto start = Clock::now();
   auto last_print = start;
   const std::int64_t first_step = sim.step_index();
@@ -281,13 +347,16 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       sim.step();
     } catch (const RunError&) {  // the neighbour search refuses non-finite positions
       const long bad = first_non_finite_body(sim.bodies);
-      if (bad >= 0) fail_non_finite(sim, bad, last_good, good_step, o.out_dir);
+      if (bad >= 0) fail_non_finite(sim, body_name(sim, bad), last_good, good_step, o.out_dir, first_check);
       throw;
     }
     const std::int64_t s = sim.step_index();
     if (s % kCheckSteps == 0 || s == last_step) {
       const long bad = first_non_finite_body(sim.bodies);
-      if (bad >= 0) fail_non_finite(sim, bad, last_good, good_step, o.out_dir);
+      if (bad >= 0) fail_non_finite(sim, body_name(sim, bad), last_good, good_step, o.out_dir, first_check);
+      const std::string ledger = non_finite_ledger(sim.ledger);
+      if (!ledger.empty()) fail_non_finite(sim, ledger, last_good, good_step, o.out_dir, first_check);
+      first_check = false;
       last_good = sim.bodies;
       good_step = s;
       check_overlaps();
@@ -315,6 +384,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     }
   }
   std::signal(SIGINT, previous);
+  std::signal(SIGTERM, previous_term);
+  summary.interrupted = g_interrupted;
   if (!g_interrupted) writer.checkpoint(sim);
   summary.steps = sim.step_index() - first_step;
   summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

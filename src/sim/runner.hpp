@@ -12,6 +12,7 @@ struct RunOptions {
   std::string out_dir;               // the output folder (created)
   std::optional<double> until;       // s, stop at this time instead of simulation.duration
   std::string resume;                // checkpoint file to continue from
+  bool force = false;                // resume a checkpoint written for another scene (with a warning)
   bool progress = true;              // print a progress line to stderr
 };
 
@@ -19,9 +20,11 @@ struct RunSummary {
   std::int64_t steps = 0;
   double wall_seconds = 0.0;
   std::size_t rebuilds = 0;
+  bool interrupted = false;          // stopped by SIGINT or SIGTERM (a checkpoint written)
 };
 
-// Throws RunError when the state turns non-finite (after writing the last good state).
+// Throws InputError for limits the run cannot honour (check_run_limits) or a checkpoint that
+// does not fit; RunError when the state turns non-finite (after writing the last good state).
 RunSummary run_simulation(Simulation& sim, const RunOptions& options);
 
 }  // namespace polydem

@@ -34,6 +34,13 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
   return s;
 }
 
+// The line of a given key ("simulation.dt"), else of its block ("simulation"), else 0.
+int scene_line(const Scene& scene, const std::string& key) {
+  auto it = scene.key_locs.find(key);
+  if (it == scene.key_locs.end()) it = scene.key_locs.find(key.substr(0, key.find('.')));
+  return it == scene.key_locs.end() ? 0 : it->second.line;
+}
+
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs)
@@ -46,11 +53,13 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_));
   if (!contacts && !scene.simulation.dt)
-    throw InputError(input_message(scene.path, 0, "dt", "'auto' needs a contact law to estimate the critical step; give a number"));
+    throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
+                                   "'auto' needs a contact law to estimate the critical step; give a number"));
   dt_ = dt_estimate_.chosen;
   drivers.set_contact_stiffness(dt_estimate_.kn_driver, dt_estimate_.critical_normal);  // a servo's default gain
   if (!std::isfinite(dt_) || dt_ <= 0.0)
-    throw InputError(input_message(scene.path, 0, "dt", "cannot choose a time step automatically for this scene; give simulation.dt"));
+    throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
+                                   "cannot choose a time step automatically for this scene; give simulation.dt"));
   for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);

@@ -51,7 +51,8 @@ pid=$!
 rows() { if [ -f "$tmp/int/energy.csv" ]; then wc -l < "$tmp/int/energy.csv"; else echo 0; fi; }
 until [ "$(rows)" -gt 3 ] || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
 kill -INT "$pid" 2> /dev/null || fail "the run ended before it could be interrupted"
-wait "$pid" || fail "interrupted run exited non-zero"
+set +e; wait "$pid"; code=$?; set -e
+[ "$code" -eq 3 ] || fail "interrupted run exited $code, expected 3"
 grep -q "interrupted at t = " "$tmp/int.log" || { cat "$tmp/int.log"; fail "no interruption message (did the run end first?)"; }
 resume=$(grep -o -- "--resume [^ ]*" "$tmp/int.log" | cut -d' ' -f2)
 "$polydem" run "$tmp/long.yaml" --out "$tmp/int" --resume "$resume" 2> /dev/null

@@ -107,3 +107,16 @@ TEST_CASE("bad hull input is an InputError naming the fix", "[hull]") {
   CHECK_THROWS_WITH(build_hull_shape({Vec3(0, 0, 0)}, -0.1, "dot"), Catch::Contains("must be >= 0"));
   CHECK_THROWS_AS(build_hull_shape({}, 0.1, "none"), InputError);
 }
+
+TEST_CASE("hull: points far from the line or plane they would be flattened to are refused", "[hull]") {
+  // A unit cube's corners with one moved to 1e9 m: within 1e-9 of the extent of a line, they
+  // used to become a 2-vertex segment, silently.
+  std::vector<Vec3> points;
+  for (int k = 0; k < 7; ++k) points.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  points.emplace_back(1e9, 1e9, 1e9);
+  CHECK_THROWS_WITH(build_hull_shape(points, 0.001, "far"),
+                    Catch::Contains("off the line") && Catch::Contains("beyond the radius"));
+  // Within the radius, the segment holds them all: accepted.
+  const Shape rod = build_hull_shape({Vec3(0, 0, 0), Vec3(1e9, 0, 0), Vec3(5e8, 0.5, 0)}, 1.0, "rod");
+  CHECK(rod.vertices.size() == 2);
+}

@@ -194,13 +194,36 @@ TEST_CASE("bad shapes for the mass computation are InputErrors", "[mass]") {
   s.radius = 0.1;
   s.vertices = {Vec3(0, 0, 0), Vec3(0, 0, 0)};
   s.edges = {{0, 1}};
-  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("zero length"));
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("vertices 0 and 1 coincide"));
   s.edges.clear();
   s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0)};
   s.faces = {{0, 1, 2}, {1, 0, 3}, {2, 1, 3}, {0, 2, 3}};  // face 0: collinear corners
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("faces lie in one plane"));
+  // A solid (apex 4 above the base 0 2 3) whose face 0 has collinear corners.
+  s.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(1, 0.5, 1)};
+  s.faces = {{0, 1, 2}, {0, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
   CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("zero area"));
   s.faces.clear();
   s.radius = -1;
   s.vertices = {Vec3(0, 0, 0)};
   CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("must be >= 0"));
+}
+
+TEST_CASE("an octahedron flattened to a plate, with two vertices at one point, is refused", "[mass]") {
+  // The octahedron's 8 faces with its two apices both moved to the origin: it used to load with
+  // a centre of mass off the origin for a body symmetric about it.
+  Shape s;
+  s.name = "flat";
+  s.radius = 0.0005;
+  s.vertices = {Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 0)};
+  s.faces = {{0, 1, 2}, {1, 4, 2}, {4, 3, 2}, {3, 0, 2}, {1, 0, 5}, {4, 1, 5}, {3, 4, 5}, {0, 3, 5}};
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("vertices 2 and 5 coincide"));
+}
+
+TEST_CASE("a shape whose volume overflows a double is refused as such, not as zero volume", "[mass]") {
+  Shape s;
+  s.name = "huge";
+  s.radius = 1e300;
+  s.vertices = {Vec3::Zero()};
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("radius 1e+300 m") && Catch::Contains("overflow"));
 }

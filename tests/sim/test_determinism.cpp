@@ -106,16 +106,17 @@ TEST_CASE("a resumed checkpoint continues bit for bit", "[checkpoint]") {
 TEST_CASE("a format-04 checkpoint (no dissipation shares) still resumes bit for bit", "[checkpoint]") {
   const auto dir = std::filesystem::temp_directory_path() / "polydem_test_checkpoint04";
   std::filesystem::create_directories(dir);
-  const std::string path05 = (dir / "state05.bin").string(), path04 = (dir / "state04.bin").string();
+  const std::string path05 = (dir / "state06.bin").string(), path04 = (dir / "state04.bin").string();
   Pile p;
   Simulation first(p.scene, p.lib, p.specs);
   for (int s = 0; s < 1500; ++s) first.step();
   write_checkpoint(path05, first, OutputProgress{});
-  // Format 04: magic "PDCKPT04" and the ledger without its three shares (the last 24 of its 72 bytes).
+  // Format 04: magic "PDCKPT04", the payload of format 06 (between its 40-byte header and 8-byte
+  // checksum) and the ledger without its three shares (the last 24 of its 72 bytes).
   std::ifstream in(path05, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  REQUIRE(bytes.compare(0, 8, "PDCKPT05") == 0);
-  bytes[7] = '4';
+  REQUIRE(bytes.compare(0, 8, "PDCKPT06") == 0);
+  bytes = "PDCKPT04" + bytes.substr(40, bytes.size() - 48);
   const std::size_t shares = 8 + 8 + 8 + sizeof(EnergyLedger) - 3 * sizeof(double);  // magic, step, dt, ledger prefix
   bytes.erase(shares, 3 * sizeof(double));
   std::ofstream(path04, std::ios::binary) << bytes;

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Resuming after a run was cut short: the CSV files (energy, drivers, probes) and scene.pvd end
+# with the same rows as an uninterrupted run (rows written after the checkpoint are dropped,
+# a half-written last line too); SIGTERM writes a checkpoint and exits 3; another scene's
+# checkpoint is refused unless --force; a checkpoint past the end of the run is refused.
+# usage: resume.sh PATH/TO/polydem
+set -euo pipefail
+polydem=$1
+here=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+sed -e "s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/drop.yaml"
+cat >> "$tmp/drop.yaml" << 'YAML'
+  probes:
+    - flow: {name: through, point: [0, 0, 0.05], normal: [0, 0, -1]}
+YAML
+same_outputs() {  # same_outputs DIR_A DIR_B: every CSV and the .pvd identical
+  for f in energy.csv driver_floor.csv driver_left.csv driver_right.csv through.csv scene.pvd; do
+    cmp "$1/$f" "$2/$f" || fail "$f differs between $1 and $2"
+  done
+}
+
+"$polydem" run "$tmp/drop.yaml" --out "$tmp/full" 2> /dev/null || fail "uninterrupted run"
+[ "$(wc -l < "$tmp/full/energy.csv")" -eq 42 ] || fail "energy.csv of the full run: $(wc -l < "$tmp/full/energy.csv") lines, expected 42"
+
+# A run killed (SIGKILL) after its rows to 40 ms but with its last checkpoint at 20 ms, the
+# last row of energy.csv half written: resumed, it ends as the uninterrupted run.
+cp -r "$tmp/full" "$tmp/killed"
+rm "$tmp/killed/checkpoint_010476.bin"
+head -c -20 "$tmp/full/energy.csv" > "$tmp/killed/energy.csv"
+"$polydem" run "$tmp/drop.yaml" --out "$tmp/killed" --resume "$tmp/killed/checkpoint_005238.bin" 2> /dev/null || fail "resume"
+same_outputs "$tmp/full" "$tmp/killed"
+cmp "$tmp/full/checkpoint_010476.bin" "$tmp/killed/checkpoint_010476.bin" || fail "final state differs"
+
+# SIGTERM: a checkpoint, exit code 3; resumed, the same rows and state as the full run.
+sed "s/duration: \"40 ms\"/duration: \"400 ms\"/" "$tmp/drop.yaml" > "$tmp/long.yaml"
+"$polydem" run "$tmp/long.yaml" --out "$tmp/long" 2> /dev/null || fail "long run"
+"$polydem" run "$tmp/long.yaml" --out "$tmp/term" --threads 1 2> "$tmp/term.log" &
+pid=$!
+rows() { if [ -f "$tmp/term/energy.csv" ]; then wc -l < "$tmp/term/energy.csv"; else echo 0; fi; }
+until [ "$(rows)" -gt 3 ] || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
+kill -TERM "$pid" 2> /dev/null || fail "the run ended before it could be stopped"
+set +e; wait "$pid"; code=$?; set -e
+[ "$code" -eq 3 ] || { cat "$tmp/term.log"; fail "SIGTERM: exit code $code, expected 3"; }
+resume=$(grep -o -- "--resume [^ ]*" "$tmp/term.log" | cut -d' ' -f2)
+[ -f "$resume" ] || { cat "$tmp/term.log"; fail "no checkpoint after SIGTERM"; }
+"$polydem" run "$tmp/long.yaml" --out "$tmp/term" --resume "$resume" 2> /dev/null || fail "resume after SIGTERM"
+same_outputs "$tmp/long" "$tmp/term"
+
+# Another scene (gravity upwards, same bodies and step): refused, or resumed with --force.
+sed "s/gravity: \[0, 0, -9.807\]/gravity: [0, 0, 9.807]/" "$tmp/drop.yaml" > "$tmp/up.yaml"
+set +e; "$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/up.log"; code=$?; set -e
+[ "$code" -eq 1 ] || fail "another scene's checkpoint: exit $code, expected 1"
+grep -q "checkpoint_005238.bin: checkpoint written for another scene.*--force" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no refusal message"; }
+"$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_005238.bin" --force 2> "$tmp/up.log" || fail "--force"
+grep -q "warning: .*another scene.*resuming anyway (--force)" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no --force warning"; }
+# A checkpoint past the end of the run.
+set +e; "$polydem" run "$tmp/drop.yaml" --out "$tmp/past" --until 0.01 --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/past.log"; code=$?; set -e
+[ "$code" -eq 1 ] && grep -q "past the end of this run" "$tmp/past.log" || { cat "$tmp/past.log"; fail "checkpoint past the end: exit $code"; }
+echo "resume: 1 passed, 0 failed"
