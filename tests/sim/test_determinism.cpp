@@ -16,26 +16,12 @@
 #include "geometry/shadowing.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim_fixtures.hpp"
+#include "state_hash.hpp"
 
 using namespace polydem;
 using namespace polydem::test;
 
 namespace {
-
-std::uint64_t fnv(std::uint64_t h, const void* data, std::size_t n) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t k = 0; k < n; ++k) h = (h ^ p[k]) * 1099511628211ull;
-  return h;
-}
-
-std::uint64_t state_hash(const Bodies& b) {
-  std::uint64_t h = 1469598103934665603ull;
-  h = fnv(h, b.position.data(), b.size() * sizeof(Vec3));
-  h = fnv(h, b.orientation.data(), b.size() * sizeof(Quat));
-  h = fnv(h, b.velocity.data(), b.size() * sizeof(Vec3));
-  h = fnv(h, b.angular_momentum.data(), b.size() * sizeof(Vec3));
-  return h;
-}
 
 // 150 cubes and spheres packed close with random velocities and fast spins in a walled box.
 struct Pile {
