@@ -17,6 +17,7 @@
 #include "sim/checkpoint.hpp"
 #include "sim_fixtures.hpp"
 #include "state_hash.hpp"
+#include "../unique_temp_dir.hpp"
 
 using namespace polydem;
 using namespace polydem::test;
@@ -71,9 +72,8 @@ TEST_CASE("final state is bitwise identical for 1 and 2 threads and run to run",
 }
 
 TEST_CASE("a resumed checkpoint continues bit for bit", "[checkpoint]") {
-  const auto dir = std::filesystem::temp_directory_path() / "polydem_test_checkpoint";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / "state.bin").string();
+  const UniqueTempDir dir("checkpoint");
+  const std::string path = (dir.path / "state.bin").string();
   Pile p;
   Simulation first(p.scene, p.lib, p.specs);
   for (int s = 0; s < 1500; ++s) first.step();
@@ -87,13 +87,11 @@ TEST_CASE("a resumed checkpoint continues bit for bit", "[checkpoint]") {
   CHECK(resumed.step_index() == 1500);
   for (int s = 0; s < 1500; ++s) resumed.step();
   CHECK(state_hash(first.bodies) == state_hash(resumed.bodies));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a format-04 checkpoint (no dissipation shares) still resumes bit for bit", "[checkpoint]") {
-  const auto dir = std::filesystem::temp_directory_path() / "polydem_test_checkpoint04";
-  std::filesystem::create_directories(dir);
-  const std::string path05 = (dir / "state05.bin").string(), path04 = (dir / "state04.bin").string();
+  const UniqueTempDir dir("checkpoint04");
+  const std::string path05 = (dir.path / "state05.bin").string(), path04 = (dir.path / "state04.bin").string();
   Pile p;
   Simulation first(p.scene, p.lib, p.specs);
   for (int s = 0; s < 1500; ++s) first.step();
@@ -117,7 +115,6 @@ TEST_CASE("a format-04 checkpoint (no dissipation shares) still resumes bit for 
   CHECK(state_hash(first.bodies) == state_hash(resumed.bodies));
   CHECK(resumed.energy().dissipated == first.energy().dissipated);
   CHECK(resumed.ledger.sliding < first.ledger.sliding);  // only what slid after the resume
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("the contact set each step equals the brute-force set", "[verlet]") {
