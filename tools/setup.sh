@@ -4,6 +4,9 @@
 set -euo pipefail
 packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2 zlib1g-dev
           python3 python3-vtk9 python3-numpy python3-matplotlib)
+# `setup.sh clang`: also clang, its sanitizer and libFuzzer runtimes and LLVM's OpenMP, for the
+# sanitizer and fuzz builds (tools/sanitize.sh, tools/fuzz.sh, tools/tsan.sh).
+[ "${1:-}" = clang ] && packages+=(clang libclang-rt-14-dev libomp-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -1,6 +1,7 @@
 #include "field/vti_reader.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,9 @@
 namespace polydem {
 
 namespace {
+
+constexpr double kMaxIndex = 1e9;   // WholeExtent bounds: point counts stay within int
+constexpr double kMaxPoints = 1e9;  // a grid beyond holds 8 GB per scalar array
 
 // One XML start tag: its attributes and, unless it is self-closing, where its text begins.
 struct Tag {
@@ -136,9 +140,14 @@ VtiImage parse(const std::string& xml) {
     throw std::runtime_error("a rotated image (Direction " + direction + ") is not supported: the grid must be axis-aligned");
   for (int a = 0; a < 3; ++a) {
     if (!(img.spacing[a] > 0.0)) throw std::runtime_error("Spacing must be positive on every axis, got '" + image.attribute("Spacing") + "'");
-    img.points[a] = int(extent[2 * a + 1] - extent[2 * a]) + 1;
+    const double low = extent[2 * a], high = extent[2 * a + 1];
+    if (low != std::floor(low) || high != std::floor(high) || std::abs(low) > kMaxIndex || std::abs(high) > kMaxIndex)
+      throw std::runtime_error("WholeExtent must hold whole numbers within +-1e9, got '" + image.attribute("WholeExtent") + "'");
+    img.points[a] = int(high - low) + 1;
     if (img.points[a] < 1) throw std::runtime_error("WholeExtent is empty: '" + image.attribute("WholeExtent") + "'");
   }
+  if (img.points.cast<double>().prod() > kMaxPoints)
+    throw std::runtime_error("WholeExtent '" + image.attribute("WholeExtent") + "' holds more than 1e9 points");
   const Tag piece = find_tag(xml, "Piece");
   if (piece.found() && numbers<6>(piece.attribute("Extent"), "Piece Extent") != extent)
     throw std::runtime_error("holds several pieces; save it as one piece (the whole extent)");

@@ -227,7 +227,7 @@ void read_force(const std::string& name, const YamlMap& m, const std::string& fo
     ff.cx = check_positive(m, "cx", m.quantity("cx", Dimension::dimensionless, ff.cx), true);
     f.fluid_friction = ff;
     if (m.has("field")) {  // the fluid given here, values taken in the particle's cell
-      f.fluid.emplace();
+      f.fluid = ForceSettings::FluidField{};  // not emplace(): clang sees no default constructor (CWG 1397)
       f.fluid->file = ff.field;
       f.fluid->loc = f.fluid->file_loc = m.loc("field");
       f.fluid->file_key = "field";

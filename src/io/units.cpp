@@ -221,7 +221,9 @@ double parse_quantity(const std::string& text, Dimension dim, const SourceLoc& l
   if (units.bare) return number;
   if (!compatible(units.value.dims, info(dim).dims))
     fail("\"" + text + "\" is " + describe(units.value.dims) + ", expected " + expected);
-  return number * units.value.factor;
+  const double si = number * units.value.factor;
+  if (!std::isfinite(si)) fail("\"" + text + "\" is out of range in SI units (above 1.8e308)");
+  return si;
 }
 
 }  // namespace polydem

@@ -98,6 +98,16 @@ TriangleMesh read_ascii_stl(const std::string& bytes, const std::string& path) {
   return welder.mesh;
 }
 
+// What the binary header says, for a file read as neither: a truncated binary STL is told apart.
+std::string binary_size_note(const std::string& bytes) {
+  if (bytes.size() < 84) return "; " + std::to_string(bytes.size()) + " bytes, shorter than a binary STL header";
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, 4);
+  return "; as binary it announces " + std::to_string(count) + " triangles, " +
+         std::to_string(84 + 50 * std::uint64_t(count)) + " bytes, but has " + std::to_string(bytes.size()) +
+         " (truncated?)";
+}
+
 }  // namespace
 
 std::vector<Vec3> read_point_list(const std::string& path) {
@@ -142,10 +152,11 @@ TriangleMesh read_stl(const std::string& path) {
   }
   if (bytes.compare(0, 5, "solid") != 0)
     throw InputError(input_message(path, 0, "",
-                                   "not an STL file (neither 'solid ...' text nor a "
-                                   "binary of 84 + 50 n bytes)"));
+                                   "not an STL file (neither 'solid ...' text nor a binary of 84 + 50 n bytes" +
+                                       binary_size_note(bytes) + ")"));
   TriangleMesh mesh = read_ascii_stl(bytes, path);
-  if (mesh.triangles.empty()) throw InputError(input_message(path, 0, "", "no facet in the STL file"));
+  if (mesh.triangles.empty())
+    throw InputError(input_message(path, 0, "", "no facet in the STL file (read as text" + binary_size_note(bytes) + ")"));
   return mesh;
 }
 

@@ -103,6 +103,18 @@ TEST_CASE("Bad grid files: one line naming the scene key and the file", "[field]
   const TempFile spacing("s.vti", image(kCells, "0.5 0 2"));
   CHECK(error_of([&] { make_fluid_grid(settings(spacing.path), {}); })
             .find(where + spacing.path + ": Spacing must be positive") == 0);
+  // Extents beyond int (found by tools/fuzz.sh: a float-to-int overflow), fractional, or too many points.
+  for (const std::string extent : {"0 2 0 1 0 4e33", "0 2.5 0 1 0 1", "-2e9 0 0 1 0 1"}) {
+    std::string text = image(kCells);
+    text.replace(text.find("0 2 0 1 0 1"), 11, extent);
+    const TempFile bad("e.vti", text);
+    CHECK(error_of([&] { make_fluid_grid(settings(bad.path), {}); })
+              .find(where + bad.path + ": WholeExtent must hold whole numbers within +-1e9") == 0);
+  }
+  std::string huge = image(kCells);
+  huge.replace(huge.find("0 2 0 1 0 1"), 11, "0 2000 0 2000 0 2000");
+  const TempFile big("h.vti", huge);
+  CHECK(error_of([&] { make_fluid_grid(settings(big.path), {}); }).find("holds more than 1e9 points") != std::string::npos);
   const TempFile plain("t.vti", "U p rho nu\n1 2 3 4\n");
   CHECK(error_of([&] { make_fluid_grid(settings(plain.path), {}); }).find("not a VTK XML file") != std::string::npos);
   const TempFile ok("m.vti", image(kCells));

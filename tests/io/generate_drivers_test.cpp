@@ -159,7 +159,7 @@ TEST_CASE("random and lattice: drivers out of the way change no body", "[generat
   }
 }
 
-TEST_CASE("random: bodies stay clear of an STL mesh; a region it fills says how many fit",
+TEST_CASE("random: bodies stay clear of an STL mesh, and a region it fills says how many fit",
           "[generate]") {
   const ShapeLibrary lib = library();
   const test::TempDir dir;

@@ -254,3 +254,21 @@ TEST_CASE("contact law: model hertz takes E and poisson, with units and ranges",
                         "      config_driver: {model: hertz, E: 2e11, poisson: 0.3, mu: 0.5, en: 0.5}"),
               6, "config_driver", "give config model: hertz too");
 }
+
+TEST_CASE("YAML's .nan and .inf, and numbers beyond double (1e400, 1e308 km), are refused at their line",
+          "[scene][errors]") {
+  for (const std::string v : {".nan", ".NaN", ".inf", "-.inf", "+.inf", "\"nan N/m\"", "\"inf N/m\""}) {
+    INFO(v);
+    check_error(with_line(5, "      config: {kn: " + v + ", kt: 1.0e5, mu: 0.5, en: 0.5}"), 5, "kn",
+                "expected a number");
+    check_error(with_line(8, "    position: [0, " + v + ", 0]"), 8, "position", "expected a number");
+  }
+  for (const std::string v : {"1e400", "-1e400", "1e-400", "\"1e400 N/m\""}) {
+    INFO(v);
+    check_error(with_line(5, "      config: {kn: " + v + ", kt: 1.0e5, mu: 0.5, en: 0.5}"), 5, "kn", "out of range");
+  }
+  // Finite as written, infinite in SI units: the unit's factor overflows.
+  check_error(with_line(8, "    position: [0, \"1e308 km\", 0]"), 8, "position", "out of range in SI units");
+  check_error(with_line(1, "simulation: {duration: \"1e307 min\", dt: \"1 us\", seed: 3}"), 1, "duration",
+              "out of range in SI units");
+}

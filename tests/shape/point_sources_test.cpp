@@ -65,6 +65,20 @@ TEST_CASE("STL errors name the file and line", "[points]") {
   CHECK_THROWS_WITH(read_stl("/nonexistent.stl"), Catch::Contains("cannot open"));
 }
 
+TEST_CASE("a truncated binary STL is refused with its file and the byte count it lacks", "[points]") {
+  for (const std::string header : {"binary", "solid exported by CAD"}) {
+    const std::string whole = binary_stl(header);  // 84 + 2 x 50 = 184 bytes
+    for (std::size_t keep : {std::size_t(183), std::size_t(134), std::size_t(90), std::size_t(84)}) {
+      INFO(header << ", " << keep << " bytes");
+      const std::string path = test::write_temp("cut.stl", whole.substr(0, keep));
+      CHECK_THROWS_WITH(read_stl(path), Catch::Contains(path) && Catch::Contains("announces 2 triangles, 184 bytes") &&
+                                            Catch::Contains("has " + std::to_string(keep)));
+    }
+    CHECK_THROWS_WITH(read_stl(test::write_temp("cut.stl", whole.substr(0, 40))),
+                      Catch::Contains("40 bytes, shorter than a binary STL header"));
+  }
+}
+
 TEST_CASE("point list and OBJ", "[points]") {
   const auto p = read_points(test::write_temp("pts.txt", "# a comment\n0 0 0\n\n1 2 3  # trailing\n"));
   REQUIRE(p.size() == 2);

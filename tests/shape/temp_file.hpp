@@ -1,15 +1,16 @@
 #pragma once
-// Test files written to a fresh temporary folder.
+// Test files written to a temporary folder of this process (removed at exit).
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../unique_temp_dir.hpp"
+
 namespace polydem::test {
 
 inline std::string temp_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "polydem_tests_shape";
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
+  static const UniqueTempDir dir("shape");
+  return (dir.path / name).string();
 }
 
 inline std::string write_temp(const std::string& name, const std::string& text) {

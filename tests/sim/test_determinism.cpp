@@ -16,26 +16,13 @@
 #include "geometry/shadowing.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim_fixtures.hpp"
+#include "state_hash.hpp"
+#include "../unique_temp_dir.hpp"
 
 using namespace polydem;
 using namespace polydem::test;
 
 namespace {
-
-std::uint64_t fnv(std::uint64_t h, const void* data, std::size_t n) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t k = 0; k < n; ++k) h = (h ^ p[k]) * 1099511628211ull;
-  return h;
-}
-
-std::uint64_t state_hash(const Bodies& b) {
-  std::uint64_t h = 1469598103934665603ull;
-  h = fnv(h, b.position.data(), b.size() * sizeof(Vec3));
-  h = fnv(h, b.orientation.data(), b.size() * sizeof(Quat));
-  h = fnv(h, b.velocity.data(), b.size() * sizeof(Vec3));
-  h = fnv(h, b.angular_momentum.data(), b.size() * sizeof(Vec3));
-  return h;
-}
 
 // 150 cubes and spheres packed close with random velocities and fast spins in a walled box.
 struct Pile {
@@ -84,9 +71,8 @@ TEST_CASE("final state is bitwise identical for 1 and 2 threads and run to run",
 }
 
 TEST_CASE("a resumed checkpoint continues bit for bit", "[checkpoint]") {
-  const auto dir = std::filesystem::temp_directory_path() / "polydem_test_checkpoint";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / "state.bin").string();
+  const UniqueTempDir dir("checkpoint");
+  const std::string path = (dir.path / "state.bin").string();
   Pile p;
   Simulation first(p.scene, p.lib, p.specs);
   for (int s = 0; s < 1500; ++s) first.step();
@@ -100,13 +86,11 @@ TEST_CASE("a resumed checkpoint continues bit for bit", "[checkpoint]") {
   CHECK(resumed.step_index() == 1500);
   for (int s = 0; s < 1500; ++s) resumed.step();
   CHECK(state_hash(first.bodies) == state_hash(resumed.bodies));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a format-04 checkpoint (no dissipation shares) still resumes bit for bit", "[checkpoint]") {
-  const auto dir = std::filesystem::temp_directory_path() / "polydem_test_checkpoint04";
-  std::filesystem::create_directories(dir);
-  const std::string path05 = (dir / "state06.bin").string(), path04 = (dir / "state04.bin").string();
+  const UniqueTempDir dir("checkpoint04");
+  const std::string path05 = (dir.path / "state06.bin").string(), path04 = (dir.path / "state04.bin").string();
   Pile p;
   Simulation first(p.scene, p.lib, p.specs);
   for (int s = 0; s < 1500; ++s) first.step();
@@ -131,7 +115,6 @@ TEST_CASE("a format-04 checkpoint (no dissipation shares) still resumes bit for 
   CHECK(state_hash(first.bodies) == state_hash(resumed.bodies));
   CHECK(resumed.energy().dissipated == first.energy().dissipated);
   CHECK(resumed.ledger.sliding < first.ledger.sliding);  // only what slid after the resume
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("the contact set each step equals the brute-force set", "[verlet]") {

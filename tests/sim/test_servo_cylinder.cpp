@@ -8,6 +8,7 @@
 
 #include "sim/checkpoint.hpp"
 #include "sim_fixtures.hpp"
+#include "../unique_temp_dir.hpp"
 
 using namespace polydem;
 using namespace polydem::test;
@@ -66,9 +67,8 @@ TEST_CASE("a servo with neither a contact law nor a gain stops with a clear erro
 }
 
 TEST_CASE("a servo wall resumed from a checkpoint continues bit for bit", "[driver][servo][checkpoint]") {
-  const auto dir = std::filesystem::temp_directory_path() / "polydem_test_servo_checkpoint";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / "state.bin").string();
+  const UniqueTempDir dir("servo_checkpoint");
+  const std::string path = (dir.path / "state.bin").string();
   const Scene scene = lid_scene(0.5, std::nullopt);
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
   Simulation first(scene, lib, {body("sphere", {0, 0, kRadius})});
@@ -83,7 +83,6 @@ TEST_CASE("a servo wall resumed from a checkpoint continues bit for bit", "[driv
   CHECK(std::memcmp(first.bodies.position[0].data(), resumed.bodies.position[0].data(), sizeof(Vec3)) == 0);
   CHECK(std::memcmp(first.drivers[1].point.data(), resumed.drivers[1].point.data(), sizeof(Vec3)) == 0);
   CHECK(std::memcmp(first.drivers[1].velocity.data(), resumed.drivers[1].velocity.data(), sizeof(Vec3)) == 0);
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a sphere rests on the outside of a cylinder with overlap m g / kn", "[driver][cylinder]") {
