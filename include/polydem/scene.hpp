@@ -80,6 +80,7 @@ struct DriverSpec {
   std::string name;
   Vec3 point = Vec3::Zero();      // m, wall: a point on the plane
   Vec3 normal = Vec3::UnitZ();    // wall: unit normal towards the particles
+  std::optional<double> size;     // m, wall: side of the square drawn about `point`; empty: cut to the view frame
   Vec3 center = Vec3::Zero();     // m, cylinder: middle of its axis; ball: centre
   Vec3 axis = Vec3::UnitZ();      // cylinder axis, unit
   double radius = 0.0;            // m, cylinder / ball
@@ -142,6 +143,7 @@ struct OutputSettings {
   std::optional<double> csv_every;         // s; empty: no CSV output
   std::optional<double> checkpoint_every;  // s; empty: only the final checkpoint
   bool contacts = true;           // write the contact network
+  bool rounded = false;           // draw bodies with their rounding (the swept surface), not their cores
   struct FlowProbe {              // probes: flow; mass and count of bodies past a plane
     std::string name = "flow";    // written to NAME.csv
     Vec3 point = Vec3::Zero();    // m, a point on the plane

@@ -22,6 +22,7 @@
 namespace polydem {
 
 struct DriverMesh;
+struct ViewFrame;
 class MeshFeatures;
 
 struct Driver {
@@ -79,9 +80,9 @@ class Drivers {
   }
   Vec3 angular_velocity(std::uint32_t j) const { return list_[j].omega; }
 
-  // Surface meshes of the active drivers for the VTK output; infinite walls and cylinders
-  // are cut at `extent` (m) around their reference point.
-  std::vector<DriverMesh> meshes(double extent) const;
+  // Surface meshes of the active drivers for the VTK output; walls and infinite cylinders
+  // are cut to the frame (output/frame.hpp).
+  std::vector<DriverMesh> meshes(const ViewFrame& frame) const;
 
  private:
   Vec3 servo_velocity(const Driver& d, std::uint32_t j, double dt) const;

@@ -3,6 +3,7 @@
 
 #include "driver/drivers.hpp"
 #include "driver/mesh.hpp"
+#include "output/frame.hpp"
 #include "output/vtk.hpp"
 
 namespace polydem {
@@ -11,21 +12,22 @@ namespace {
 
 constexpr int kSegments = 48;  // around a cylinder or a ball: smooth enough to look round
 
-DriverMesh wall_mesh(const Driver& d, double extent) {
-  const Vec3 u = d.normal.unitOrthogonal() * extent;
-  const Vec3 w = d.normal.cross(u);
-  return {d.spec.name, {d.point - u - w, d.point + u - w, d.point + u + w, d.point - u + w}, {{0, 1, 2, 3}}};
+DriverMesh wall_mesh(const Driver& d, const ViewFrame& frame) {
+  std::vector<Vec3> corners = framed_wall(d.point, d.normal, d.spec.size, frame);
+  std::vector<int> polygon(corners.size());
+  for (std::size_t k = 0; k < corners.size(); ++k) polygon[k] = int(k);
+  return {d.spec.name, std::move(corners), {polygon}};
 }
 
-DriverMesh cylinder_mesh(const Driver& d, double extent) {
-  const double half = d.spec.length ? 0.5 * *d.spec.length : extent;
+DriverMesh cylinder_mesh(const Driver& d, const ViewFrame& frame) {
+  const auto [from, to] = framed_axis(d.center, d.axis, d.spec.length, frame);  // m along the axis
   const Vec3 u = d.axis.unitOrthogonal(), w = d.axis.cross(u);
   DriverMesh m{d.spec.name, {}, {}};
   for (int k = 0; k < kSegments; ++k) {
     const double angle = 2.0 * kPi * k / kSegments;
     const Vec3 r = d.spec.radius * (std::cos(angle) * u + std::sin(angle) * w);
-    m.points.push_back(d.center + r - half * d.axis);
-    m.points.push_back(d.center + r + half * d.axis);
+    m.points.push_back(d.center + r + from * d.axis);
+    m.points.push_back(d.center + r + to * d.axis);
   }
   for (int k = 0; k < kSegments; ++k) {
     const int next = (k + 1) % kSegments;
@@ -63,13 +65,13 @@ DriverMesh stl_mesh(const Driver& d) {
 
 }  // namespace
 
-std::vector<DriverMesh> Drivers::meshes(double extent) const {
+std::vector<DriverMesh> Drivers::meshes(const ViewFrame& frame) const {
   std::vector<DriverMesh> out;
   for (const Driver& d : list_) {
     if (!d.active) continue;
     switch (d.spec.kind) {
-      case DriverSpec::Kind::wall: out.push_back(wall_mesh(d, extent)); break;
-      case DriverSpec::Kind::cylinder: out.push_back(cylinder_mesh(d, extent)); break;
+      case DriverSpec::Kind::wall: out.push_back(wall_mesh(d, frame)); break;
+      case DriverSpec::Kind::cylinder: out.push_back(cylinder_mesh(d, frame)); break;
       case DriverSpec::Kind::ball: out.push_back(ball_mesh(d)); break;
       case DriverSpec::Kind::stl: out.push_back(stl_mesh(d)); break;
     }

@@ -105,7 +105,7 @@ std::vector<std::string> read_shape_files(const YamlMap& root, const std::string
 
 OutputSettings read_output(const YamlMap& root, const std::string& folder) {
   const YamlMap m = root.map("output", "output",
-                             {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts", "probes"});
+                             {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts", "rounded", "probes"});
   OutputSettings o;
   const fs::path dir(m.text("dir", "out"));
   o.dir = (dir.is_absolute() ? dir : (fs::path(folder) / dir).lexically_normal()).string();
@@ -114,6 +114,7 @@ OutputSettings read_output(const YamlMap& root, const std::string& folder) {
                             {"checkpoint_every", &o.checkpoint_every}})
     if (m.has(key)) *field = check_positive(m, key, m.quantity(key, Dimension::time));
   o.contacts = m.boolean("contacts", true);
+  o.rounded = m.boolean("rounded", false);
   return o;
 }
 

@@ -64,6 +64,7 @@ void read_wall(const YamlMap& m, DriverSpec& d) {
   d.point = m.vec3("point", Dimension::length);
   m.require("normal", "normal: [0, 0, 1]");
   d.normal = m.direction("normal", Vec3::UnitZ());
+  if (m.has("size")) d.size = check_positive(m, "size", m.quantity("size", Dimension::length));
 }
 
 void read_cylinder(const YamlMap& m, DriverSpec& d) {
@@ -91,7 +92,7 @@ void read_stl(const YamlMap& m, DriverSpec& d, const std::string& folder) {
 std::vector<std::string> keys_of(DriverSpec::Kind kind) {
   switch (kind) {
     case DriverSpec::Kind::wall:
-      return {"name", "point", "normal", "motion"};
+      return {"name", "point", "normal", "size", "motion"};
     case DriverSpec::Kind::cylinder:
       return {"name", "center", "axis", "radius", "length", "inside", "motion"};
     case DriverSpec::Kind::ball:

@@ -59,11 +59,13 @@ UnitMesh swept_sphere(const Shape& s) {
   return m;
 }
 
-// Per shape, the polygons to draw in the principal frame at scale 1.
-std::vector<UnitMesh> shape_meshes(const std::vector<Shape>& shapes) {
+// Per shape, the polygons to draw in the principal frame at scale 1: the core's faces, or the
+// rounded surface.
+std::vector<UnitMesh> shape_meshes(const std::vector<Shape>& shapes, bool rounded) {
   std::vector<UnitMesh> out;
   out.reserve(shapes.size());
-  for (const Shape& s : shapes) out.push_back(s.faces.empty() ? swept_sphere(s) : UnitMesh{s.vertices, s.faces});
+  for (const Shape& s : shapes)
+    out.push_back(s.faces.empty() || rounded ? swept_sphere(s) : UnitMesh{s.vertices, s.faces});
   return out;
 }
 
@@ -143,8 +145,9 @@ struct BodyArrays {
 
 }  // namespace
 
-void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes) {
-  const std::vector<UnitMesh> meshes = shape_meshes(shapes);
+void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes, bool rounded,
+                      const std::optional<Vec3>& gravity) {
+  const std::vector<UnitMesh> meshes = shape_meshes(shapes, rounded);
   BodyArrays arrays;
   arrays.reserve(bodies, meshes);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -152,7 +155,9 @@ void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::
     arrays.add(bodies, b, meshes[s], shapes[s].radius);
   }
   AppendedData data;
-  const std::string xml = arrays.piece_xml(data);
+  std::string xml;
+  if (gravity) xml = "<FieldData>\n" + data.field_array("gravity", {*gravity}) + "</FieldData>\n";
+  xml += arrays.piece_xml(data);
   data.write_file(path, "UnstructuredGrid", xml);
 }
 
