@@ -3,7 +3,9 @@
 # only what is missing. Uses sudo only when not root.
 set -euo pipefail
 packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2 zlib1g-dev
-          python3 python3-vtk9 python3-numpy python3-matplotlib)
+          python3 python3-vtk9 python3-numpy python3-matplotlib
+          xvfb xauth ffmpeg)  # polydem render: an X server for VTK's GL without a display; videos
+# Not python3-paraview: Debian 12 makes it conflict with python3-vtk9, so render uses VTK itself.
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

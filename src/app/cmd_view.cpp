@@ -73,7 +73,7 @@ int run(const std::vector<std::string>& argv) {
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::execvp(c_argv[0], c_argv.data());
-    std::fprintf(stderr, "error: cannot run %s\n", c_argv[0]);
+    std::fprintf(stderr, "error: cannot run %s (is it installed? tools/setup.sh installs it)\n", c_argv[0]);
     ::_exit(127);
   }
   int status = 0;
@@ -125,7 +125,9 @@ int cmd_render(const std::vector<std::string>& args) {
   std::vector<std::string> argv{python(), find_script("render.py"), dir, out};
   argv.insert(argv.end(), options.begin(), options.end());
   const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) argv.insert(argv.begin(), {"xvfb-run", "-a"});  // VTK's GL needs an X server
+  if (!display || !*display)  // VTK's GL needs an X server; from a number of our own, so that
+    argv.insert(argv.begin(),  // two renders starting at once do not both take :99
+                {"xvfb-run", "-a", "-n", std::to_string(100 + ::getpid() % 5000)});
   return run(argv);
 }
 

@@ -101,7 +101,7 @@ def colour_array(bodies, name):
     cd = bodies.GetCellData()
     if name == "velocity":
         v = vtk_to_numpy(cd.GetArray("velocity"))
-        values, title = np.linalg.norm(v, axis=1), "|velocity| (m/s)"
+        values, title = np.linalg.norm(v, axis=1), "speed (m/s)"
     else:
         array = cd.GetArray(name)
         if array is None:
@@ -114,13 +114,16 @@ def colour_array(bodies, name):
     return values, title
 
 
-def lookup_table(lo, hi, categorical):
+def lookup_table(values, categorical):
     table = vtkLookupTable()
+    lo, hi = values.min(), values.max()
     table.SetTableRange(lo, hi if hi > lo else lo + 1)
-    if categorical:  # groups: distinct saturated hues
-        n = int(hi - lo) + 1 if hi >= lo else 1
-        table.SetNumberOfTableValues(max(n, 1))
-        for k in range(max(n, 1)):
+    if categorical:  # groups: one saturated hue each, named in the bar
+        groups = np.unique(values)
+        table.IndexedLookupOn()
+        table.SetNumberOfTableValues(len(groups))
+        for k, v in enumerate(groups):
+            table.SetAnnotation(float(v), f"{int(v)}")
             table.SetTableValue(k, *hue_rgb((0.6 + 0.38 * k) % 1.0), 1.0)
     else:  # blue (slow) to red (fast)
         table.SetHueRange(0.667, 0.0)
@@ -171,7 +174,7 @@ def render_frame(time, bodies_path, drivers_path, args, png):
     mapper = vtkDataSetMapper()
     mapper.SetInputData(bodies)
     mapper.SetScalarModeToUseCellData()
-    mapper.SetLookupTable(lookup_table(values.min(), values.max(), categorical))
+    mapper.SetLookupTable(lookup_table(values, categorical))
     mapper.SetScalarRange(values.min(), values.max() if values.max() > values.min() else values.min() + 1)
     actor = vtkActor()
     actor.SetMapper(mapper)
@@ -192,14 +195,18 @@ def render_frame(time, bodies_path, drivers_path, args, png):
     bar = vtkScalarBarActor()
     bar.SetLookupTable(mapper.GetLookupTable())
     bar.SetTitle(title)
-    bar.SetNumberOfLabels(4 if not categorical else min(int(values.max() - values.min()) + 1, 8))
-    bar.SetPosition(0.87, 0.1)
-    bar.SetWidth(0.11)
+    bar.SetNumberOfLabels(4)
+    bar.SetPosition(0.85, 0.1)
+    bar.SetWidth(0.13)
     bar.SetHeight(0.8)
-    for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+    bar.UnconstrainedFontSizeOn()
+    for text, size in ((bar.GetTitleTextProperty(), 14), (bar.GetLabelTextProperty(), 12),
+                       (bar.GetAnnotationTextProperty(), 12)):
         text.SetColor(0.1, 0.1, 0.1)
+        text.SetFontSize(size)
         text.ShadowOff()
         text.ItalicOff()
+        text.BoldOff()
     renderer.AddViewProp(bar)
 
     label = vtkTextActor()
