@@ -225,3 +225,18 @@ TEST_CASE("generator blocks: kind, mix fractions, region, scale", "[scene][error
   CHECK(s.generators[0].scale_min == 1.0);
   CHECK(s.generators[0].loc.line == 9);
 }
+
+TEST_CASE("a wall's drawing size and the rounded output are read with units; a bad size names its key",
+          "[scene][errors]") {
+  test::TempDir dir;
+  dir.write("lib.shp", "stub\n");
+  const Scene scene = load_scene(dir.write("scene.yaml", edited({{10, "  - wall: {point: [0, 0, 0], normal: [0, 0, 1], "
+                                                                        "size: \"20 cm\"}"},
+                                                                    {11, "output: {rounded: true}"}})));
+  REQUIRE(scene.drivers.size() == 1);
+  CHECK(scene.drivers[0].size == Approx(0.2).epsilon(1e-15));
+  CHECK(scene.output.rounded);
+  CHECK_FALSE(load_scene(dir.write("plain.yaml", with_line(11, ""))).output.rounded);
+  check_error(with_line(10, "  - wall: {point: [0, 0, 0], normal: [0, 0, 1], size: -1}"), 10, "size", "must be > 0");
+  check_error(with_line(11, "output: {rounde: true}"), 11, "rounde", "did you mean 'rounded'?");
+}
