@@ -105,7 +105,7 @@ def repose_plot(name, c):
     ax.set_xlabel("time (s)")
     ax.set_ylabel("angle of repose (deg)")
     ax.legend(fontsize=7)
-    return fig, f"Repose angle {name}"
+    return fig, "Angle of repose" if name == "angle" else f"Angle of repose: {name}"
 
 
 def fluid_plot(name, c):
