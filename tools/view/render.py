@@ -196,11 +196,11 @@ def render_frame(time, bodies_path, drivers_path, args, png):
     bar.SetLookupTable(mapper.GetLookupTable())
     bar.SetTitle(title)
     bar.SetNumberOfLabels(4)
-    bar.SetPosition(0.85, 0.1)
+    bar.SetPosition(0.83, 0.1)
     bar.SetWidth(0.13)
     bar.SetHeight(0.8)
     bar.UnconstrainedFontSizeOn()
-    for text, size in ((bar.GetTitleTextProperty(), 14), (bar.GetLabelTextProperty(), 12),
+    for text, size in ((bar.GetTitleTextProperty(), 13), (bar.GetLabelTextProperty(), 12),
                        (bar.GetAnnotationTextProperty(), 12)):
         text.SetColor(0.1, 0.1, 0.1)
         text.SetFontSize(size)
@@ -243,6 +243,7 @@ def render_frame(time, bodies_path, drivers_path, args, png):
     grab.Update()
     writer = vtkPNGWriter()
     writer.SetFileName(png)
+    writer.SetCompressionLevel(9)  # smaller files, same pixels
     writer.SetInputConnection(grab.GetOutputPort())
     writer.Write()
     window.Finalize()
