@@ -196,6 +196,7 @@ def render_frame(time, bodies_path, drivers_path, args, png):
     bar.SetLookupTable(mapper.GetLookupTable())
     bar.SetTitle(title)
     bar.SetNumberOfLabels(4)
+    bar.SetLabelFormat("%.2g")
     bar.SetPosition(0.83, 0.1)
     bar.SetWidth(0.13)
     bar.SetHeight(0.8)
