@@ -14,7 +14,7 @@ for name in "${!plots[@]}"; do
   [ -d "$out" ] || { echo "skip $name: no $out"; continue; }
   mkdir -p "samples/$name/pictures"
   # shellcheck disable=SC2086  # `when` holds options
-  "$polydem" render "$out" ${when[$name]} --size 480x360 -o "samples/$name/pictures/$name.png"
+  "$polydem" render "$out" ${when[$name]} --size 400x300 -o "samples/$name/pictures/$name.png"
   "$polydem" plot "$out" -o "$out/plots" > /dev/null
   for p in ${plots[$name]}; do cp "$out/plots/$p.png" "samples/$name/pictures/$p.png"; done
 done
