@@ -3,7 +3,9 @@
 # only what is missing. Uses sudo only when not root.
 set -euo pipefail
 packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2 zlib1g-dev
-          python3 python3-vtk9 python3-numpy python3-matplotlib)
+          python3 python3-vtk9 python3-numpy python3-matplotlib
+          xvfb xauth ffmpeg)  # polydem render: an X server for VTK's GL without a display; videos
+# Not python3-paraview: Debian 12 makes it conflict with python3-vtk9, so render uses VTK itself.
 # `setup.sh clang`: also clang, its sanitizer and libFuzzer runtimes and LLVM's OpenMP, for the
 # sanitizer and fuzz builds (tools/sanitize.sh, tools/fuzz.sh, tools/tsan.sh).
 [ "${1:-}" = clang ] && packages+=(clang libclang-rt-14-dev libomp-dev)

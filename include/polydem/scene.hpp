@@ -80,6 +80,7 @@ struct OutputSettings {
   std::optional<double> csv_every;         // s; empty: no CSV output
   std::optional<double> checkpoint_every;  // s; empty: only the final checkpoint
   bool contacts = true;           // write the contact network
+  bool rounded = false;           // draw bodies with their rounding (the swept surface), not their cores
   struct FlowProbe {              // probes: flow; mass and count of bodies past a plane
     std::string name = "flow";    // written to NAME.csv
     Vec3 point = Vec3::Zero();    // m, a point on the plane

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Steady discharge rates of the silo runs and the Beverloo fit W = C rho_b sqrt(g) (D - k d)^(5/2).
 
-Usage: beverloo_fit.py [--polydem build/polydem] out/D40 out/D50 out/D60 ...
+Usage: beverloo_fit.py [--polydem build/polydem] [--plot FIT.png] out/D40 out/D50 out/D60 ...
 Each folder is the output of one orifice size, named D<mm>. From its probes:
 - W: least-squares slope of flow.csv's discharged mass over time, from OPEN + SKIP until the
   discharged mass reaches FRACTION of the fill (all.csv) or the run ends (steady regime:
@@ -10,7 +10,7 @@ Each folder is the output of one orifice size, named D<mm>. From its probes:
   (below_6cm.csv - below_2cm.csv) over the slab's volume pi R^2 0.04 m.
 d is the mean equivalent-volume diameter of the fill, (6 V / pi)^(1/3) averaged over the mix
 (volumes from `polydem shape info --json`). The fit is linear in W^(2/5) = a (D - k d) with
-a = (C rho_b sqrt(g))^(2/5).
+a = (C rho_b sqrt(g))^(2/5). --plot draws the rates and the fitted law against D.
 """
 import argparse
 import csv
@@ -77,6 +77,7 @@ def main():
     root = os.path.normpath(os.path.join(here, "..", ".."))
     parser = argparse.ArgumentParser()
     parser.add_argument("--polydem", default=os.path.join(root, "build", "polydem"))
+    parser.add_argument("--plot", help="PNG of the rates and the fit against the orifice size")
     parser.add_argument("folders", nargs="+")
     args = parser.parse_args()
     d = equivalent_diameter(args.polydem, root)
@@ -97,6 +98,26 @@ def main():
     for size, w in zip(sizes, rates):
         model = c * rho_b * math.sqrt(G) * max(size - k * d, 0.0) ** 2.5
         print(f"  D = {size * 1000:.0f} mm: W = {w:.4f} kg/s, fit {model:.4f} kg/s")
+    if args.plot:
+        plot_fit(args.plot, sizes, rates, c, k, d, rho_b)
+
+
+def plot_fit(path, sizes, rates, c, k, d, rho_b):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    title = "Beverloo fit of the discharge rates"
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    span = np.linspace(min(sizes) * 0.9, max(sizes) * 1.1, 100)
+    ax.plot(np.array(sizes) * 1000, rates, "o", label="polydem (steady rate)")
+    ax.plot(span * 1000, c * rho_b * math.sqrt(G) * np.maximum(span - k * d, 0.0) ** 2.5, "k--",
+            label=f"W = C rho_b sqrt(g) (D - k d)^2.5, C = {c:.2f}, k = {k:.2f}")
+    ax.set_xlabel("orifice diameter D (mm)")
+    ax.set_ylabel("discharge rate W (kg/s)")
+    ax.legend(fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100, metadata={"Title": title})
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@
 
 #include "app/cmd_run.hpp"
 #include "app/cmd_shape.hpp"
+#include "app/cmd_view.hpp"
 #include "polydem/error.hpp"
 
 namespace {
@@ -19,6 +20,8 @@ const char* kUsage =
     "  polydem check SCENE.yaml           validate; print counts, masses, critical and chosen dt\n"
     "  polydem shape info FILE [--json]   per shape: counts, radius, volume, centre, inertia\n"
     "  polydem shape hull INPUT --radius R --name NAME -o OUT.shp\n"
+    "  polydem plot OUT_DIR [-o DIR]      one PNG per CSV of a run (energy budget, forces, probes)\n"
+    "  polydem render OUT_DIR [--time T|--every K] [--color velocity|group|...] -o PNG|MP4|GIF\n"
     "\n"
     "`polydem COMMAND --help` describes each command.\n";
 
@@ -35,7 +38,10 @@ int main(int argc, char** argv) {
     if (command == "run") return polydem::cmd_run(args);
     if (command == "check") return polydem::cmd_check(args);
     if (command == "shape") return polydem::cmd_shape(args);
-    std::fprintf(stderr, "polydem: unknown command '%s' (commands: run, check, shape)\n", command.c_str());
+    if (command == "plot") return polydem::cmd_plot(args);
+    if (command == "render") return polydem::cmd_render(args);
+    std::fprintf(stderr, "polydem: unknown command '%s' (commands: run, check, shape, plot, render)\n",
+                 command.c_str());
     return 1;
   } catch (const polydem::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

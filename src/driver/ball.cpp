@@ -14,7 +14,7 @@ constexpr int kSegments = 48;  // around the ball: smooth enough to look round
 
 Ball::Ball(const BallSettings& s, Placement& at) : shape_(sphere_shape("", s.radius)) { at.center = s.center; }
 
-DriverMesh Ball::drawing(const Placement& at, const std::string& name, double) const {
+DriverMesh Ball::drawing(const Placement& at, const std::string& name, const ViewFrame&) const {
   const int rings = kSegments / 2;
   const Vec3 u = Vec3::UnitX(), w = Vec3::UnitY(), z = Vec3::UnitZ();
   DriverMesh m{name, {}, {}};

@@ -6,6 +6,7 @@
 
 #include "driver/motion.hpp"
 #include "geometry/features.hpp"
+#include "output/frame.hpp"
 
 namespace polydem {
 
@@ -23,6 +24,7 @@ class Ball {
   Ball(const BallSettings& s, Placement& at);
 
   double rounding() const { return shape_.radius; }  // m
+  void bounds(const Placement& at, Box3& box) const { box.add(at.center, shape_.radius); }
   double r_star(double r_body) const { return r_body * shape_.radius / (r_body + shape_.radius); }  // m, Hertz radius
   Vec3 reference(const Placement& at) const { return at.center; }  // m
   Vec3 servo_direction(const Placement&, const MotionSettings& m) const { return given_servo_direction(m); }
@@ -37,7 +39,7 @@ class Ball {
     return feature_contact(a, pose(at), f, max_gap, out);
   }
   // A UV sphere of 48 x 24 quads.
-  DriverMesh drawing(const Placement& at, const std::string& name, double extent) const;
+  DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
 
  private:
   // The ball as a posed body: its one vertex at its current centre.

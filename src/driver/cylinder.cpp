@@ -12,15 +12,15 @@ constexpr int kSegments = 48;  // around the mantle: smooth enough to look round
 
 }  // namespace
 
-DriverMesh CylinderShape::drawing(const Placement& at, const std::string& name, double extent) const {
-  const double half = length ? 0.5 * *length : extent;
+DriverMesh CylinderShape::drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const {
+  const auto [from, to] = framed_axis(at.center, at.axis, length, frame);  // m along the axis
   const Vec3 u = at.axis.unitOrthogonal(), w = at.axis.cross(u);
   DriverMesh m{name, {}, {}};
   for (int k = 0; k < kSegments; ++k) {
     const double angle = 2.0 * kPi * k / kSegments;
     const Vec3 r = radius * (std::cos(angle) * u + std::sin(angle) * w);
-    m.points.push_back(at.center + r - half * at.axis);
-    m.points.push_back(at.center + r + half * at.axis);
+    m.points.push_back(at.center + r + from * at.axis);
+    m.points.push_back(at.center + r + to * at.axis);
   }
   for (int k = 0; k < kSegments; ++k) {
     const int next = (k + 1) % kSegments;
@@ -29,8 +29,8 @@ DriverMesh CylinderShape::drawing(const Placement& at, const std::string& name, 
   return m;
 }
 
-DriverMesh Cylinder::drawing(const Placement& at, const std::string& name, double extent) const {
-  return shape.drawing(at, name, extent);
+DriverMesh Cylinder::drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const {
+  return shape.drawing(at, name, frame);
 }
 
 Cylinder::Cylinder(const CylinderSettings& s, Placement& at) : shape{s.radius, s.length} {

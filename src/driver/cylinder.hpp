@@ -9,6 +9,7 @@
 
 #include "driver/motion.hpp"
 #include "geometry/features.hpp"
+#include "output/frame.hpp"
 
 namespace polydem {
 
@@ -35,9 +36,14 @@ struct CylinderShape {
     const double axial = rel.dot(at.axis);
     return {axial, rel - axial * at.axis};
   }
+  // Its ends' discs (nothing for an infinite one: it is cut to the frame instead).
+  void bounds(const Placement& at, Box3& box) const {
+    if (length)
+      for (double end : {-0.5, 0.5}) box.add(at.center + end * *length * at.axis, radius);
+  }
   bool within_length(double axial, double margin) const { return !length || std::abs(axial) < 0.5 * *length + margin; }
-  // Its mantle as 48 quads; an infinite one cut at `extent` (m) each side of its centre.
-  DriverMesh drawing(const Placement& at, const std::string& name, double extent) const;
+  // Its mantle as 48 quads; an infinite one cut to the view frame.
+  DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
 };
 
 class Cylinder {
@@ -45,6 +51,7 @@ class Cylinder {
   Cylinder(const CylinderSettings& s, Placement& at);
 
   double rounding() const { return 0.0; }  // m
+  void bounds(const Placement& at, Box3& box) const { shape.bounds(at, box); }
   // m, Hertz radius: the geometric mean of the principal radii, r_body along the axis and
   // 1/(1/r_body - 1/R) across it (the concave mantle).
   double r_star(double r_body) const { return std::sqrt(r_body / (1.0 / r_body - 1.0 / shape.radius)); }
@@ -54,7 +61,7 @@ class Cylinder {
   bool near(const Placement& at, const Vec3& center, double reach) const;
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
-  DriverMesh drawing(const Placement& at, const std::string& name, double extent) const;
+  DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
 
   CylinderShape shape;
 };

@@ -67,11 +67,11 @@ void Drivers::advance(double t, double dt) {
   }
 }
 
-std::vector<DriverMesh> Drivers::meshes(double extent) const {
+std::vector<DriverMesh> Drivers::meshes(const ViewFrame& frame) const {
   std::vector<DriverMesh> out;
   for (std::uint32_t j = 0; j < state_.size(); ++j)
     if (state_[j].active)
-      out.push_back(std::visit([&](const auto& k) { return k.drawing(state_[j], name_[j], extent); }, kind_[j]));
+      out.push_back(std::visit([&](const auto& k) { return k.drawing(state_[j], name_[j], frame); }, kind_[j]));
   return out;
 }
 

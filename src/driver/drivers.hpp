@@ -63,6 +63,11 @@ class Drivers {
   double rounding(std::uint32_t j) const {
     return std::visit([](const auto& k) { return k.rounding(); }, kind_[j]);
   }
+  // Adds what driver j occupies to `box` (m): a wall its point, a finite cylinder its ends.
+  void bounds(std::uint32_t j, Box3& box) const {
+    std::visit([&](const auto& k) { k.bounds(state_[j], box); }, kind_[j]);
+  }
+  bool is_wall(std::uint32_t j) const { return std::holds_alternative<Wall>(kind_[j]); }
   // m, the Hertz contact radius R* of a body rounded by r_body (m) on driver j's surface.
   double r_star(std::uint32_t j, double r_body) const {
     return std::visit([&](const auto& k) { return k.r_star(r_body); }, kind_[j]);
@@ -78,9 +83,9 @@ class Drivers {
   }
   Vec3 angular_velocity(std::uint32_t j) const { return state_[j].omega; }
 
-  // Surface meshes of the active drivers for the VTK output; infinite walls and cylinders
-  // are cut at `extent` (m) around their reference point.
-  std::vector<DriverMesh> meshes(double extent) const;
+  // Surface meshes of the active drivers for the VTK output; walls and infinite cylinders
+  // are cut to the frame (output/frame.hpp).
+  std::vector<DriverMesh> meshes(const ViewFrame& frame) const;
 
  private:
   Vec3 servo_velocity(std::uint32_t j, double dt) const;

@@ -220,7 +220,11 @@ bool MeshDriver::contact(const Placement& d, const PosedBody& a, FeaturePair f, 
   return edge ? in_edge_cone(m, f.b, n) : in_vertex_cone(m, f.b, n);
 }
 
-DriverMesh MeshDriver::drawing(const Placement& at, const std::string& name, double) const {
+void MeshDriver::bounds(const Placement& at, Box3& box) const {
+  for (const Vec3& v : mesh_->vertices) box.add(at.center + at.orientation * v);
+}
+
+DriverMesh MeshDriver::drawing(const Placement& at, const std::string& name, const ViewFrame&) const {
   DriverMesh m{name, {}, {}};
   for (const Vec3& v : mesh_->vertices) m.points.push_back(at.center + at.orientation * v);
   for (const std::array<int, 3>& t : mesh_->faces) m.polygons.push_back({t[0], t[1], t[2]});

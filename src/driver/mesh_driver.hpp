@@ -10,6 +10,7 @@
 
 #include "driver/motion.hpp"
 #include "geometry/features.hpp"
+#include "output/frame.hpp"
 
 namespace polydem {
 
@@ -32,6 +33,7 @@ class MeshDriver {
   MeshDriver(const MeshSettings& s, Placement& at);
 
   double rounding() const { return 0.0; }  // m
+  void bounds(const Placement& at, Box3& box) const;
   double r_star(double r_body) const { return r_body; }  // m, Hertz radius: flat triangles
   Vec3 reference(const Placement& at) const { return at.center; }  // m, where the mesh origin is
   Vec3 servo_direction(const Placement&, const MotionSettings& m) const { return given_servo_direction(m); }
@@ -40,7 +42,7 @@ class MeshDriver {
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
   // Its triangles at the current placement.
-  DriverMesh drawing(const Placement& at, const std::string& name, double extent) const;
+  DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
 
   const MeshFeatures& features() const { return *mesh_; }
 

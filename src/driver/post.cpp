@@ -14,8 +14,8 @@ Post::Post(const CylinderSettings& s, Placement& at) : shape{s.radius, s.length}
   at.axis = s.axis.normalized();
 }
 
-DriverMesh Post::drawing(const Placement& at, const std::string& name, double extent) const {
-  return shape.drawing(at, name, extent);
+DriverMesh Post::drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const {
+  return shape.drawing(at, name, frame);
 }
 
 PosedBody Post::axis_pose(const Placement& at, const PosedBody& a, Vec3* ends) const {

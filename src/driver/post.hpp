@@ -15,6 +15,7 @@ class Post {
   Post(const CylinderSettings& s, Placement& at);
 
   double rounding() const { return shape.radius; }  // m, a rounded segment
+  void bounds(const Placement& at, Box3& box) const { shape.bounds(at, box); }
   // m, Hertz radius: the geometric mean of r_body along the axis and 1/(1/r_body + 1/R) across it.
   double r_star(double r_body) const { return std::sqrt(r_body / (1.0 / r_body + 1.0 / shape.radius)); }
   Vec3 reference(const Placement& at) const { return at.center; }  // m
@@ -23,7 +24,7 @@ class Post {
   bool near(const Placement& at, const Vec3& center, double reach) const;
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
-  DriverMesh drawing(const Placement& at, const std::string& name, double extent) const;
+  DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
 
   CylinderShape shape;
 

@@ -4,7 +4,7 @@
 
 namespace polydem {
 
-Wall::Wall(const WallSettings& s, Placement& at) {
+Wall::Wall(const WallSettings& s, Placement& at) : size_(s.size) {
   at.point = s.point;
   at.normal = s.normal.normalized();
 }
@@ -26,10 +26,11 @@ bool Wall::contact(const Placement& at, const PosedBody& a, FeaturePair f, doubl
   return true;
 }
 
-DriverMesh Wall::drawing(const Placement& at, const std::string& name, double extent) const {
-  const Vec3 u = at.normal.unitOrthogonal() * extent;
-  const Vec3 w = at.normal.cross(u);
-  return {name, {at.point - u - w, at.point + u - w, at.point + u + w, at.point - u + w}, {{0, 1, 2, 3}}};
+DriverMesh Wall::drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const {
+  std::vector<Vec3> corners = framed_wall(at.point, at.normal, size_, frame);
+  std::vector<int> polygon(corners.size());
+  for (std::size_t k = 0; k < corners.size(); ++k) polygon[k] = int(k);
+  return {name, std::move(corners), {polygon}};
 }
 
 }  // namespace polydem

@@ -1,21 +1,24 @@
 #pragma once
 // A wall: an infinite plane, particles on the side its normal points to. A plane meets a
 // convex body first at its vertices, so its candidates are the body's vertices.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "driver/motion.hpp"
 #include "geometry/features.hpp"
+#include "output/frame.hpp"
 
 namespace polydem {
 
 struct DriverMesh;
 class Wall;
 
-struct WallSettings {             // `wall: {point, normal}`
+struct WallSettings {             // `wall: {point, normal, size}`
   using Kind = Wall;
   Vec3 point = Vec3::Zero();      // m, a point on the plane
   Vec3 normal = Vec3::UnitZ();    // unit normal towards the particles
+  std::optional<double> size;     // m, side of the square drawn about `point`; empty: cut to the view frame
 };
 
 class Wall {
@@ -23,6 +26,7 @@ class Wall {
   Wall(const WallSettings& s, Placement& at);
 
   double rounding() const { return 0.0; }  // m
+  void bounds(const Placement& at, Box3& box) const { box.add(at.point); }  // its point: the plane is infinite
   double r_star(double r_body) const { return r_body; }  // m, Hertz radius: a flat surface
   Vec3 reference(const Placement& at) const { return at.point; }  // m, torques are about it
   Vec3 servo_direction(const Placement& at, const MotionSettings&) const { return at.normal; }
@@ -30,8 +34,11 @@ class Wall {
   bool near(const Placement& at, const Vec3& center, double reach) const { return (center - at.point).dot(at.normal) < reach; }
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
-  // A square of half-side `extent` (m) around its point.
-  DriverMesh drawing(const Placement& at, const std::string& name, double extent) const;
+  // The part of its plane in the view frame, cut by the other walls (or a square of `size`).
+  DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
+
+ private:
+  std::optional<double> size_;  // m, drawn square's side; empty: the framed plane
 };
 
 }  // namespace polydem

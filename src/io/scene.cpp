@@ -122,7 +122,7 @@ std::vector<std::string> read_shape_files(const YamlMap& root, const std::string
 OutputSettings read_output(const YamlMap& root, Scene& scene) {
   const std::string& folder = scene.folder;
   const YamlMap m = root.map("output", "output",
-                             {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts", "probes"});
+                             {"dir", "vtk_every", "csv_every", "checkpoint_every", "contacts", "rounded", "probes"});
   OutputSettings o;
   const fs::path dir(m.text("dir", "out"));
   o.dir = (dir.is_absolute() ? dir : (fs::path(folder) / dir).lexically_normal()).string();
@@ -132,6 +132,7 @@ OutputSettings read_output(const YamlMap& root, Scene& scene) {
     if (m.has(key)) *field = check_positive(m, key, m.quantity(key, Dimension::time));
   o.contacts = m.boolean("contacts", true);
   note_locs(m, "output", {"vtk_every", "csv_every", "checkpoint_every"}, scene);
+  o.rounded = m.boolean("rounded", false);
   return o;
 }
 

@@ -67,6 +67,7 @@ KindSettings read_wall(const YamlMap& m, const Scene&) {
   w.point = m.vec3("point", Dimension::length);
   m.require("normal", "normal: [0, 0, 1]");
   w.normal = m.direction("normal", Vec3::UnitZ());
+  if (m.has("size")) w.size = check_positive(m, "size", m.quantity("size", Dimension::length));
   return w;
 }
 
@@ -106,7 +107,7 @@ struct KindEntry {
 
 const KindEntry& kind_entry(std::size_t kind) {
   static const KindEntry entries[] = {
-      {{"name", "point", "normal", "motion"}, read_wall, false},
+      {{"name", "point", "normal", "size", "motion"}, read_wall, false},
       {{"name", "center", "axis", "radius", "length", "inside", "motion"}, read_cylinder, false},
       {{"name", "center", "radius", "motion"}, read_ball, true},
       {{"name", "file", "scale", "translation", "rotation", "motion"}, read_stl, true},

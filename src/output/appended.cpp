@@ -22,6 +22,13 @@ std::string AppendedData::array(std::string_view name, std::vector<Vec3> values)
   return add("Float64", name, 3, std::shared_ptr<const void>(owned, owned->data()), bytes);
 }
 
+std::string AppendedData::field_array(std::string_view name, std::vector<Vec3> values) {
+  const std::string extra = " NumberOfTuples=\"" + std::to_string(values.size()) + "\"";
+  const std::uint64_t bytes = values.size() * sizeof(Vec3);
+  auto owned = std::make_shared<std::vector<Vec3>>(std::move(values));
+  return add("Float64", name, 3, std::shared_ptr<const void>(owned, owned->data()), bytes, extra);
+}
+
 std::string AppendedData::strings(std::string_view name, const std::vector<std::string>& values) {
   auto packed = std::make_shared<std::string>();
   for (const std::string& s : values) packed->append(s.c_str(), s.size() + 1);

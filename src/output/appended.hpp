@@ -30,6 +30,8 @@ class AppendedData {
     return add(VtkScalar<T>::kName, name, components, std::shared_ptr<const void>(owned, owned->data()), bytes);
   }
   std::string array(std::string_view name, std::vector<Vec3> values);
+  // A vector array in <FieldData>, which VTK reads only with its tuple count stated.
+  std::string field_array(std::string_view name, std::vector<Vec3> values);
   // A String array: the strings back to back, each ended by '\0', as VTK itself writes them.
   std::string strings(std::string_view name, const std::vector<std::string>& values);
 

@@ -1,6 +1,7 @@
 #pragma once
 // Result files ParaView opens directly: VTK XML with binary appended raw data, and a .pvd series.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,11 +12,14 @@
 namespace polydem {
 
 // bodies_NNNNNN.vtu: one VTK_POLYGON per face of each body's core polyhedron in world coordinates.
-// Shapes without faces (sphere, segment) are drawn as a subdivided icosahedron swept over their
-// vertices (sphere / capsule of the rounded radius). Cell data, repeated on each cell of a body:
+// Shapes without faces (sphere, segment), and every shape when `rounded`, are drawn as a
+// subdivided icosahedron swept over their vertices (the rounded surface: a sphere, a capsule, a
+// polyhedron with rounded edges and corners). Cell data, repeated on each cell of a body:
 // id (Int64), group (Int32), radius (Float64, m, rounded radius x scale), velocity (m/s),
-// angular_velocity (rad/s).
-void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes);
+// angular_velocity (rad/s). FieldData `gravity` (m/s^2, 3 x Float64) when given: which way is
+// down for `polydem render`.
+void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes,
+                      bool rounded = false, const std::optional<Vec3>& gravity = std::nullopt);
 
 // A driver surface as polygons, in world coordinates.
 struct DriverMesh {
@@ -59,6 +63,19 @@ class PvdSeries {
   std::string path_;
   std::string entries_;             // <DataSet .../> lines so far
   std::vector<std::string> stems_;  // part index -> file stem
+};
+
+// scene.pvd with every part, and one STEM.pvd per part beside it (bodies.pvd, drivers.pvd,
+// contacts.pvd, ...), each its own series over the same times, so ParaView styles each alone.
+class PvdFiles {
+ public:
+  explicit PvdFiles(std::string dir);
+  void add(double time, const std::vector<std::string>& files);  // files: relative to dir
+
+ private:
+  std::string dir_;
+  PvdSeries scene_;
+  std::vector<std::pair<std::string, PvdSeries>> parts_;  // stem -> its own series
 };
 
 }  // namespace polydem

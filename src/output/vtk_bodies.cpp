@@ -102,15 +102,19 @@ UnitMesh tubes_and_spheres(const Shape& s) {
   return m;
 }
 
-// Per shape, the polygons to draw in the principal frame at scale 1.
-std::vector<UnitMesh> shape_meshes(const std::vector<Shape>& shapes) {
+// Per shape, the polygons to draw in the principal frame at scale 1: the core's faces, the
+// rounded surface of a convex body (`rounded`, or no faces), or a polyline's or cluster's
+// spheres and tubes.
+std::vector<UnitMesh> shape_meshes(const std::vector<Shape>& shapes, bool rounded) {
   std::vector<UnitMesh> out;
   out.reserve(shapes.size());
   for (const Shape& s : shapes) {
-    if (!s.faces.empty())
-      out.push_back(UnitMesh{s.vertices, s.faces});
+    if (s.faces.empty() && !s.convex)
+      out.push_back(tubes_and_spheres(s));
+    else if (s.faces.empty() || (rounded && s.convex))
+      out.push_back(swept_sphere(s));
     else
-      out.push_back(s.convex ? swept_sphere(s) : tubes_and_spheres(s));
+      out.push_back(UnitMesh{s.vertices, s.faces});
   }
   return out;
 }
@@ -191,8 +195,9 @@ struct BodyArrays {
 
 }  // namespace
 
-void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes) {
-  const std::vector<UnitMesh> meshes = shape_meshes(shapes);
+void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes, bool rounded,
+                      const std::optional<Vec3>& gravity) {
+  const std::vector<UnitMesh> meshes = shape_meshes(shapes, rounded);
   BodyArrays arrays;
   arrays.reserve(bodies, meshes);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -200,7 +205,9 @@ void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::
     arrays.add(bodies, b, meshes[s], shapes[s].radius);
   }
   AppendedData data;
-  const std::string xml = arrays.piece_xml(data);
+  std::string xml;
+  if (gravity) xml = "<FieldData>\n" + data.field_array("gravity", {*gravity}) + "</FieldData>\n";
+  xml += arrays.piece_xml(data);
   data.write_file(path, "UnstructuredGrid", xml);
 }
 

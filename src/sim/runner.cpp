@@ -10,6 +10,7 @@
 #include <memory>
 #include <unistd.h>
 
+#include "driver/frame.hpp"
 #include "output/csv.hpp"
 #include "output/vtk.hpp"
 #include "output/vtk_image.hpp"
@@ -94,13 +95,6 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
   return out;
 }
 
-double scene_extent(const Bodies& b) {
-  if (b.size() == 0) return 1.0;
-  Vec3 lo = b.position[0], hi = b.position[0];
-  for (const Vec3& x : b.position) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
-  return std::max(0.5 * (hi - lo).norm(), 1e-3);
-}
-
 // s: rows of a resumed run's CSV files later than this were written after its checkpoint.
 double resumed_at(const Simulation& sim) { return sim.time() + 0.5 * sim.dt(); }
 
@@ -152,8 +146,8 @@ class FluidSeries {
 class OutputWriter {
  public:
   OutputWriter(const Simulation& sim, const RunOptions& o, OutputProgress progress)
-      : sim_(sim), dir_(o.out_dir), progress_(std::move(progress)), pvd_(dir_ + "/scene.pvd"),
-        extent_(scene_extent(sim.bodies)) {
+      : sim_(sim), dir_(o.out_dir), progress_(std::move(progress)), pvd_(dir_),
+        view_box_(view_box(sim.bodies, sim.shapes(), sim.drivers)) {
     for (const OutputFrame& f : progress_.frames) pvd_.add(f.time, f.files);
     if (!sim.scene().output.csv_every) return;
     energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
@@ -171,10 +165,11 @@ class OutputWriter {
 
   void frame() {
     OutputFrame f{sim_.time(), {numbered("bodies", progress_.frame, "vtu")}};
-    write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes());
+    write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
+                     sim_.scene().forces.gravity);
     if (!sim_.drivers.empty()) {
       f.files.push_back(numbered("drivers", progress_.frame, "vtp"));
-      write_drivers_vtp(dir_ + "/" + f.files.back(), sim_.drivers.meshes(extent_));
+      write_drivers_vtp(dir_ + "/" + f.files.back(), sim_.drivers.meshes(view_frame(sim_.drivers, view_box_)));
     }
     if (sim_.scene().output.contacts) {
       f.files.push_back(numbered("contacts", progress_.frame, "vtp"));
@@ -217,12 +212,12 @@ class OutputWriter {
   const Simulation& sim_;
   std::string dir_;
   OutputProgress progress_;
-  PvdSeries pvd_;
+  PvdFiles pvd_;  // scene.pvd and bodies.pvd, drivers.pvd, ...
   std::unique_ptr<CsvSeries> energy_;
   std::vector<std::unique_ptr<CsvSeries>> driver_series_;
   std::unique_ptr<FluidSeries> fluid_;
   std::unique_ptr<Probes> probes_;
-  double extent_;
+  Box3 view_box_;  // m, what the drivers are drawn in: the bodies and drivers at the start
 };
 
 std::string format_duration(double s) {

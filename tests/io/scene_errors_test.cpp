@@ -272,3 +272,18 @@ TEST_CASE("YAML's .nan and .inf, and numbers beyond double (1e400, 1e308 km), ar
   check_error(with_line(1, "simulation: {duration: \"1e307 min\", dt: \"1 us\", seed: 3}"), 1, "duration",
               "out of range in SI units");
 }
+
+TEST_CASE("a wall's drawing size and the rounded output are read with units, and a bad size names its key",
+          "[scene][errors]") {
+  test::TempDir dir;
+  dir.write("lib.shp", "stub\n");
+  const Scene scene = load_scene(dir.write("scene.yaml", edited({{10, "  - wall: {point: [0, 0, 0], normal: [0, 0, 1], "
+                                                                        "size: \"20 cm\"}"},
+                                                                    {11, "output: {rounded: true}"}})));
+  REQUIRE(scene.drivers.size() == 1);
+  CHECK(std::get<WallSettings>(scene.drivers[0].kind).size == Approx(0.2).epsilon(1e-15));
+  CHECK(scene.output.rounded);
+  CHECK_FALSE(load_scene(dir.write("plain.yaml", with_line(11, ""))).output.rounded);
+  check_error(with_line(10, "  - wall: {point: [0, 0, 0], normal: [0, 0, 1], size: -1}"), 10, "size", "must be > 0");
+  check_error(with_line(11, "output: {rounde: true}"), 11, "rounde", "did you mean 'rounded'?");
+}

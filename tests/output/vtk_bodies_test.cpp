@@ -204,3 +204,30 @@ TEST_CASE("bodies vtu: a cross is drawn as its swept shape, a sphere per tip and
     CHECK(off < 1e-12);
   }
 }
+
+TEST_CASE("vtu: rounded output draws a cube's swept surface, every point at its rounding from the core",
+          "[output][vtk]") {
+  const double h = 0.01, r = 0.001, scale = 1.5;  // m, half side and rounding; homothety
+  const std::vector<Shape> shapes{cube_shape(h, r)};
+  Bodies bodies;
+  const Quat q = axis_angle({1, 2, 3}, 0.7);
+  const Vec3 x(0.1, 0.2, 0.3);
+  add_body(bodies, 0, x, q, scale, Vec3::Zero(), Vec3::Zero(), 0);
+  const TempDir tmp("vtu_rounded");
+  write_bodies_vtu(tmp.path + "/rounded.vtu", bodies, shapes, true);
+  const Json data = read_with_vtk(tmp.path + "/rounded.vtu");
+  REQUIRE(data["n_points"].number == 42);  // the icosphere's directions, one surface point each
+  double far = 0.0;  // m, the largest point distance along a body axis: the rounded half side
+  for (std::size_t k = 0; k < data["points"].size(); ++k) {
+    const Vec3 local = q.conjugate() * (point_of(data, k) - x) / scale;  // body frame, scale 1
+    const Vec3 outside = (local.cwiseAbs() - Vec3::Constant(h)).cwiseMax(0.0);  // m, beyond the core cube
+    CHECK(outside.norm() == Approx(r).epsilon(1e-12));
+    far = std::max(far, local.cwiseAbs().maxCoeff());
+  }
+  CHECK(far == Approx(h + r).epsilon(1e-12));  // the icosphere holds the six axis directions
+  // Closed and convex: the volume is that of the rounded cube up to the facets' chords.
+  const double volume = enclosed_volume(data, 0, std::size_t(data["n_cells"].number), x) / std::pow(scale, 3);
+  const double rounded = 8 * h * h * h + 6 * 4 * h * h * r + 3 * kPi * 2 * h * r * r + 4.0 / 3.0 * kPi * r * r * r;
+  CHECK(volume < rounded);
+  CHECK(volume > 0.97 * rounded);
+}

@@ -6,6 +6,7 @@
 
 #include "../driver/mesh_fixtures.hpp"
 #include "io/scene.hpp"
+#include "output/frame.hpp"
 #include "output/vtk.hpp"
 #include "polydem/error.hpp"
 
@@ -42,7 +43,7 @@ TEST_CASE("an STL driver is placed by scale, rotation and translation, and turns
                                            "           motion: {rotate: {axis: [0, 0, 1], center: [0, 0, 0], omega: 2}}}\n");
   Drivers drivers(load_scene(path).drivers);
   const Quat placed(Eigen::AngleAxisd(kPi / 6, Vec3::UnitZ()));
-  const std::vector<DriverMesh> at_start = drivers.meshes(1.0);
+  const std::vector<DriverMesh> at_start = drivers.meshes(ViewFrame{});
   REQUIRE(at_start.size() == 1);
   const Vec3 corner(0.01, 0.01, 0.01);  // a corner of the mesh, scaled
   auto has_point = [](const DriverMesh& m, const Vec3& p) {
@@ -54,7 +55,7 @@ TEST_CASE("an STL driver is placed by scale, rotation and translation, and turns
   const double dt = 1e-3;
   for (int s = 0; s < 100; ++s) drivers.advance(s * dt, dt);  // 0.2 rad about z through the origin
   const Quat turned(Eigen::AngleAxisd(0.2, Vec3::UnitZ()));
-  CHECK(has_point(drivers.meshes(1.0)[0], turned * (Vec3(0, 0, 0.1) + placed * corner)));
+  CHECK(has_point(drivers.meshes(ViewFrame{})[0], turned * (Vec3(0, 0, 0.1) + placed * corner)));
   // A sphere just above the turned top face touches it, with the wall's velocity there.
   const Shape sphere = one_vertex_shape(0.002);
   const Vec3 above = turned * Vec3(0.003, -0.002, 0.1) + Vec3(0, 0, 0.0119);
