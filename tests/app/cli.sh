@@ -3,17 +3,7 @@
 # and a resumed run that ends on the same bits as an uninterrupted one.
 # usage: cli.sh PATH/TO/polydem
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-expect_exit() {  # expect_exit CODE PATTERN COMMAND...
-  local code=$1 pattern=$2; shift 2
-  set +e; "$@" > "$tmp/out" 2> "$tmp/err"; local got=$?; set -e
-  [ "$got" -eq "$code" ] || { cat "$tmp/err"; fail "$* exited $got, expected $code"; }
-  grep -q -- "$pattern" "$tmp/out" "$tmp/err" || { cat "$tmp/out" "$tmp/err"; fail "$*: no '$pattern' in the output"; }
-}
+source "$(dirname "$0")/script_lib.bash" "$1"
 
 expect_exit 0 "usage" "$polydem" --help
 expect_exit 0 "resume" "$polydem" run --help

@@ -4,11 +4,7 @@
 # down), the ball F, and the ball's centre sits at 2 r + R less both overlaps
 # ((m g + F) / kn and F / kn). Also `contacts: false`: no contacts_*.vtp, and with true there are.
 set -euo pipefail
-polydem="$1"
-here="$(cd "$(dirname "$0")" && pwd)"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 cat > "$tmp/press.yaml" <<YAML
 simulation: {duration: "0.3 s", dt: auto}
 shapes: [$here/../../shapes/platonic.shp]

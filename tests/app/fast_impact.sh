@@ -3,11 +3,7 @@
 # = 0.119 mm per m/s: half its radius at 21 m/s. At 200 m/s `check` and `run` must warn,
 # naming the body, the driver and the speed limit; at 1 m/s they must not.
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 write_scene() {  # write_scene SPEED FILE
   cat > "$2" <<YAML
 simulation: {duration: "0.5 ms", dt: auto}

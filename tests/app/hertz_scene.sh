@@ -4,11 +4,7 @@
 # Hertz stiffness dt: auto took; `run` ends with the sphere leaving at en x 1 m/s (kinetic
 # energy en^2 of the start, 2% on en at dt: auto), and a bad poisson is refused at its line.
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 write_scene() {  # write_scene POISSON FILE
   cat > "$2" <<YAML
 simulation: {duration: "2 ms", dt: auto}

@@ -5,17 +5,8 @@
 # hang would stop the test at its `timeout` (10 s; each case ends in well under a second).
 # usage: limits.sh PATH/TO/polydem
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-expect_exit() {  # expect_exit CODE PATTERN COMMAND...
-  local code=$1 pattern=$2; shift 2
-  set +e; timeout 10 "$@" > "$tmp/out" 2> "$tmp/err"; local got=$?; set -e
-  [ "$got" -eq "$code" ] || { cat "$tmp/err"; fail "$* exited $got, expected $code"; }
-  grep -q -- "$pattern" "$tmp/out" "$tmp/err" || { cat "$tmp/out" "$tmp/err"; fail "$*: no '$pattern' in the output"; }
-}
+source "$(dirname "$0")/script_lib.bash" "$1"
+expect_timeout=10  # s: each case ends in well under a second; a hang fails here
 scene() {  # scene NAME SED-EXPRESSION: drop.yaml changed by the expression
   sed -e "s|\.\./\.\./shapes|$here/../../shapes|" -e "$2" "$here/drop.yaml" > "$tmp/$1.yaml"
 }

@@ -3,11 +3,7 @@
 # (the title read back from the PNG's own text chunk, and from plots.txt).
 # usage: plot.sh PATH/TO/polydem
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 # drop.yaml with a flow probe: the mass of the bodies that fell below 10 cm.
 sed "s|../../shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/scene.yaml"
 printf '  probes:\n    - flow: {name: below, point: [0, 0, 0.1], normal: [0, 0, -1]}\n' >> "$tmp/scene.yaml"

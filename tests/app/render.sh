@@ -4,11 +4,7 @@
 # the drivers show, and an MP4 of the frames.
 # usage: render.sh PATH/TO/polydem
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 sed "s|../../shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/scene.yaml"
 "$polydem" run "$tmp/scene.yaml" --out "$tmp/out" 2> "$tmp/log" || { cat "$tmp/log"; fail "run"; }
 "$polydem" render "$tmp/out" --color group --size 400x300 -o "$tmp/last.png" > "$tmp/render.log" 2>&1 ||

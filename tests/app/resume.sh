@@ -5,11 +5,7 @@
 # checkpoint is refused unless --force; a checkpoint past the end of the run is refused.
 # usage: resume.sh PATH/TO/polydem
 set -euo pipefail
-polydem=$1
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 sed -e "s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/drop.yaml"
 cat >> "$tmp/drop.yaml" << 'YAML'
   probes:

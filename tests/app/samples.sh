@@ -2,11 +2,7 @@
 # Every sample loads (`check`) and runs its first 10 ms: exit 0, a checkpoint at the end, and
 # energy.csv rows with finite values whose time never goes back and ends at 10 ms (every csv_every divides it).
 set -euo pipefail
-polydem="$1"
-here="$(cd "$(dirname "$0")" && pwd)"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_lib.bash" "$1"
 count=0
 for scene in "$here"/../../samples/*/scene*.yaml; do
   name="$(basename "$(dirname "$scene")")/$(basename "$scene")"
