@@ -18,7 +18,7 @@ sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 if ! command -v liggghts > /dev/null || ! command -v mpirun > /dev/null; then
   "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq liggghts openmpi-bin
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends liggghts openmpi-bin
 fi
 [ -x "$bin" ] || bash tools/build.sh polydem
 mkdir -p "$work"
