@@ -18,10 +18,13 @@ namespace polydem {
 namespace {
 
 const char* kRunHelp =
-    "usage: polydem run SCENE.yaml [--out DIR] [--threads N] [--until T] [--resume CHECKPOINT [--force]]\n"
+    "usage: polydem run SCENE.yaml [--out DIR] [--threads N [--fixed-threads]] [--until T]\n"
+    "                   [--resume CHECKPOINT [--force]]\n"
     "  --out DIR        output folder (default: output.dir of the scene, else out/ beside it)\n"
     "  --threads N      OpenMP threads (default: simulation.threads, else all cores);\n"
-    "                   results are bitwise identical for any N\n"
+    "                   results are bitwise identical for any N; the run uses fewer while\n"
+    "                   fewer step faster (a busy machine), measured as it goes\n"
+    "  --fixed-threads  exactly N threads all along (thread-efficiency benchmarks)\n"
     "  --until T        stop at simulated time T (s, or with a unit: \"0.1 s\")\n"
     "  --resume FILE    continue bit for bit from a checkpoint_NNNNNN.bin of this scene; the CSV\n"
     "                   files of the output folder are cut back to the checkpoint's time\n"
@@ -42,6 +45,7 @@ struct RunArgs {
   std::optional<double> until;
   std::string resume;
   bool force = false;
+  bool fixed_threads = false;
 };
 
 double parse_seconds(const std::string& text) {
@@ -76,6 +80,7 @@ RunArgs parse_run_args(const std::vector<std::string>& args, const char* help, b
     else if (run && a == "--until") r.until = parse_seconds(value());
     else if (run && a == "--resume") r.resume = value();
     else if (run && a == "--force") r.force = true;
+    else if (run && a == "--fixed-threads") r.fixed_threads = true;
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see --help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene file per run)");
@@ -143,6 +148,23 @@ void warn_threads(int threads, const Scene& scene, bool from_command_line) {
                "slower; give at most %d\n", where.c_str(), threads, cores, cores);
 }
 
+// The share of steps at each thread count, when the governor used more than one.
+void print_thread_use(const std::vector<std::int64_t>& steps_at) {
+  std::int64_t total = 0;
+  int used = 0;
+  for (std::int64_t n : steps_at) { total += n; used += n > 0; }
+  if (used < 2) return;
+  std::string shares;
+  for (std::size_t t = steps_at.size(); t-- > 1;)
+    if (steps_at[t] > 0) {
+      const long percent = std::lround(100.0 * double(steps_at[t]) / double(total));
+      shares += (shares.empty() ? "" : ", ") + std::to_string(t) + " for " +
+                (percent ? std::to_string(percent) : std::string("<1")) + "%";
+    }
+  std::fprintf(stderr, "polydem: threads by share of steps: %s (fewer threads stepped faster on this machine "
+               "then; --fixed-threads to keep them all)\n", shares.c_str());
+}
+
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args) {
@@ -160,6 +182,7 @@ int cmd_run(const std::vector<std::string>& args) {
   o.until = a.until;
   o.resume = a.resume;
   o.force = a.force;
+  o.adapt_threads = !a.fixed_threads;
   std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s, %d threads, output in %s\n",
                sim.bodies.size(), sim.drivers.size(), sim.dt(), omp_get_max_threads(), o.out_dir.c_str());
   const RunSummary s = run_simulation(sim, o);
@@ -168,6 +191,7 @@ int cmd_run(const std::vector<std::string>& args) {
                static_cast<long long>(s.steps), s.wall_seconds,
                1e6 * s.wall_seconds / std::max<double>(1.0, double(s.steps) * double(sim.bodies.size())),
                s.rebuilds, o.out_dir.c_str());
+  print_thread_use(s.steps_at_threads);
   std::fprintf(stderr, "polydem: last list: %zu body pairs, %zu driver pairs, %zu candidate feature pairs; %zu contacts\n",
                c.body_pairs, c.driver_pairs, c.slots, c.contacts);
   return s.interrupted ? kExitInterrupted : 0;

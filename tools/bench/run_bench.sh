@@ -29,7 +29,7 @@ PY
 )
     until=$(python3 -c "print($t_settled + $steps * $dt_line)")
     rm -rf "$settled/run$threads"  # a resumed run appends to its folder's series: start clean
-    "$bin" run tools/bench/$scene.yaml --out "$settled/run$threads" --threads $threads \
+    "$bin" run tools/bench/$scene.yaml --out "$settled/run$threads" --threads $threads --fixed-threads \
         --resume "$settled/settled.bin" --until "$until" 2> "$log"
     line=$(grep 'steps in' "$log")
     bodies=$(grep -m1 'bodies,' "$log" | sed 's/polydem: \([0-9]*\) bodies.*/\1/')
@@ -50,7 +50,7 @@ for threads in 1 2; do
   log=$(mktemp)
   out=build/bench/pour$threads
   rm -rf "$out"
-  "$bin" run samples/box-fill/scene.yaml --out "$out" --threads $threads --until 0.2 2> "$log"
+  "$bin" run samples/box-fill/scene.yaml --out "$out" --threads $threads --fixed-threads --until 0.2 2> "$log"
   line=$(grep 'steps in' "$log")
   nsteps=$(echo "$line" | sed 's/polydem: \([0-9]*\) steps.*/\1/')
   secs=$(echo "$line" | sed 's/.* steps in \([0-9.]*\) s.*/\1/')
