@@ -11,6 +11,7 @@ namespace polydem {
 
 struct FieldSettings {
   std::optional<Vec3> gravity;    // m/s^2, gravity_force; empty: no gravity
+  SourceLoc gravity_loc;          // its line in the scene (the run limits name it)
   struct Quadratic { double cx = 0.38, mu = 0.000015; };
   std::optional<Quadratic> quadratic;     // quadratic_force
   struct FluidFriction { std::string field; double cx = 1.0; };  // field: a .vti, or "" (fluid_field)

@@ -216,6 +216,7 @@ void read_force(const std::string& name, const YamlMap& m, const std::string& fo
                 ForceSettings& f) {
   if (name == "gravity_force") {
     f.gravity = m.vec3("gravity", Dimension::acceleration, Vec3(0.0, 0.0, -9.807));
+    f.gravity_loc = m.has("gravity") ? m.loc("gravity") : SourceLoc{m.file(), m.line()};
   } else if (name == "quadratic_force") {
     ForceSettings::Quadratic q;
     q.cx = check_positive(m, "cx", m.quantity("cx", Dimension::dimensionless, q.cx), true);

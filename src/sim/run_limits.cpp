@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "polydem/error.hpp"
 
@@ -73,6 +74,21 @@ void check_driver_motions(const Simulation& sim) {
   }
 }
 
+// Gravity that moves a body by its own size in one step from rest: no contact can catch it
+// (an exponent typed wrong; 1e300 m/s^2 turned the state non-finite in two steps).
+void check_gravity(const Simulation& sim) {
+  const FieldSettings& f = sim.scene().forces;
+  if (!f.gravity || sim.bodies.size() == 0) return;
+  double r_min = std::numeric_limits<double>::infinity();  // m, the smallest bounding radius
+  for (std::size_t b = 0; b < sim.bodies.size(); ++b)
+    r_min = std::min(r_min, sim.shapes()[sim.bodies.shape[b]].bounding_radius * sim.bodies.scale[b]);
+  const double g = f.gravity->stableNorm(), fall = g * sim.dt() * sim.dt();  // m/s^2 (norm() overflows at 1e300), m per step
+  if (!(fall <= kMaxFallPerStep * r_min))
+    refuse(f.gravity_loc, "gravity", num(g) + " m/s^2 moves a body " + num(fall) + " m in one step of dt = " +
+                                         num(sim.dt()) + " s, more than " + num(kMaxFallPerStep) +
+                                         " x the smallest body radius " + num(r_min) + " m (the limit)");
+}
+
 // A skin far beyond the bodies: every neighbour list reaches that far (memory and time grow
 // with its cube).
 void check_skin(const Simulation& sim, std::vector<std::string>& warnings) {
@@ -97,6 +113,7 @@ std::vector<std::string> check_run_limits(const Simulation& sim, std::optional<d
   check_step_count(sim, until, warnings);
   check_schedules(sim, until, warnings);
   check_driver_motions(sim);
+  check_gravity(sim);
   check_skin(sim, warnings);
   return warnings;
 }

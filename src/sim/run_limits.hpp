@@ -19,10 +19,12 @@ constexpr double kManySteps = 1e9;
 constexpr double kMinIntervalSteps = 1e-3;
 // rad, the most a driver may turn in one step: its surface speed must stay meaningful.
 constexpr double kMaxTurnPerStep = 1.0;
+// The most gravity may move a body from rest in one step (g dt^2), in smallest body radii.
+constexpr double kMaxFallPerStep = 1.0;
 
 // `until`: --until (s), else the scene's duration. Throws InputError for a step count beyond
 // kMaxSteps, an output interval below kMinIntervalSteps x dt, a driver turning more than
-// kMaxTurnPerStep per step; returns warning lines (an interval shorter than dt or longer than
+// kMaxTurnPerStep per step, gravity beyond kMaxFallPerStep; returns warning lines (an interval shorter than dt or longer than
 // the run, many steps, a skin far beyond the bodies' size).
 std::vector<std::string> check_run_limits(const Simulation& sim, std::optional<double> until);
 
