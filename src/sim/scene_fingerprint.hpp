@@ -1,8 +1,9 @@
 #pragma once
 // A 64-bit fingerprint of a scene's physics, stored in checkpoints so that resuming another
 // scene's checkpoint is refused: the time step, gravity, the contact law, each body's shape,
-// mass, inertia and scale, each driver's kind, size and motion. Output settings, the duration,
-// threads and skin (results do not depend on them) and names are left out.
+// mass, inertia and scale, each driver's kind, place, size (a mesh's vertices) and motion, drag
+// and the fluid. Output settings, the duration, threads and skin (results do not depend on
+// them) and names are left out.
 #include <cstdint>
 #include <string>
 

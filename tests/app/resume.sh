@@ -51,6 +51,11 @@ set +e; "$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkp
 grep -q "checkpoint_005238.bin: checkpoint written for another scene.*--force" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no refusal message"; }
 "$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_005238.bin" --force 2> "$tmp/up.log" || fail "--force"
 grep -q "warning: .*another scene.*resuming anyway (--force)" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no --force warning"; }
+# Moved or resized drivers are another scene too (the wall's point, the box's width).
+sed "s/name: left, point: \[-0.035, 0, 0\]/name: left, point: [-0.036, 0, 0]/" "$tmp/drop.yaml" > "$tmp/wide.yaml"
+grep -q "point: \[-0.036" "$tmp/wide.yaml" || fail "wide.yaml: the wall did not move"
+set +e; "$polydem" run "$tmp/wide.yaml" --out "$tmp/wide" --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/wide.log"; code=$?; set -e
+[ "$code" -eq 1 ] && grep -q "written for another scene" "$tmp/wide.log" || { cat "$tmp/wide.log"; fail "a moved wall: exit $code"; }
 # A checkpoint past the end of the run.
 set +e; "$polydem" run "$tmp/drop.yaml" --out "$tmp/past" --until 0.01 --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/past.log"; code=$?; set -e
 [ "$code" -eq 1 ] && grep -q "past the end of this run" "$tmp/past.log" || { cat "$tmp/past.log"; fail "checkpoint past the end: exit $code"; }
