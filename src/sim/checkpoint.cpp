@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 #include "polydem/error.hpp"
 #include "sim/run_limits.hpp"
@@ -40,15 +39,25 @@ constexpr std::size_t kContactBytes03 = 2 * 4 + 1 + 2 + 4 + 1 + 4 * sizeof(Vec3)
 static_assert(kContactBytes03 == 128);
 constexpr double kUnitTolerance = 1e-6;  // |q| - 1 of a stored orientation (round-off is ~1e-15)
 
+// Streams the checkpoint to its file with the running checksum; with no file it only counts
+// bytes (the payload's size goes in the header before it). The state is never copied whole in
+// memory: a buffer of the file tripled the peak memory of a run at each checkpoint.
 struct Writer {
-  std::string bytes;
-  template <class T> void pod(const T& v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof(T)); }
+  std::ofstream* out = nullptr;
+  std::uint64_t size = 0, checksum = fnv1a(nullptr, 0);
+  void raw(const char* data, std::size_t n) {
+    size += n;
+    if (!out) return;
+    checksum = fnv1a(data, n, checksum);
+    out->write(data, std::streamsize(n));
+  }
+  template <class T> void pod(const T& v) { raw(reinterpret_cast<const char*>(&v), sizeof(T)); }
   void flag(const bool& b) { pod(b); }
   template <class T> void array(const std::vector<T>& v) {
     pod<std::uint64_t>(v.size());
-    bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    raw(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
-  void string(const std::string& s) { pod<std::uint64_t>(s.size()); bytes.append(s); }
+  void string(const std::string& s) { pod<std::uint64_t>(s.size()); raw(s.data(), s.size()); }
 };
 
 // Reads the payload from memory; every count is checked against the bytes left before
@@ -160,8 +169,7 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
 }
 
 // Format 05's bytes after the magic: the state, the contacts, the output progress.
-std::string payload(const Simulation& sim, const OutputProgress& progress) {
-  Writer w;
+void write_payload(Writer& w, const Simulation& sim, const OutputProgress& progress) {
   w.pod(sim.step_index());
   w.pod(sim.dt());
   w.pod(sim.ledger);
@@ -179,15 +187,18 @@ std::string payload(const Simulation& sim, const OutputProgress& progress) {
     w.pod<std::uint64_t>(f.files.size());
     for (const std::string& s : f.files) w.string(s);
   }
-  return std::move(w.bytes);
 }
 
+// The whole file in one string of its size (a stream copy would hold it twice).
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path + ": cannot open checkpoint");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return std::move(text).str();
+  const std::streamoff size = in.tellg();
+  std::string bytes(size > 0 ? std::size_t(size) : 0, '\0');
+  in.seekg(0);
+  if (size < 0 || !in.read(bytes.data(), std::streamsize(bytes.size())))
+    throw InputError(path + ": cannot read checkpoint");
+  return bytes;
 }
 
 template <class T> bool all_finite(const std::vector<T>& v) {
@@ -242,16 +253,17 @@ void check_header(const std::string& bytes, const std::string& path, const Simul
 }  // namespace
 
 void write_checkpoint(const std::string& path, const Simulation& sim, const OutputProgress& progress) {
-  const std::string body = payload(sim, progress);
-  Writer w;
-  w.bytes.append(kMagic, sizeof(kMagic));
-  w.pod(Header{scene_fingerprint(sim), sim.bodies.size(), sim.drivers.size(), body.size()});
-  w.bytes += body;
-  w.pod(fnv1a(w.bytes.data(), w.bytes.size()));
+  Writer counter;  // a first pass counts the payload's bytes for the header
+  write_payload(counter, sim, progress);
   const std::string tmp = path + ".tmp";
   std::ofstream out(tmp, std::ios::binary);
   if (!out) throw RunError("cannot write checkpoint " + tmp + ": " + std::strerror(errno));
-  out.write(w.bytes.data(), std::streamsize(w.bytes.size()));
+  Writer w{&out};
+  w.raw(kMagic, sizeof(kMagic));
+  w.pod(Header{scene_fingerprint(sim), sim.bodies.size(), sim.drivers.size(), counter.size});
+  write_payload(w, sim, progress);
+  const std::uint64_t checksum = w.checksum;  // of all bytes before it
+  w.pod(checksum);
   out.close();
   if (!out) throw RunError("cannot write checkpoint " + tmp);
   if (std::rename(tmp.c_str(), path.c_str()) != 0)  // atomic: a crash never leaves half a checkpoint

@@ -30,7 +30,7 @@ PY
     until=$(python3 -c "print($t_settled + $steps * $dt_line)")
     rm -rf "$settled/run$threads"  # a resumed run appends to its folder's series: start clean
     "$bin" run tools/bench/$scene.yaml --out "$settled/run$threads" --threads $threads --fixed-threads \
-        --resume "$settled/settled.bin" --until "$until" 2> "$log"
+        --resume "$settled/settled.bin" --force --until "$until" 2> "$log"
     line=$(grep 'steps in' "$log")
     bodies=$(grep -m1 'bodies,' "$log" | sed 's/polydem: \([0-9]*\) bodies.*/\1/')
     nsteps=$(echo "$line" | sed 's/polydem: \([0-9]*\) steps.*/\1/')

@@ -46,7 +46,7 @@ liggghts_seconds() {  # procs
 }
 polydem_seconds() {  # threads
   rm -rf "$work/run"
-  "$bin" run "$here/spheres.yaml" --out "$work/run" --threads "$1" --fixed-threads --resume "$work/polydem/settled.bin" \
+  "$bin" run "$here/spheres.yaml" --out "$work/run" --threads "$1" --fixed-threads --resume "$work/polydem/settled.bin" --force \
       --until "$until" 2>&1 | sed -n 's/.* steps in \([0-9.]*\) s.*/\1/p'
 }
 
