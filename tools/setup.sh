@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(build-essential cmake libcgal-dev libeigen3-dev libyaml-cpp-dev catch2 zlib1g-dev
           python3 python3-vtk9 python3-numpy python3-matplotlib
-          xvfb xauth ffmpeg)  # polydem render: an X server for VTK's GL without a display; videos
+          xvfb xauth ffmpeg  # polydem render: an X server for VTK's GL without a display; videos
+          libopenmpi-dev openmpi-bin)  # MPI (CMake POLYDEM_MPI: built with it when present)
 # Not python3-paraview: Debian 12 makes it conflict with python3-vtk9, so render uses VTK itself.
 # `setup.sh clang`: also clang, its sanitizer and libFuzzer runtimes and LLVM's OpenMP, for the
 # sanitizer and fuzz builds (tools/sanitize.sh, tools/fuzz.sh, tools/tsan.sh).

@@ -8,6 +8,7 @@
 #include "app/cmd_run.hpp"
 #include "app/cmd_shape.hpp"
 #include "app/cmd_view.hpp"
+#include "app/mpi_session.hpp"
 #include "polydem/error.hpp"
 
 namespace {
@@ -28,6 +29,13 @@ const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
+  const polydem::MpiSession mpi(argc, argv);
+  if (mpi.ranks() > 1) {  // every rank exits 1; one message
+    if (mpi.rank() == 0)
+      std::fprintf(stderr, "error: %d MPI ranks: polydem runs a scene on one rank so far (%s); use mpirun -np 1 "
+                           "and --threads N\n", mpi.ranks(), mpi.with_mpi() ? "issue 20" : "this build has no MPI");
+    return 1;
+  }
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 1 : 0;

@@ -16,7 +16,10 @@ namespace {
 // The partner of a body-body pair: the other body.
 struct BodyPartner {
   const PosedBody* posed;
-  const Bodies* bodies;
+  const Vec3* position;          // m
+  const Vec3* velocity;          // m/s
+  const Vec3* angular_velocity;  // rad/s
+  const double* mass;            // kg
   const double* displacement;  // m, per body since the lists were built
   const Vec3* world_vertices;
   const std::uint32_t* vertex_offset;  // body j's vertices: world_vertices[vertex_offset[j] ...]
@@ -29,8 +32,8 @@ struct BodyPartner {
     const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
     const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
     for (; v < v_end; v += 64) __builtin_prefetch(v);
-    __builtin_prefetch(&bodies->velocity[j]);
-    __builtin_prefetch(&bodies->angular_velocity[j]);
+    __builtin_prefetch(&velocity[j]);
+    __builtin_prefetch(&angular_velocity[j]);
   }
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
@@ -48,12 +51,10 @@ struct BodyPartner {
   double r_star(double r_i, std::uint32_t j) const { return r_i * posed[j].radius / (r_i + posed[j].radius); }  // m
   bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
   const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
-  Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
-  RigidMotion motion(std::uint32_t j) const {
-    return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j]};
-  }
+  Vec3 center(std::uint32_t j) const { return position[j]; }
+  RigidMotion motion(std::uint32_t j) const { return {velocity[j], angular_velocity[j], position[j]}; }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
-    const double mi = bodies->mass[i], mj = bodies->mass[j];
+    const double mi = mass[i], mj = mass[j];
     return mi * mj / (mi + mj);
   }
 };
@@ -61,7 +62,7 @@ struct BodyPartner {
 // The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC).
 struct DriverPartner {
   const Drivers* drivers;
-  const Bodies* bodies;
+  const double* mass;  // kg, per local body
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return drivers->contact(a, j, f, max_gap, out);
   }
@@ -77,7 +78,7 @@ struct DriverPartner {
     const DriverState& d = (*drivers)[j];
     return {d.velocity, d.omega, d.pivot};
   }
-  double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
+  double m_eff(std::uint32_t i, std::uint32_t) const { return mass[i]; }
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
@@ -164,52 +165,58 @@ void fill_slots(const std::vector<std::vector<FeaturePair>>& per_pair, const std
 
 }  // namespace
 
-ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const Bodies& bodies,
+ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies,
                              ContactSettings settings)
     : shapes_(shapes), settings_(settings) {
   band_particle_ = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;
   band_driver_ = settings_.driver.cohesion ? settings_.driver.dncut : 0.0;
   const std::size_t n = bodies.size();
+  const std::vector<int>& shape = *bodies.shape;
+  const std::vector<double>& scale = *bodies.scale;
   vertex_offset_.assign(n + 1, 0);
   bounding_.resize(n);
   core_reach_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
-    const Shape& s = shapes_[bodies.shape[b]];
+    const Shape& s = shapes_[shape[b]];
     vertex_offset_[b + 1] = vertex_offset_[b] + std::uint32_t(s.vertices.size());
-    bounding_[b] = s.bounding_radius * bodies.scale[b];
-    core_reach_[b] = core_reach(s) * bodies.scale[b];
+    bounding_[b] = s.bounding_radius * scale[b];
+    core_reach_[b] = core_reach(s) * scale[b];
   }
   world_vertices_.resize(vertex_offset_[n]);
   posed_.resize(n);
-  spheres_only_ = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
+  spheres_only_ = std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
   radius_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
-    const Shape& s = shapes_[bodies.shape[b]];
-    radius_[b] = s.radius * bodies.scale[b];
+    const Shape& s = shapes_[shape[b]];
+    radius_[b] = s.radius * scale[b];
     // A sphere's pose is its centre alone: everything else is set once here.
     if (spheres_only_)
-      posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), bodies.position[b], radius_[b], bodies.scale[b]};
+      posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), (*bodies.position)[b], radius_[b], scale[b]};
   }
 }
 
-void ContactEngine::pose(const Bodies& bodies) {
+void ContactEngine::pose(const LocalBodies& bodies) {
   const std::size_t n = bodies.size();
+  const std::vector<Vec3>& position = *bodies.position;
   if (spheres_only_) {  // the one vertex is the centre: no rotation to apply
-    parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = bodies.position[b]; });
+    parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
     return;
   }
+  const std::vector<Quat>& orientation = *bodies.orientation;
+  const std::vector<int>& shape = *bodies.shape;
+  const std::vector<double>& scale = *bodies.scale;
   parallel_for(listed_.size(), [&](std::size_t e) {
     const std::uint32_t b = listed_[e];
-    const Shape& s = shapes_[bodies.shape[b]];
+    const Shape& s = shapes_[shape[b]];
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
     PosedBody& posed = posed_[b];  // filled in place: no temporary pose to copy
-    posed.rotation = bodies.orientation[b].toRotationMatrix();  // once per body and step
-    pose_vertices(s, bodies.scale[b], bodies.position[b], posed.rotation, v);
+    posed.rotation = orientation[b].toRotationMatrix();  // once per body and step
+    pose_vertices(s, scale[b], position[b], posed.rotation, v);
     posed.shape = &s;
     posed.vertices = v;
-    posed.position = bodies.position[b];
-    posed.radius = s.radius * bodies.scale[b];
-    posed.scale = bodies.scale[b];
+    posed.position = position[b];
+    posed.radius = s.radius * scale[b];
+    posed.scale = scale[b];
   });
 }
 
@@ -224,12 +231,19 @@ void ContactEngine::mark_listed(std::size_t n_bodies, const std::vector<BodyPair
     if (in_pair[b]) listed_.push_back(b);
 }
 
-void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
+// Ghosts' own pairs are their owners' to compute: a pair is listed where one of its bodies is owned.
+static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& pairs) {
+  if (!bodies.ghost) return;
+  std::erase_if(pairs, [&](BodyPair p) { return !bodies.owned(p.i) && !bodies.owned(p.j); });
+}
+
+void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   PairList fresh;
   std::vector<BodyPair> near;
-  cells_.build_pairs(bodies.position, bounding_, range_p, near);
+  cells_.build_pairs(*bodies.position, bounding_, range_p, near);
+  drop_ghost_pairs(bodies, near);
   PairList fresh_d;
   fresh_d.pairs = near_drivers(bodies, drivers, range_d);
   mark_listed(bodies.size(), near, fresh_d.pairs);
@@ -252,7 +266,7 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
-  trigger_.mark_built(bodies.position, bodies.orientation);
+  trigger_.mark_built(*bodies.position, *bodies.orientation);
   mark_drivers(bodies, drivers);
   must_rebuild_ = false;
   ++stats_.rebuilds;
@@ -261,12 +275,14 @@ void ContactEngine::rebuild(const Bodies& bodies, const Drivers& drivers) {
   stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
 }
 
-// Body-driver pairs within reach, in (body, driver) order; each body is tested in parallel.
-std::vector<BodyPair> ContactEngine::near_drivers(const Bodies& bodies, const Drivers& drivers, double range) const {
+// Body-driver pairs within reach of owned bodies, in (body, driver) order; each body is tested in parallel.
+std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const {
   const std::size_t n = bodies.size(), m = drivers.size();
   std::vector<std::uint8_t> is_near(n * m);
+  const std::vector<Vec3>& position = *bodies.position;
   parallel_for(n, [&](std::size_t i) {
-    for (std::uint32_t j = 0; j < m; ++j) is_near[i * m + j] = drivers.near(j, bodies.position[i], bounding_[i] + range);
+    if (!bodies.owned(i)) return;  // zeros: a ghost's driver contacts are its owner's
+    for (std::uint32_t j = 0; j < m; ++j) is_near[i * m + j] = drivers.near(j, position[i], bounding_[i] + range);
   });
   std::vector<BodyPair> pairs;
   for (std::uint32_t i = 0; i < n; ++i)
@@ -275,7 +291,7 @@ std::vector<BodyPair> ContactEngine::near_drivers(const Bodies& bodies, const Dr
   return pairs;
 }
 
-void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
+void ContactEngine::mark_drivers(const LocalBodies& bodies, const Drivers& drivers) {
   drivers_at_build_.clear();
   std::vector<Vec3> centers;  // m
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
@@ -283,8 +299,9 @@ void ContactEngine::mark_drivers(const Bodies& bodies, const Drivers& drivers) {
     centers.push_back(drivers.center(j));
   }
   std::vector<double> lever(bodies.size(), 0.0);  // m, per body: the max is exact in any order
+  const std::vector<Vec3>& position = *bodies.position;
   parallel_for(bodies.size(), [&](std::size_t b) {
-    for (const Vec3& c : centers) lever[b] = std::max(lever[b], (bodies.position[b] - c).norm() + bounding_[b]);
+    for (const Vec3& c : centers) lever[b] = std::max(lever[b], (position[b] - c).norm() + bounding_[b]);
   });
   driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
 }
@@ -303,14 +320,18 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   return false;
 }
 
-void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
-  if (must_rebuild_ || trigger_.needs_rebuild(bodies.position, bodies.orientation, core_reach_, settings_.skin) ||
-      drivers_moved(drivers))
+bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers) {
+  return must_rebuild_ || trigger_.needs_rebuild(*bodies.position, *bodies.orientation, core_reach_, settings_.skin) ||
+         drivers_moved(drivers);
+}
+
+void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool stale) {
+  if (stale)
     rebuild(bodies, drivers);  // poses the bodies it pairs
   else
     pose(bodies);
-  const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
-                      bodies.angular_velocity.data(), bodies.mass.data()};
+  const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
+                      bodies.angular_velocity->data(), bodies.mass->data()};
   stats_.energy = EnergyParts{};
   stats_.contacts = 0;
   // Energies are summed block by block in order: repeatable whatever the thread count.
@@ -321,8 +342,9 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
   } else {
-    const BodyPartner partner{posed_.data(), &bodies, trigger_.displacement().data(), world_vertices_.data(),
-                              vertex_offset_.data()};
+    const BodyPartner partner{posed_.data(),         view.position,         view.velocity,
+                              view.angular_velocity, view.mass,             trigger_.displacement().data(),
+                              world_vertices_.data(), vertex_offset_.data()};
     with_law(settings_.particle, [&](auto parts) {
       using Parts = decltype(parts);
       all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
@@ -334,7 +356,7 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   if (!driver_list_.pairs.empty()) {
     with_law(settings_.driver, [&](auto parts) {
       using Parts = decltype(parts);
-      const DriverPartner partner{&drivers, &bodies};
+      const DriverPartner partner{&drivers, view.mass};
       all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
         return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
@@ -366,24 +388,31 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
   return total;
 }
 
-void ContactEngine::reduce(Bodies& bodies, Drivers& drivers) const {
+void ContactEngine::reduce(const LocalBodies& bodies, Drivers& drivers) const {
   const std::size_t n = bodies.size();
-  parallel_for(n, [&](std::size_t b) {
-    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-    for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
-      const std::uint32_t k = body_index_.entries[e] >> 1;
-      if (!body_list_.touching[k]) continue;
-      if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
-      else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
-    }
-    for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
-      const std::uint32_t k = driver_index_.entries[e] >> 1;
-      if (!driver_list_.touching[k]) continue;
-      f += driver_list_.force_i[k];
-      t += driver_list_.torque_i[k];
-    }
-    bodies.force[b] += f;
-    bodies.torque[b] += t;
+  std::vector<Vec3>& force = *bodies.force;
+  std::vector<Vec3>& torque = *bodies.torque;
+  // One process has no ghost: its loop is compiled without the test.
+  with_flag(bodies.ghost != nullptr, [&](auto has_ghosts) {
+    parallel_for(n, [&](std::size_t b) {
+      if constexpr (decltype(has_ghosts)::value)
+        if ((*bodies.ghost)[b]) return;  // a ghost's force is summed by its owner
+      Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+      for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
+        const std::uint32_t k = body_index_.entries[e] >> 1;
+        if (!body_list_.touching[k]) continue;
+        if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
+        else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
+      }
+      for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
+        const std::uint32_t k = driver_index_.entries[e] >> 1;
+        if (!driver_list_.touching[k]) continue;
+        f += driver_list_.force_i[k];
+        t += driver_list_.torque_i[k];
+      }
+      force[b] += f;
+      torque[b] += t;
+    });
   });
   for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
   for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable

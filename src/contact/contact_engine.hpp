@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "driver/drivers.hpp"
-#include "polydem/bodies.hpp"
 #include "polydem/shape.hpp"
 #include "contact/contact_lists.hpp"
+#include "contact/local_bodies.hpp"
 #include "contact/pair_kernel.hpp"
 
 namespace polydem {
@@ -18,6 +18,7 @@ struct ContactSettings {
   double skin = 0.0;        // m, Verlet skin
 };
 
+// Over this process's lists: a pair across a cut between processes is listed by both.
 struct ContactStats {
   std::size_t rebuilds = 0;
   std::size_t body_pairs = 0, driver_pairs = 0;   // in the Verlet lists
@@ -28,17 +29,24 @@ struct ContactStats {
 
 class ContactEngine {
  public:
-  ContactEngine(const std::vector<Shape>& shapes, const Bodies& bodies, ContactSettings settings);
+  ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies, ContactSettings settings);
 
-  // Adds the contact forces and torques of this step to bodies.force / bodies.torque and the
-  // reactions to the drivers.
-  void compute(Bodies& bodies, Drivers& drivers, double dt);
+  // Adds the contact forces and torques of this step to the owned bodies' force / torque and
+  // the reactions to the drivers; rebuilds the lists first when lists_stale says so.
+  void compute(const LocalBodies& bodies, Drivers& drivers, double dt) { compute(bodies, drivers, dt, lists_stale(bodies, drivers)); }
+  // The same with the rebuild decided by the caller (many processes: any process's `lists_stale`).
+  void compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool rebuild);
+  // True when some local body may have moved half the skin since the lists were built, a
+  // driver moved as far, or a rebuild was forced. Once per step: it measures each body's
+  // displacement, which the pair loop's skip test reads.
+  bool lists_stale(const LocalBodies& bodies, const Drivers& drivers);
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
 
   const ContactStats& stats() const { return stats_; }
-  // J, stored in the springs of the active contacts now (from their histories: output steps only).
+  // J, stored in the springs of the active contacts now (from their histories: output steps
+  // only), over this process's lists.
   StoredParts elastic(const Drivers& drivers) const;
   const PairList& body_pairs() const { return body_list_; }
   const PairList& driver_pairs() const { return driver_list_; }
@@ -46,12 +54,12 @@ class ContactEngine {
   PairList& driver_pairs() { return driver_list_; }
 
  private:
-  void pose(const Bodies& bodies);
+  void pose(const LocalBodies& bodies);
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
-  void rebuild(const Bodies& bodies, const Drivers& drivers);
-  void reduce(Bodies& bodies, Drivers& drivers) const;
-  std::vector<BodyPair> near_drivers(const Bodies& bodies, const Drivers& drivers, double range) const;
-  void mark_drivers(const Bodies& bodies, const Drivers& drivers);
+  void rebuild(const LocalBodies& bodies, const Drivers& drivers);
+  void reduce(const LocalBodies& bodies, Drivers& drivers) const;
+  std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
+  void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
   bool drivers_moved(const Drivers& drivers) const;
 
   const std::vector<Shape>& shapes_;

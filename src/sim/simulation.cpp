@@ -47,7 +47,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
     : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library) {
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
-  engine_ = std::make_unique<ContactEngine>(library_.shapes, bodies, cs);
+  engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
   rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
@@ -65,7 +65,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   external_forces();
   ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
-  if (contacts) engine_->compute(bodies, drivers, dt_);
+  if (contacts) engine_->compute(all_owned(bodies), drivers, dt_);
 }
 
 void Simulation::external_forces() {
@@ -95,7 +95,7 @@ void Simulation::step() {
     // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half
     // of the last step's reaction and half of this step's, on this step's driver motion.
     driver_work_half();
-    engine_->compute(bodies, drivers, dt_);
+    engine_->compute(all_owned(bodies), drivers, dt_);
     const EnergyParts& step = engine_->stats().energy;
     ledger.dissipated += step.net;
     ledger.sliding += step.sliding;

@@ -9,12 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <random>
 #include <set>
 #include <tuple>
 
 #include "geometry/shadowing.hpp"
 #include "sim/checkpoint.hpp"
+#include "pile.hpp"
 #include "sim_fixtures.hpp"
 #include "state_hash.hpp"
 #include "../unique_temp_dir.hpp"
@@ -23,32 +23,6 @@ using namespace polydem;
 using namespace polydem::test;
 
 namespace {
-
-// 150 cubes and spheres packed close with random velocities and fast spins in a walled box.
-struct Pile {
-  Scene scene = base_scene(law(1e5, 0.5, 0.4, 1e5), true, Vec3(0, 0, -9.807));
-  ShapeLibrary lib = library({cube_shape(0.009, 0.0005), sphere_shape(0.005)});
-  std::vector<BodySpec> specs;
-  explicit Pile(double damp_tangential = 0.0) {
-    scene.forces.contact.config.damp_tangential = scene.forces.contact.config_driver.damp_tangential = damp_tangential;
-    for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
-                                 {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
-      DriverSettings d;
-      d.name = "side";
-      d.kind = WallSettings{point, normal};
-      scene.drivers.push_back(d);
-    }
-    std::mt19937_64 rng(7);
-    auto u = [&] { return double(rng() >> 11) * 0x1.0p-53 - 0.5; };
-    for (int k = 0; k < 150; ++k) {  // a 5 x 5 x 6 lattice, bounding spheres 1 mm apart, moving into each other
-      const Vec3 x(0.0175 * (k % 5 - 2), 0.0175 * ((k / 5) % 5 - 2), 0.01 + 0.0175 * (k / 25));
-      BodySpec b = body(k % 3 ? "cube" : "sphere", x, 2.0 * Vec3(u(), u(), u()),
-                        Quat(Eigen::Vector4d(u(), u(), u(), u())).normalized());
-      b.angular_velocity = 200.0 * Vec3(u(), u(), u());  // rad/s: fast rotations stress the Verlet lists
-      specs.push_back(b);
-    }
-  }
-};
 
 std::uint64_t run_pile(int threads, int steps, double damp_tangential = 0.0) {
   omp_set_num_threads(threads);

@@ -1,0 +1,140 @@
+// The contact stage on a local view (owned bodies plus ghosts, in global id order): cut into
+// slabs, each part computing the pairs of its owned bodies, the pile's forces and torques are
+// the bits of the whole at every step, through rebuilds and contact histories.
+#include <catch2/catch.hpp>
+
+#include <memory>
+
+#include "integrate/integrate.hpp"
+#include "pile.hpp"
+#include "sim/local_store.hpp"
+#include "sim/slabs.hpp"
+
+using namespace polydem;
+using namespace polydem::test;
+
+namespace {
+
+ContactSettings pile_settings(const Scene& scene) {
+  ContactSettings s;
+  s.particle = prepare_law(scene.forces.contact.config);
+  s.driver = prepare_law(scene.forces.contact.config_driver, &scene.forces.contact.config);
+  s.skin = 0.0005;  // m
+  return s;
+}
+
+// One part of the cut: its bodies, its engine and its copy of the drivers (their reactions
+// are its own pairs' alone).
+struct Part {
+  LocalStore store;
+  Drivers drivers;
+  std::unique_ptr<ContactEngine> engine;
+};
+
+double max_bounding_radius(const Bodies& bodies, const std::vector<Shape>& shapes) {
+  double r = 0.0;  // m
+  for (std::size_t b = 0; b < bodies.size(); ++b) r = std::max(r, shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
+  return r;
+}
+
+struct SplitRun {
+  std::size_t rebuilds = 0, max_contacts = 0, ghosts = 0, mismatches = 0;
+};
+
+// From the pile once it holds 150 contacts, steps `steps` times with the whole engine and,
+// beside it, `parts` slab parts whose ghost sets (the halo plus `margin`, m; none without
+// `ghosts`) are chosen once; counts the owned bodies whose force or torque differs from the
+// whole's by a bit.
+SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
+  Pile p;
+  Simulation sim(p.scene, p.lib, p.specs);
+  for (int s = 0; s < 100000 && sim.engine().stats().contacts < 150; ++s) sim.step();
+  REQUIRE(sim.engine().stats().contacts >= 150);
+  Bodies bodies = sim.bodies;
+  Drivers drivers = sim.drivers;
+  const ContactSettings settings = pile_settings(p.scene);
+  const RotorGroups rotors = group_rotors(bodies);
+  ContactEngine whole(sim.shapes(), all_owned(bodies), settings);
+  const Slabs slabs = cut_slabs(bodies.position, parts);
+  const double halo = ghosts ? ghost_halo(max_bounding_radius(bodies, sim.shapes()), settings.skin) + margin : 0.0;
+  std::vector<Part> split;
+  SplitRun out;
+  for (int k = 0; k < parts; ++k) {
+    std::vector<std::uint32_t> ids;
+    std::vector<std::uint8_t> ghost;
+    local_bodies_of(slabs, k, bodies.position, halo, ids, ghost);
+    for (std::uint8_t g : ghost) out.ghosts += g;
+    Part& part = split.emplace_back(Part{LocalStore{}, drivers, nullptr});
+    part.store.select(bodies, std::move(ids), std::move(ghost));
+    part.engine = std::make_unique<ContactEngine>(sim.shapes(), part.store.view(), settings);
+  }
+  const Vec3 gravity = *p.scene.forces.gravity;  // m/s^2
+  const double dt = sim.dt();
+  for (int s = 0; s < steps; ++s) {
+    kick(bodies, 0.5 * dt, rotors);
+    drift(bodies, dt, rotors);
+    std::fill(bodies.force.begin(), bodies.force.end(), Vec3::Zero());
+    std::fill(bodies.torque.begin(), bodies.torque.end(), Vec3::Zero());
+    const bool stale = whole.lists_stale(all_owned(bodies), drivers);
+    bool any_stale = false;  // the global decision: every part measures its bodies
+    for (Part& part : split) {
+      part.store.refresh(bodies);
+      any_stale = part.engine->lists_stale(part.store.view(), part.drivers) || any_stale;
+    }
+    REQUIRE(any_stale == stale);
+    whole.compute(all_owned(bodies), drivers, dt, stale);
+    for (Part& part : split) {
+      part.engine->compute(part.store.view(), part.drivers, dt, stale);
+      for (std::size_t b = 0; b < part.store.global_id.size(); ++b) {
+        if (part.store.ghost[b]) continue;
+        const std::uint32_t g = part.store.global_id[b];
+        if (part.store.force[b] != bodies.force[g] || part.store.torque[b] != bodies.torque[g]) ++out.mismatches;
+      }
+    }
+    for (std::size_t b = 0; b < bodies.size(); ++b) bodies.force[b] += bodies.mass[b] * gravity;
+    kick(bodies, 0.5 * dt, rotors);
+    out.max_contacts = std::max(out.max_contacts, whole.stats().contacts);
+  }
+  out.rebuilds = whole.stats().rebuilds;
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a pile cut into 2 or 3 slabs with ghosts gets the force bits of the whole at every step") {
+  for (int parts : {2, 3}) {
+    const SplitRun r = run_split(parts, 600, 0.003);
+    INFO(parts << " parts: " << r.rebuilds << " rebuilds, " << r.max_contacts << " contacts, " << r.ghosts << " ghosts");
+    CHECK(r.rebuilds > 3);        // histories carried across rebuilds
+    CHECK(r.max_contacts > 100);  // a pile, not bodies in flight
+    CHECK(r.ghosts > 0);
+    CHECK(r.ghosts < 150 * (parts - 1));  // ghosts are the bodies near a cut, not all
+    CHECK(r.mismatches == 0);
+  }
+}
+
+TEST_CASE("parts without ghosts miss the pairs across the cut: the comparison sees them") {
+  const SplitRun r = run_split(2, 50, 0.0, false);
+  CHECK(r.ghosts == 0);
+  CHECK(r.mismatches > 0);
+}
+
+TEST_CASE("slabs cut the longest side at equal body counts and ghosts lie within the halo") {
+  std::vector<Vec3> x;
+  for (int k = 0; k < 12; ++k) x.push_back(Vec3(0.1 * k, 0.01 * (k % 3), 0.0));
+  const Slabs s = cut_slabs(x, 3);
+  CHECK(s.axis == 0);
+  REQUIRE(s.cuts.size() == 2);
+  CHECK(s.cuts[0] == x[4].x());
+  CHECK(s.cuts[1] == x[8].x());
+  int owned[3] = {0, 0, 0};
+  for (const Vec3& c : x) ++owned[s.owner(c)];
+  CHECK(owned[0] == 4);
+  CHECK(owned[1] == 4);
+  CHECK(owned[2] == 4);
+  std::vector<std::uint32_t> ids;
+  std::vector<std::uint8_t> ghost;
+  local_bodies_of(s, 1, x, 0.15, ids, ghost);  // bodies 4..7 owned; 3, 8 and 9 within 0.15 m of [0.4, 0.8)
+  CHECK(ids == std::vector<std::uint32_t>{3, 4, 5, 6, 7, 8, 9});
+  CHECK(ghost == std::vector<std::uint8_t>{1, 0, 0, 0, 0, 1, 1});
+}
