@@ -157,12 +157,30 @@ void CellGrid::forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) cons
   }
 }
 
-void CellGrid::cells_around(const CellSphere& s, std::uint32_t (&ids)[kAround]) const {
+int CellGrid::ranges_around(const CellSphere& s, std::uint32_t (&begin)[kAround],
+                            std::uint32_t (&end)[kAround]) const {
   const CellCoord at = coord_of(s.x, s.y, s.z);
-  int k = 0;
-  for (std::int64_t dz = -1; dz <= 1; ++dz)
-    for (std::int64_t dy = -1; dy <= 1; ++dy)
-      for (std::int64_t dx = -1; dx <= 1; ++dx) ids[k++] = id_of({at.x + dx, at.y + dy, at.z + dz});
+  int count = 0;
+  for (std::int64_t z = at.z - 1; z <= at.z + 1; ++z) {
+    for (std::int64_t y = at.y - 1; y <= at.y + 1; ++y) {
+      if (dense) {  // the row's cells have consecutive ids: their spheres are one range
+        const std::int64_t x0 = std::max<std::int64_t>(at.x - 1, 0);
+        const std::int64_t x1 = std::min<std::int64_t>(at.x + 1, dims[0] - 1);
+        if (z < 0 || z >= dims[2] || y < 0 || y >= dims[1] || x0 > x1) continue;
+        const std::int64_t row = (z * dims[1] + y) * dims[0];
+        begin[count] = cell_start[static_cast<std::size_t>(row + x0)];
+        end[count++] = cell_start[static_cast<std::size_t>(row + x1 + 1)];
+        continue;
+      }
+      for (std::int64_t x = at.x - 1; x <= at.x + 1; ++x) {
+        const std::uint32_t c = table.find({x, y, z});
+        if (c == CellTable::kNoCell) continue;
+        begin[count] = cell_start[c];
+        end[count++] = cell_start[c + 1];
+      }
+    }
+  }
+  return count;
 }
 
 std::size_t CellGrid::bytes() const {

@@ -35,9 +35,11 @@ class CellGrid {
   std::uint32_t body(std::uint32_t k) const { return sorted_id[k]; }
   // Ids of the forward neighbours of cell c, CellTable::kNoCell where none is stored.
   void forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) const;
-  // Ids of the cell containing the centre of `s` (which need not belong to this grid) and of its
-  // 26 neighbours, CellTable::kNoCell where none is stored.
-  void cells_around(const CellSphere& s, std::uint32_t (&ids)[kAround]) const;
+  // The spheres of the cell containing the centre of `s` (which need not belong to this grid)
+  // and of its 26 neighbours, as ranges [begin[k], end[k]) of sphere indices: one range per row
+  // of three cells along x in a dense grid, one per stored cell when hashed. Returns the count.
+  int ranges_around(const CellSphere& s, std::uint32_t (&begin)[kAround],
+                    std::uint32_t (&end)[kAround]) const;
   // Bytes held by the grid's arrays (their capacity).
   std::size_t bytes() const;
 

@@ -77,12 +77,11 @@ void pairs_within(const CellGrid& g, std::size_t c, const Test& test) {
 template <class Test>
 void pairs_across(const CellGrid& fine, std::size_t c, const CellGrid& coarse, const Test& test) {
   for (std::uint32_t a = fine.begin(c); a < fine.end(c); ++a) {
-    std::uint32_t around[CellGrid::kAround];
-    coarse.cells_around(fine.sphere(a), around);
-    for (const std::uint32_t other : around) {
-      if (other == CellTable::kNoCell) continue;
-      const std::uint32_t other_end = coarse.end(other);
-      for (std::uint32_t b = coarse.begin(other); b < other_end; ++b) test(fine, a, coarse, b);
+    std::uint32_t begin[CellGrid::kAround];
+    std::uint32_t end[CellGrid::kAround];
+    const int ranges = coarse.ranges_around(fine.sphere(a), begin, end);
+    for (int k = 0; k < ranges; ++k) {
+      for (std::uint32_t b = begin[k]; b < end[k]; ++b) test(fine, a, coarse, b);
     }
   }
 }
