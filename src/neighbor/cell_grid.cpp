@@ -145,16 +145,39 @@ void CellGrid::link_hashed_cells() {
   }
 }
 
-void CellGrid::forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) const {
+int CellGrid::forward_ranges(std::size_t c, std::uint32_t (&begin)[kForward],
+                             std::uint32_t (&end)[kForward]) const {
+  int count = 0;
   if (!dense) {
-    std::copy_n(forward.begin() + static_cast<std::ptrdiff_t>(c * kForward), kForward, ids);
-    return;
+    for (int k = 0; k < kForward; ++k) {
+      const std::uint32_t other = forward[c * kForward + static_cast<std::size_t>(k)];
+      if (other == CellTable::kNoCell) continue;
+      begin[count] = cell_start[other];
+      end[count++] = cell_start[other + 1];
+    }
+    return count;
   }
   const auto cell = static_cast<std::int64_t>(c);
-  const CellCoord at = {cell % dims[0], (cell / dims[0]) % dims[1], cell / (dims[0] * dims[1])};
-  for (int k = 0; k < kForward; ++k) {
-    ids[k] = id_of({at.x + kOffsets[k][0], at.y + kOffsets[k][1], at.z + kOffsets[k][2]});
+  const std::int64_t x = cell % dims[0];
+  const std::int64_t y = (cell / dims[0]) % dims[1];
+  const std::int64_t z = cell / (dims[0] * dims[1]);
+  if (x + 1 < dims[0]) {  // offset (1, 0, 0)
+    begin[count] = cell_start[c + 1];
+    end[count++] = cell_start[c + 2];
   }
+  const std::int64_t x0 = std::max<std::int64_t>(x - 1, 0);
+  const std::int64_t x1 = std::min<std::int64_t>(x + 1, dims[0] - 1);
+  // The rows (y + 1, z) and (y - 1 .. y + 1, z + 1), x - 1 .. x + 1: the other 12 offsets.
+  constexpr std::int64_t kRows[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+  for (const auto& [dy, dz] : kRows) {
+    const std::int64_t ry = y + dy;
+    const std::int64_t rz = z + dz;
+    if (ry < 0 || ry >= dims[1] || rz >= dims[2]) continue;
+    const std::int64_t row = (rz * dims[1] + ry) * dims[0];
+    begin[count] = cell_start[static_cast<std::size_t>(row + x0)];
+    end[count++] = cell_start[static_cast<std::size_t>(row + x1 + 1)];
+  }
+  return count;
 }
 
 int CellGrid::ranges_around(const CellSphere& s, std::uint32_t (&begin)[kAround],

@@ -33,8 +33,11 @@ class CellGrid {
   std::uint32_t end(std::size_t c) const { return cell_start[c + 1]; }
   const CellSphere& sphere(std::uint32_t k) const { return spheres[k]; }
   std::uint32_t body(std::uint32_t k) const { return sorted_id[k]; }
-  // Ids of the forward neighbours of cell c, CellTable::kNoCell where none is stored.
-  void forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) const;
+  // The spheres of the forward neighbours of cell c, as ranges [begin[k], end[k]) of sphere
+  // indices: in a dense grid 5 (the next cell along x, then 4 rows of three cells with
+  // consecutive ids), one per stored cell when hashed. Returns the count.
+  int forward_ranges(std::size_t c, std::uint32_t (&begin)[kForward],
+                     std::uint32_t (&end)[kForward]) const;
   // The spheres of the cell containing the centre of `s` (which need not belong to this grid)
   // and of its 26 neighbours, as ranges [begin[k], end[k]) of sphere indices: one range per row
   // of three cells along x in a dense grid, one per stored cell when hashed. Returns the count.

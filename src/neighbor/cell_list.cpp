@@ -61,13 +61,12 @@ void pairs_within(const CellGrid& g, std::size_t c, const Test& test) {
   for (std::uint32_t a = begin; a < end; ++a) {
     for (std::uint32_t b = a + 1; b < end; ++b) test(g, a, g, b);
   }
-  std::uint32_t others[CellGrid::kForward];
-  g.forward_cells(c, others);
-  for (const std::uint32_t other : others) {
-    if (other == CellTable::kNoCell) continue;
-    const std::uint32_t other_end = g.end(other);
+  std::uint32_t from[CellGrid::kForward];
+  std::uint32_t to[CellGrid::kForward];
+  const int ranges = g.forward_ranges(c, from, to);
+  for (int k = 0; k < ranges; ++k) {
     for (std::uint32_t a = begin; a < end; ++a) {
-      for (std::uint32_t b = g.begin(other); b < other_end; ++b) test(g, a, g, b);
+      for (std::uint32_t b = from[k]; b < to[k]; ++b) test(g, a, g, b);
     }
   }
 }
