@@ -73,13 +73,10 @@ CellCoord CellGrid::coord_of(double x, double y, double z) const {
           static_cast<std::int64_t>(cell_coordinate(z, lo.z(), side))};
 }
 
-// Cell id = (z ny + y) nx + x: bodies end up sorted along the grid, neighbours nearby in memory.
-std::uint32_t CellGrid::id_of(const CellCoord& c) const {
-  if (!dense) return table.find(c);
-  const bool inside = c.x >= 0 && c.x < dims[0] && c.y >= 0 && c.y < dims[1] && c.z >= 0 &&
-                      c.z < dims[2];
-  return inside ? static_cast<std::uint32_t>((c.z * dims[1] + c.y) * dims[0] + c.x)
-                : CellTable::kNoCell;
+// Dense cell id = (z ny + y) nx + x: bodies end up sorted along the grid, neighbours nearby in
+// memory. Members' cells are inside the grid by construction.
+std::uint32_t CellGrid::dense_id(const CellCoord& c) const {
+  return static_cast<std::uint32_t>((c.z * dims[1] + c.y) * dims[0] + c.x);
 }
 
 void CellGrid::number_dense_cells(const std::vector<Vec3>& centers,
@@ -89,7 +86,7 @@ void CellGrid::number_dense_cells(const std::vector<Vec3>& centers,
 #pragma omp parallel for schedule(static) if (n >= kMinParallel)
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3& x = centers[members[k]];
-    member_cell[k] = id_of(coord_of(x.x(), x.y(), x.z()));
+    member_cell[k] = dense_id(coord_of(x.x(), x.y(), x.z()));
   }
 }
 

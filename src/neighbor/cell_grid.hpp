@@ -48,7 +48,7 @@ class CellGrid {
 
  private:
   CellCoord coord_of(double x, double y, double z) const;
-  std::uint32_t id_of(const CellCoord& c) const;
+  std::uint32_t dense_id(const CellCoord& c) const;
   void number_dense_cells(const std::vector<Vec3>& centers,
                           const std::vector<std::uint32_t>& members);
   void number_hashed_cells(const std::vector<Vec3>& centers,
