@@ -194,6 +194,10 @@ int cmd_run(const std::vector<std::string>& args) {
   print_thread_use(s.steps_at_threads);
   std::fprintf(stderr, "polydem: last list: %zu body pairs, %zu driver pairs, %zu candidate feature pairs; %zu contacts\n",
                c.body_pairs, c.driver_pairs, c.slots, c.contacts);
+  std::fprintf(stderr, "polydem: broad phase: %zu sphere tests in %zu rebuilds (%.3g per body per rebuild), %zu size classes, %.3g MB\n",
+               c.broad_tests, c.rebuilds,
+               double(c.broad_tests) / std::max<double>(1.0, double(c.rebuilds) * double(sim.bodies.size())),
+               c.broad_levels, 1e-6 * double(c.broad_bytes));
   return s.interrupted ? kExitInterrupted : 0;
 }
 

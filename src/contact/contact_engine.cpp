@@ -243,6 +243,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   PairList fresh;
   std::vector<BodyPair> near;
   cells_.build_pairs(*bodies.position, bounding_, range_p, near);
+  stats_.broad_tests += cells_.candidate_tests();
+  stats_.broad_levels = cells_.levels();
+  stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
   drop_ghost_pairs(bodies, near);
   PairList fresh_d;
   fresh_d.pairs = near_drivers(bodies, drivers, range_d);

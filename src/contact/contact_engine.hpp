@@ -24,6 +24,9 @@ struct ContactStats {
   std::size_t body_pairs = 0, driver_pairs = 0;   // in the Verlet lists
   std::size_t slots = 0;                          // candidate feature pairs
   std::size_t contacts = 0;                       // active sub-contacts this step
+  std::size_t broad_tests = 0;    // bounding-sphere tests of the broad phase, all rebuilds
+  std::size_t broad_levels = 0;   // size classes (cell grids) of the last rebuild
+  std::size_t broad_bytes = 0;    // held by the broad phase's cells, largest seen
   EnergyParts energy;                             // J, dissipated this step, by mechanism
 };
 

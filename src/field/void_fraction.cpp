@@ -23,7 +23,9 @@ Vec3 face_normal(const Shape& s, const std::vector<int>& f) {  // Newell's metho
 }  // namespace
 
 double core_distance(const Shape& s, const Vec3& x) {
-  bool inside = s.faces.size() >= 4;
+  // Only a closed convex core is the intersection of its faces' half-spaces; a non-convex body
+  // is the union of its swept elements, as its mass (shape/union_mass.hpp): no interior.
+  bool inside = s.convex && !s.surface && s.faces.size() >= 4;
   double d = std::numeric_limits<double>::infinity();
   for (const std::vector<int>& f : s.faces) {
     const Vec3 n = face_normal(s, f);

@@ -14,7 +14,8 @@ namespace polydem {
 // the rounded body (principal frame, unit scale); the centre of mass alone when none does.
 std::vector<Vec3> shape_samples(const Shape& shape, int n);
 
-// Distance from x to the core polyhedron (0 inside it); brute force, for set-up only.
+// Distance from x to the core (0 inside a closed convex core; a non-convex core has no inside:
+// the distance to its nearest vertex, edge or face); brute force, for set-up only.
 double core_distance(const Shape& shape, const Vec3& x);
 
 struct VoidFractionField {

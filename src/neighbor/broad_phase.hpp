@@ -5,17 +5,20 @@
 #include <vector>
 
 #include "neighbor/body_pair.hpp"
-#include "neighbor/cell_table.hpp"
+#include "neighbor/cell_grid.hpp"
 #include "neighbor/rebuild_trigger.hpp"  // the trigger goes with the lists it guards
 #include "polydem/math.hpp"
 
 namespace polydem {
 
-// Cell-list search, O(N) for a bounded ratio of largest to mean bounding radius.
-// Cells have side 2 max(R) + skin, so a pair within reach lies in the same or adjacent cells.
-// A dense grid over the bodies' bounding box when it has at most a few cells per body; else
-// (sparse or huge domains, a body far away) only occupied cells, in a hash table. Memory is
-// O(bodies) either way and is reused across calls.
+// Cell-list search over size classes (LAMMPS' "multi" neighbour style), O(N) whatever the
+// spread of bounding radii. The largest body sets the coarsest cell side, 2 max(R) + skin; each
+// body goes to the finest grid, of side halved level by level, whose cells are at least
+// 2 R + skin wide. Pairs within a grid lie in the same or adjacent cells; a body of a finer grid
+// looks for its partners of every coarser grid in the 27 cells around it there (its reach is
+// below that grid's side). So small bodies are binned by their own size, not by the largest
+// one, and a few large bodies (a 1:10 size ratio, a long fibre) cost O(1) tests per small body.
+// Equal-sized bodies form one grid: the plain cell list.
 class CellList {
  public:
   // Writes all pairs with |x_i - x_j| < R_i + R_j + skin into `out`, sorted by (i, j), the same
@@ -25,39 +28,29 @@ class CellList {
                    std::vector<BodyPair>& out);
   // Sphere-sphere distance tests done by the last build_pairs (the cost that must stay O(N)).
   std::size_t candidate_tests() const { return candidate_count; }
-  // Cells stored by the last build_pairs: the dense grid size, or the occupied cells when hashed.
-  std::size_t stored_cells() const { return cell_count; }
-  // Whether the last build_pairs fell back to hashed cells.
-  bool hashed() const { return !dense; }
+  // Cells stored by the last build_pairs over all grids: dense grid sizes, or occupied cells
+  // when hashed.
+  std::size_t stored_cells() const;
+  // Whether the last build_pairs fell back to hashed cells in some grid.
+  bool hashed() const;
+  // Size classes (grids) used by the last build_pairs.
+  std::size_t levels() const { return used_levels; }
+  // Bytes held by the search's arrays (their capacity), output excluded.
+  std::size_t bytes() const;
+
+  // Cell sides from 2 max(R) + skin down to 1/128 of it; smaller bodies share the finest grid.
+  static constexpr int kMaxLevels = 8;
 
  private:
-  struct Sphere {
-    double x, y, z, r;  // m, a body's centre and bounding radius, stored in cell order
-  };
-  static constexpr int kForward = 13;  // half of the 26 neighbour cells: each cell pair once
-
-  void bin_bodies(const std::vector<Vec3>& centers, const std::vector<double>& radii, double cell);
-  void number_dense_cells(const std::vector<Vec3>& centers, const Vec3& lo, double cell);
-  void number_hashed_cells(const std::vector<Vec3>& centers, const Vec3& lo, double cell);
-  void sort_into_cells(const std::vector<Vec3>& centers, const std::vector<double>& radii);
-  void link_hashed_cells();
-  void forward_cells(std::size_t c, std::uint32_t (&ids)[kForward]) const;
-  void collect_pairs(double skin);
+  void bin_levels(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin,
+                  double top_cell);
+  void collect_pairs(double skin, std::size_t n);
   void merge_pairs(std::size_t n, std::vector<BodyPair>& out);
 
-  bool dense = true;
-  std::int64_t dims[3] = {0, 0, 0};  // cells per axis of the dense grid
-  std::size_t cell_count = 0;
-  std::vector<std::uint32_t> body_cell_id;
-  // CSR: the bodies of cell c are spheres[cell_start[c] .. cell_start[c + 1]).
-  std::vector<std::uint32_t> cell_start;
-  std::vector<Sphere> spheres;           // sorted by cell
-  std::vector<std::uint32_t> sorted_id;  // body index of spheres[k]
-  // Hashed mode only.
-  CellTable table;
-  std::vector<CellCoord> body_cell;    // cell of each body
-  std::vector<CellCoord> cell_coord;   // coordinates of each occupied cell
-  std::vector<std::uint32_t> forward;  // kForward neighbour cell ids per cell, or kNoCell
+  std::size_t used_levels = 0;
+  std::vector<CellGrid> grids;                       // coarsest first; the first used_levels
+  std::vector<std::vector<std::uint32_t>> members;  // bodies of each level, in index order
+  std::vector<std::size_t> cell_offset;              // flat cell numbering over the grids
   // Output assembly.
   std::vector<std::vector<BodyPair>> thread_pairs;
   std::vector<std::uint32_t> row_start;  // CSR of the output by first body

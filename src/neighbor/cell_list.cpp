@@ -19,7 +19,7 @@ using cells::kMinParallel;
 // by at most 2^-12 cells each, so a pair within reach can never land two cells apart.
 constexpr double kCellMargin = 1.0 + 1.0 / 1024.0;
 
-// m, side of a cell: two bodies within reach are less than 2 max(R) + skin apart.
+// m, side of the coarsest cells: two bodies within reach are less than 2 max(R) + skin apart.
 double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin) {
   if (centers.size() != radii.size()) {
     throw std::invalid_argument("build_pairs: " + std::to_string(centers.size()) + " centres but " +
@@ -43,6 +43,48 @@ double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& ra
   return (2.0 * max_r + skin) * kCellMargin;
 }
 
+// The finest level whose cells (of side top 2^-level, m) still hold the body's reach, 2 R + skin.
+int level_of(double radius, double skin, const double (&sides)[CellList::kMaxLevels]) {
+  const double need = (2.0 * radius + skin) * kCellMargin;
+  int level = 0;
+  while (level + 1 < CellList::kMaxLevels && need <= sides[level + 1]) ++level;
+  return level;
+}
+
+// Tests every pair of spheres a, b of grid g with a in cell c and b after a in the same cell or
+// in a forward neighbour cell: each pair of the grid once.
+template <class Test>
+void pairs_within(const CellGrid& g, std::size_t c, const Test& test) {
+  const std::uint32_t begin = g.begin(c);
+  const std::uint32_t end = g.end(c);
+  if (begin == end) return;
+  for (std::uint32_t a = begin; a < end; ++a) {
+    for (std::uint32_t b = a + 1; b < end; ++b) test(g, a, g, b);
+  }
+  std::uint32_t from[CellGrid::kForward];
+  std::uint32_t to[CellGrid::kForward];
+  const int ranges = g.forward_ranges(c, from, to);
+  for (int k = 0; k < ranges; ++k) {
+    for (std::uint32_t a = begin; a < end; ++a) {
+      for (std::uint32_t b = from[k]; b < to[k]; ++b) test(g, a, g, b);
+    }
+  }
+}
+
+// Tests every sphere of cell c of the finer grid against those of the 27 cells around it in the
+// coarser grid: each pair across the two grids once.
+template <class Test>
+void pairs_across(const CellGrid& fine, std::size_t c, const CellGrid& coarse, const Test& test) {
+  for (std::uint32_t a = fine.begin(c); a < fine.end(c); ++a) {
+    std::uint32_t begin[CellGrid::kAround];
+    std::uint32_t end[CellGrid::kAround];
+    const int ranges = coarse.ranges_around(fine.sphere(a), begin, end);
+    for (int k = 0; k < ranges; ++k) {
+      for (std::uint32_t b = begin[k]; b < end[k]; ++b) test(fine, a, coarse, b);
+    }
+  }
+}
+
 }  // namespace
 
 void CellList::build_pairs(const std::vector<Vec3>& centers, const std::vector<double>& radii,
@@ -50,53 +92,88 @@ void CellList::build_pairs(const std::vector<Vec3>& centers, const std::vector<d
   const double cell = cell_side(centers, radii, skin);
   out.clear();
   candidate_count = 0;
-  cell_count = 0;
-  dense = true;
+  used_levels = 0;
   // With a zero cell side every reach is 0 and no distance is < 0: there is nothing to find.
   if (centers.size() < 2 || !(cell > 0.0)) return;
-  bin_bodies(centers, radii, cell);
-  collect_pairs(skin);
+  bin_levels(centers, radii, skin, cell);
+  collect_pairs(skin, centers.size());
   merge_pairs(centers.size(), out);
 }
 
-void CellList::collect_pairs(double skin) {
+// Each body to its level; the non-empty levels become the grids, coarsest first.
+void CellList::bin_levels(const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                          double skin, double top_cell) {
+  double sides[kMaxLevels];  // m, exact halvings of the top cell side
+  for (int level = 0; level < kMaxLevels; ++level) sides[level] = std::ldexp(top_cell, -level);
+  members.resize(kMaxLevels);
+  for (auto& list : members) list.clear();
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    members[static_cast<std::size_t>(level_of(radii[i], skin, sides))].push_back(
+        static_cast<std::uint32_t>(i));
+  }
+  double used_sides[kMaxLevels];
+  for (int level = 0; level < kMaxLevels; ++level) {
+    if (members[static_cast<std::size_t>(level)].empty()) continue;
+    std::swap(members[used_levels], members[static_cast<std::size_t>(level)]);
+    used_sides[used_levels++] = sides[level];
+  }
+  if (grids.size() < used_levels) grids.resize(used_levels);
+  cell_offset.assign(1, 0);
+  for (std::size_t g = 0; g < used_levels; ++g) {
+    grids[g].build(centers, radii, members[g], used_sides[g]);
+    cell_offset.push_back(cell_offset.back() + grids[g].cell_count());
+  }
+}
+
+void CellList::collect_pairs(double skin, std::size_t n) {
   thread_pairs.resize(static_cast<std::size_t>(omp_get_max_threads()));
   for (auto& buffer : thread_pairs) buffer.clear();
+  const std::size_t total_cells = cell_offset[used_levels];
   std::size_t tests = 0;
-#pragma omp parallel reduction(+ : tests) if (spheres.size() >= kMinParallel)
+#pragma omp parallel reduction(+ : tests) if (n >= kMinParallel)
   {
     std::vector<BodyPair>& buffer = thread_pairs[static_cast<std::size_t>(omp_get_thread_num())];
-    const auto test = [&](std::uint32_t a, std::uint32_t b) {
-      const Sphere& p = spheres[a];
-      const Sphere& q = spheres[b];
+    const auto test = [&](const CellGrid& g, std::uint32_t a, const CellGrid& h, std::uint32_t b) {
+      const CellSphere& p = g.sphere(a);
+      const CellSphere& q = h.sphere(b);
       ++tests;
       if (within_reach(p.x, p.y, p.z, p.r, q.x, q.y, q.z, q.r, skin)) {
-        const std::uint32_t i = sorted_id[a];
-        const std::uint32_t j = sorted_id[b];
+        const std::uint32_t i = g.body(a);
+        const std::uint32_t j = h.body(b);
         buffer.push_back({std::min(i, j), std::max(i, j)});
       }
     };
     // Dynamic: clustered scenes put very unequal work in each cell; the merge restores order.
 #pragma omp for schedule(dynamic, 256)
-    for (std::size_t c = 0; c < cell_count; ++c) {
-      const std::uint32_t begin = cell_start[c];
-      const std::uint32_t end = cell_start[c + 1];
-      if (begin == end) continue;
-      for (std::uint32_t a = begin; a < end; ++a) {
-        for (std::uint32_t b = a + 1; b < end; ++b) test(a, b);
-      }
-      std::uint32_t others[kForward];
-      forward_cells(c, others);
-      for (const std::uint32_t other : others) {
-        if (other == CellTable::kNoCell) continue;
-        const std::uint32_t other_end = cell_start[other + 1];
-        for (std::uint32_t a = begin; a < end; ++a) {
-          for (std::uint32_t b = cell_start[other]; b < other_end; ++b) test(a, b);
-        }
+    for (std::size_t flat = 0; flat < total_cells; ++flat) {
+      std::size_t level = 0;
+      while (flat >= cell_offset[level + 1]) ++level;
+      const std::size_t c = flat - cell_offset[level];
+      pairs_within(grids[level], c, test);
+      for (std::size_t coarse = 0; coarse < level; ++coarse) {
+        pairs_across(grids[level], c, grids[coarse], test);
       }
     }
   }
   candidate_count = tests;
+}
+
+std::size_t CellList::stored_cells() const { return used_levels ? cell_offset[used_levels] : 0; }
+
+bool CellList::hashed() const {
+  for (std::size_t g = 0; g < used_levels; ++g)
+    if (grids[g].hashed()) return true;
+  return false;
+}
+
+std::size_t CellList::bytes() const {
+  std::size_t total = cell_offset.capacity() * sizeof(std::size_t) +
+                      row_start.capacity() * sizeof(std::uint32_t) +
+                      row_fill.capacity() * sizeof(std::uint32_t);
+  for (const CellGrid& g : grids) total += g.bytes();
+  for (const auto& list : members) total += list.capacity() * sizeof(std::uint32_t);
+  for (const auto& buffer : thread_pairs) total += buffer.capacity() * sizeof(BodyPair);
+  return total;
 }
 
 // Counting sort by first body, then each row by second body: independent of which thread found

@@ -23,6 +23,10 @@ class CellTable {
   // Dense id of `c`, or kNoCell when no body lies in it.
   std::uint32_t find(const CellCoord& c) const;
   std::size_t size() const { return count; }
+  // Bytes held by the table (its capacity).
+  std::size_t bytes() const {
+    return keys.capacity() * sizeof(CellCoord) + ids.capacity() * sizeof(std::uint32_t);
+  }
 
  private:
   std::size_t slot_of(const CellCoord& c) const;

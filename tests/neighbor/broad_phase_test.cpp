@@ -162,28 +162,35 @@ TEST_CASE("candidate tests per body stay bounded as N grows at fixed density", "
 }
 
 TEST_CASE("output is identical with 1 and 2 threads", "[broad_phase][determinism]") {
-  // A compact scene (dense grid) and a sparse clustered one (hashed cells): both code paths.
-  const Scene compact = test::uniform_scene(20000, 35.0, 0.1, 1.0, 18);
+  // A compact scene (one dense grid), a sparse clustered one (hashed cells) and a 1:10
+  // polydisperse one (four size classes): every code path.
+  const Scene compact = test::uniform_scene(20000, 35.0, 0.5, 1.0, 18);
   const Scene sparse = test::clustered_scene(20000, 8, 200.0, 3.0, 0.1, 1.0, 18);
+  const Scene mixed = test::uniform_scene(20000, 35.0, 0.1, 1.0, 18);
   const int threads = omp_get_max_threads();
   CellList cells;
-  bool used_hash[2] = {true, false};
-  for (const Scene* s : {&compact, &sparse}) {
+  bool used_hash[3] = {true, false, false};
+  std::size_t levels[3] = {0, 0, 0};
+  const Scene* scenes[3] = {&compact, &sparse, &mixed};
+  for (int k = 0; k < 3; ++k) {
     std::vector<BodyPair> one;
     std::vector<BodyPair> two;
     omp_set_num_threads(1);
-    cells.build_pairs(s->centers, s->radii, 0.1, one);
+    cells.build_pairs(scenes[k]->centers, scenes[k]->radii, 0.1, one);
     const std::size_t tests_one = cells.candidate_tests();
     omp_set_num_threads(2);
-    cells.build_pairs(s->centers, s->radii, 0.1, two);
+    cells.build_pairs(scenes[k]->centers, scenes[k]->radii, 0.1, two);
     omp_set_num_threads(threads);
-    used_hash[s == &sparse] = cells.hashed();
+    used_hash[k] = cells.hashed();
+    levels[k] = cells.levels();
     REQUIRE(!one.empty());
     REQUIRE(one == two);
     REQUIRE(tests_one == cells.candidate_tests());
   }
   REQUIRE_FALSE(used_hash[0]);
+  REQUIRE(levels[0] == 1);
   REQUIRE(used_hash[1]);
+  REQUIRE(levels[2] == 3);
 }
 
 TEST_CASE("bad arguments and a blown-up state are reported", "[broad_phase]") {

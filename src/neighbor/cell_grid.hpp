@@ -1,0 +1,76 @@
+#pragma once
+// One grid of cubic cells holding the bodies of one size class, sorted by cell (CSR). A dense
+// grid over the bodies' bounding box when it has at most a few cells per body; else (sparse or
+// huge domains, a body far away) only occupied cells, in a hash table. Memory is O(bodies)
+// either way and is reused across calls.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "neighbor/cell_table.hpp"
+#include "polydem/math.hpp"
+
+namespace polydem {
+
+struct CellSphere {
+  double x, y, z, r;  // m, a body's centre and bounding radius, stored in cell order
+};
+
+class CellGrid {
+ public:
+  static constexpr int kForward = 13;  // half of the 26 neighbour cells: each cell pair once
+  static constexpr int kAround = 27;   // a cell and its 26 neighbours
+
+  // Sorts the bodies `members` (indices into centers and radii) into cells of side `cell` (m).
+  // Throws RunError on a non-finite centre.
+  void build(const std::vector<Vec3>& centers, const std::vector<double>& radii,
+             const std::vector<std::uint32_t>& members, double cell);
+
+  std::size_t cell_count() const { return cells; }
+  bool hashed() const { return !dense; }
+  // The bodies of cell c are spheres [begin(c), end(c)).
+  std::uint32_t begin(std::size_t c) const { return cell_start[c]; }
+  std::uint32_t end(std::size_t c) const { return cell_start[c + 1]; }
+  const CellSphere& sphere(std::uint32_t k) const { return spheres[k]; }
+  std::uint32_t body(std::uint32_t k) const { return sorted_id[k]; }
+  // The spheres of the forward neighbours of cell c, as ranges [begin[k], end[k]) of sphere
+  // indices: in a dense grid 5 (the next cell along x, then 4 rows of three cells with
+  // consecutive ids), one per stored cell when hashed. Returns the count.
+  int forward_ranges(std::size_t c, std::uint32_t (&begin)[kForward],
+                     std::uint32_t (&end)[kForward]) const;
+  // The spheres of the cell containing the centre of `s` (which need not belong to this grid)
+  // and of its 26 neighbours, as ranges [begin[k], end[k]) of sphere indices: one range per row
+  // of three cells along x in a dense grid, one per stored cell when hashed. Returns the count.
+  int ranges_around(const CellSphere& s, std::uint32_t (&begin)[kAround],
+                    std::uint32_t (&end)[kAround]) const;
+  // Bytes held by the grid's arrays (their capacity).
+  std::size_t bytes() const;
+
+ private:
+  CellCoord coord_of(double x, double y, double z) const;
+  std::uint32_t dense_id(const CellCoord& c) const;
+  void number_dense_cells(const std::vector<Vec3>& centers,
+                          const std::vector<std::uint32_t>& members);
+  void number_hashed_cells(const std::vector<Vec3>& centers,
+                           const std::vector<std::uint32_t>& members);
+  void sort_into_cells(const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                       const std::vector<std::uint32_t>& members);
+  void link_hashed_cells();
+
+  bool dense = true;
+  Vec3 lo = Vec3::Zero();  // m, lower corner of the members' bounding box
+  double side = 0.0;       // m, cell side
+  std::int64_t dims[3] = {0, 0, 0};  // cells per axis of the dense grid
+  std::size_t cells = 0;
+  std::vector<std::uint32_t> member_cell;  // cell id of each member
+  std::vector<std::uint32_t> cell_start;
+  std::vector<CellSphere> spheres;       // sorted by cell
+  std::vector<std::uint32_t> sorted_id;  // body index of spheres[k]
+  // Hashed mode only.
+  CellTable table;
+  std::vector<CellCoord> member_coord;  // cell of each member
+  std::vector<CellCoord> cell_coord;    // coordinates of each occupied cell
+  std::vector<std::uint32_t> forward;   // kForward neighbour cell ids per cell, or kNoCell
+};
+
+}  // namespace polydem
