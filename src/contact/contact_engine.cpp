@@ -31,6 +31,8 @@ struct BodyPartner {
     for (; v < v_end; v += 64) __builtin_prefetch(v);
     __builtin_prefetch(&bodies->velocity[j]);
     __builtin_prefetch(&bodies->angular_velocity[j]);
+    __builtin_prefetch(&bodies->velocity_end[j]);
+    __builtin_prefetch(&bodies->angular_velocity_end[j]);
   }
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
@@ -50,7 +52,8 @@ struct BodyPartner {
   const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
   Vec3 center(std::uint32_t j) const { return bodies->position[j]; }
   RigidMotion motion(std::uint32_t j) const {
-    return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j]};
+    return {bodies->velocity[j], bodies->angular_velocity[j], bodies->position[j], bodies->velocity_end[j],
+            bodies->angular_velocity_end[j]};
   }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
     const double mi = bodies->mass[i], mj = bodies->mass[j];
@@ -75,7 +78,7 @@ struct DriverPartner {
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
     const DriverState& d = (*drivers)[j];
-    return {d.velocity, d.omega, d.pivot};
+    return {d.velocity, d.omega, d.pivot, d.velocity, d.omega};
   }
   double m_eff(std::uint32_t i, std::uint32_t) const { return bodies->mass[i]; }
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
@@ -310,7 +313,8 @@ void ContactEngine::compute(Bodies& bodies, Drivers& drivers, double dt) {
   else
     pose(bodies);
   const BodyView view{posed_.data(), bodies.position.data(), radius_.data(), bodies.velocity.data(),
-                      bodies.angular_velocity.data(), bodies.mass.data()};
+                      bodies.angular_velocity.data(), bodies.velocity_end.data(), bodies.angular_velocity_end.data(),
+                      bodies.mass.data()};
   stats_.energy = EnergyParts{};
   stats_.contacts = 0;
   // Energies are summed block by block in order: repeatable whatever the thread count.
