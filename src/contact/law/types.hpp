@@ -29,9 +29,8 @@ constexpr double kNoGap = std::numeric_limits<double>::max();
 struct ContactHistory {
   Vec3 ft = Vec3::Zero();  // N, tangential spring force
   Vec3 mr = Vec3::Zero();  // N m, rolling spring moment
-  // The last step, for the energy budget only (the force does not read them):
+  // The last step, for the energy budget and the dashpot (its last force: second_order.hpp):
   double fd = 0.0;         // N, dashpot force (clamped normal force minus spring)
-                           // (also read by the dashpot: the last normal force, second_order.hpp)
   double gap = kNoGap;     // m (negative: overlap)
   double weight = 1.0;     // -, patch share
 };
