@@ -188,8 +188,17 @@ template <class Parts, class Partner>
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 lever = g.point - xi;  // m, from i's centre
-    ContactKinematics kin{g.normal, g.gap, v_centre + w_rel.cross(lever), v_centre_end + w_rel_end.cross(lever), w_rel, m_eff,
-                          Parts::rolling && law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t, r_star};
+    ContactKinematics kin{g.normal,
+                          g.gap,
+                          v_centre + w_rel.cross(lever),
+                          v_centre_end + w_rel_end.cross(lever),
+                          w_rel,
+                          m_eff,
+                          Parts::rolling && law.rolling ? lever.norm() : 0.0,
+                          scratch.weight[c],
+                          nu,
+                          nu_t,
+                          r_star};
     const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;
