@@ -13,6 +13,9 @@ struct Bodies {
   std::vector<Quat> orientation;       // principal frame -> world frame, unit
   std::vector<Vec3> velocity;          // m/s, world frame
   std::vector<Vec3> angular_velocity;  // rad/s, world frame (derived from angular_momentum)
+  // m/s, rad/s: the velocities predicted for the end of the step, v(n+1/2) + F(n) dt/(2m) (and
+  // the same for w with the world inertia), which the dashpots read (integrate.hpp).
+  std::vector<Vec3> velocity_end, angular_velocity_end;
 
   // Integration state.
   std::vector<Vec3> angular_momentum;  // kg m^2/s, principal (body) frame
@@ -35,6 +38,8 @@ struct Bodies {
     orientation.resize(n, Quat::Identity());
     velocity.resize(n, Vec3::Zero());
     angular_velocity.resize(n, Vec3::Zero());
+    velocity_end.resize(n, Vec3::Zero());
+    angular_velocity_end.resize(n, Vec3::Zero());
     angular_momentum.resize(n, Vec3::Zero());
     force.resize(n, Vec3::Zero());
     torque.resize(n, Vec3::Zero());

@@ -19,6 +19,8 @@ struct BodyPartner {
   const Vec3* position;          // m
   const Vec3* velocity;          // m/s
   const Vec3* angular_velocity;  // rad/s
+  const Vec3* velocity_end;      // m/s, predicted for the end of the step
+  const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;            // kg
   const double* displacement;  // m, per body since the lists were built
   const Vec3* world_vertices;
@@ -34,6 +36,8 @@ struct BodyPartner {
     for (; v < v_end; v += 64) __builtin_prefetch(v);
     __builtin_prefetch(&velocity[j]);
     __builtin_prefetch(&angular_velocity[j]);
+    __builtin_prefetch(&velocity_end[j]);
+    __builtin_prefetch(&angular_velocity_end[j]);
   }
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
@@ -52,7 +56,9 @@ struct BodyPartner {
   bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
   const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
   Vec3 center(std::uint32_t j) const { return position[j]; }
-  RigidMotion motion(std::uint32_t j) const { return {velocity[j], angular_velocity[j], position[j]}; }
+  RigidMotion motion(std::uint32_t j) const {
+    return {velocity[j], angular_velocity[j], position[j], velocity_end[j], angular_velocity_end[j]};
+  }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
     const double mi = mass[i], mj = mass[j];
     return mi * mj / (mi + mj);
@@ -76,7 +82,7 @@ struct DriverPartner {
   Vec3 center(std::uint32_t j) const { return drivers->center(j); }
   RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
     const DriverState& d = (*drivers)[j];
-    return {d.velocity, d.omega, d.pivot};
+    return {d.velocity, d.omega, d.pivot, d.velocity, d.omega};
   }
   double m_eff(std::uint32_t i, std::uint32_t) const { return mass[i]; }
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
@@ -334,7 +340,8 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
   else
     pose(bodies);
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
-                      bodies.angular_velocity->data(), bodies.mass->data()};
+                      bodies.angular_velocity->data(), bodies.velocity_end->data(),
+                      bodies.angular_velocity_end->data(), bodies.mass->data()};
   stats_.energy = EnergyParts{};
   stats_.contacts = 0;
   // Energies are summed block by block in order: repeatable whatever the thread count.
@@ -345,8 +352,9 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
   } else {
-    const BodyPartner partner{posed_.data(),         view.position,         view.velocity,
-                              view.angular_velocity, view.mass,             trigger_.displacement().data(),
+    const BodyPartner partner{posed_.data(),          view.position,         view.velocity,
+                              view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
+                              view.mass,              trigger_.displacement().data(),
                               world_vertices_.data(), vertex_offset_.data()};
     with_law(settings_.particle, [&](auto parts) {
       using Parts = decltype(parts);

@@ -45,6 +45,7 @@
 #include "contact/law/normal_hertz.hpp"
 #include "contact/law/normal_linear.hpp"
 #include "contact/law/rolling.hpp"
+#include "contact/law/second_order.hpp"
 #include "contact/law/tangential_dashpot.hpp"
 #include "contact/law/tangential_spring.hpp"
 #include "contact/law/types.hpp"
@@ -119,6 +120,46 @@ EnergyParts released_energy(const LawParams& law, const ContactHistory& h, doubl
   return e;
 }
 
+namespace law_detail {
+// N, the compressive normal force fp = max(spring - nu_w vn_e, 0) at n+1, vn_e the dashpot's
+// velocity (second_order.hpp), with the linear law's dashpot push where the overlap starts; and
+// `push`, the spring's part of that push and the push where the clamp lets go or the overlap
+// ends. The push is a correction of the spring's impulse: kept out of the dashpot's share (the
+// ledger, the last force in h.fd), so an elastic contact dissipates nothing and a release is
+// seen once.
+struct NormalForce {
+  double fp = 0.0, push = 0.0;  // N
+};
+template <class Normal>
+[[gnu::always_inline]] inline NormalForce normal_force(const LawParams& law, const ContactKinematics& k,
+                                                       const ContactHistory& h, double dt, double vn, double spring) {
+  const double overlap = std::max(-k.dn, 0.0), overlap_last = std::max(-h.gap, 0.0);  // m
+  const double nu_pair = k.nu >= 0.0 ? k.nu : Normal::pair_damping(law, k.m_eff, k.r_star);  // N s/m
+  const double c = Normal::damping(nu_pair, overlap);  // N s/m, per unit weight
+  const double f_last = h.fd + Normal::spring(law, k.r_star, h.weight, overlap_last);  // N, fp at n
+  const double f_last_unit = h.weight > 0.0 ? f_last / h.weight : 0.0;  // N, per unit weight
+  const double vn_e = dashpot_velocity(k.v_end.dot(k.normal), Normal::spring(law, k.r_star, 1.0, overlap), c,
+                                       f_last_unit, k.m_eff, 0.5 * dt);  // m/s
+  const double nu_w = k.weight * c;  // N s/m
+  NormalForce out;
+  if (overlap > 0.0) out.fp = normal_damped(spring, nu_w, vn_e);
+  if constexpr (!Normal::kCurved) {
+    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
+      const OnsetForce onset = onset_force(overlap, vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
+      out.fp += onset.dashpot;
+      // The spring's push pairs with the one where the clamp lets go, inside the overlap: an
+      // undamped contact ends at x = 0, where the kernels no longer see it (band 0), so it
+      // takes neither (pushing on one side only would add k v^2 dt^2/8 per contact).
+      if (c > 0.0) out.push = onset.spring;
+    } else if (f_last > 0.0) {
+      const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;  // N, unclamped, signed
+      if (u <= 0.0) out.push = release_force(f_last, u, dt);
+    }
+  }
+  return out;
+}
+}  // namespace law_detail
+
 // The parts in order: normal with damping, cohesion, tangential spring (and dashpot), rolling.
 template <class Parts>
 [[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k,
@@ -129,27 +170,29 @@ template <class Parts>
   const double w = k.weight;
   ContactForce out{Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const double reach = cohesion ? law.dncut : 0.0;  // m, beyond it the pair does not interact
+  const double vn = k.v_rel.dot(k.normal);          // m/s, half-step, > 0 when separating
   if (k.dn >= reach) {
-    // Out of reach: the springs let go and their energy is lost (the caller resets history anyway).
+    // Out of reach: the springs let go and their energy is lost (the caller resets history
+    // anyway); a normal force that fell to zero within the step leaves its last push.
     const EnergyParts released = released_energy<Parts>(law, h, k.r_star);
     out.dissipated = released.net;
     out.sliding = released.sliding;
     out.rolling = released.rolling;
+    if (!Normal::kCurved && h.gap < 0.0) {
+      out.fn = law_detail::normal_force<Normal>(law, k, h, dt, vn, 0.0).push;
+      out.force = out.fn * k.normal;
+    }
     h = ContactHistory{};
     return out;
   }
   const double overlap = std::max(-k.dn, 0.0);  // m
   const double spring = Normal::spring(law, k.r_star, w, overlap);  // N
-  const double vn = k.v_rel.dot(k.normal);       // m/s, > 0 when separating
-  double fp = 0.0;  // N, the compressive force the caps scale with
-  if (overlap > 0.0) {
-    const double nu_pair = k.nu >= 0.0 ? k.nu : Normal::pair_damping(law, k.m_eff, k.r_star);  // N s/m
-    fp = normal_damped(spring, w * Normal::damping(nu_pair, overlap), vn);
-  }
-  out.fn = fp;
   // A contact that starts: one step back it was a stroke vn dt away, with no dashpot force.
   if (h.gap == kNoGap) h = ContactHistory{h.ft, h.mr, 0.0, k.dn - vn * dt, w};
-  const double fd = fp - spring;  // N, the dashpot's share after the clamp
+  const law_detail::NormalForce normal = law_detail::normal_force<Normal>(law, k, h, dt, vn, spring);
+  const double fp = normal.fp + normal.push;  // N, the compressive force the caps scale with
+  out.fn = fp;
+  const double fd = normal.fp - spring;  // N, the dashpot's share after the clamp
   out.dissipated = 0.5 * (h.fd + fd) * (h.gap - k.dn);  // trapezoid, as the kicks apply it
   const double overlap_last = std::max(-h.gap, 0.0);    // m
   out.patch = Normal::patch(law, k.r_star, overlap_last, overlap, h.weight, w);
@@ -165,7 +208,8 @@ template <class Parts>
     double ft_max = law.mu * fp;              // N
     if (tangential_damping) {
       const double nu_t_w = w * (k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff));  // N s/m
-      damper = tangential_dashpot(vt, nu_t_w, ft_max, out.dissipated, dt);
+      const Vec3 vt_end = k.v_end - k.v_end.dot(k.normal) * k.normal;  // m/s, what the dashpot reads
+      damper = tangential_dashpot(vt_end, vt, nu_t_w, ft_max, out.dissipated, dt);
     }
     out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt);
     out.dissipated += out.sliding;

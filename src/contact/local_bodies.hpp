@@ -20,6 +20,8 @@ struct LocalBodies {
   const std::vector<Quat>* orientation;
   const std::vector<Vec3>* velocity;          // m/s
   const std::vector<Vec3>* angular_velocity;  // rad/s
+  const std::vector<Vec3>* velocity_end;      // m/s, predicted for the end of the step (dashpots)
+  const std::vector<Vec3>* angular_velocity_end;  // rad/s, likewise
   const std::vector<int>* shape;
   const std::vector<double>* scale;
   const std::vector<double>* mass;            // kg
@@ -36,8 +38,9 @@ struct LocalBodies {
 
 // One process: every body of `bodies` owned, in its own order (index = global id).
 inline LocalBodies all_owned(Bodies& bodies) {
-  return {&bodies.position, &bodies.orientation, &bodies.velocity, &bodies.angular_velocity, &bodies.shape,
-          &bodies.scale,    &bodies.mass,        nullptr,          &bodies.force,    &bodies.torque};
+  return {&bodies.position,     &bodies.orientation,          &bodies.velocity, &bodies.angular_velocity,
+          &bodies.velocity_end, &bodies.angular_velocity_end, &bodies.shape,    &bodies.scale,
+          &bodies.mass,         nullptr,                      &bodies.force,    &bodies.torque};
 }
 
 }  // namespace polydem

@@ -18,6 +18,8 @@ struct BodyView {
   const double* radius;     // m, scaled Minkowski radii
   const Vec3* velocity;     // m/s
   const Vec3* angular_velocity;  // rad/s
+  const Vec3* velocity_end;       // m/s, predicted for the end of the step (Bodies::velocity_end)
+  const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;       // kg
 };
 
@@ -114,11 +116,14 @@ inline void drop_shadowed(const PairList& list, double radii, bool a_convex, boo
 }
 
 // The rigid motion of one side of a pair, read once per pair: a point p moves at v + w x (p - pivot).
+// `_end`: the same predicted for the end of the step (the dashpots read them; a driver's are its own).
 struct RigidMotion {
   Vec3 velocity;          // m/s, of the pivot
   Vec3 angular_velocity;  // rad/s
   Vec3 pivot;             // m
+  Vec3 velocity_end, angular_velocity_end;  // m/s, rad/s
   Vec3 at(const Vec3& p) const { return velocity + angular_velocity.cross(p - pivot); }
+  Vec3 at_end(const Vec3& p) const { return velocity_end + angular_velocity_end.cross(p - pivot); }
 };
 
 // Partner must provide:
@@ -175,14 +180,25 @@ template <class Parts, class Partner>
   const Vec3 w_rel = bodies.angular_velocity[p.i] - mj.angular_velocity;  // rad/s
   // m/s, i's velocity less j's at i's centre: at a lever r from it they differ by v_centre + w_rel x r.
   const Vec3 v_centre = bodies.velocity[p.i] - mj.at(xi);
+  const Vec3 w_rel_end = bodies.angular_velocity_end[p.i] - mj.angular_velocity_end;  // rad/s
+  const Vec3 v_centre_end = bodies.velocity_end[p.i] - mj.at_end(xi);  // m/s
   const double m_eff = partner.m_eff(p.i, p.j);
   const double nu = Normal::pair_damping(law, m_eff, r_star), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 lever = g.point - xi;  // m, from i's centre
-    ContactKinematics kin{g.normal, g.gap, v_centre + w_rel.cross(lever), w_rel, m_eff,
-                          Parts::rolling && law.rolling ? lever.norm() : 0.0, scratch.weight[c], nu, nu_t, r_star};
+    ContactKinematics kin{g.normal,
+                          g.gap,
+                          v_centre + w_rel.cross(lever),
+                          v_centre_end + w_rel_end.cross(lever),
+                          w_rel,
+                          m_eff,
+                          Parts::rolling && law.rolling ? lever.norm() : 0.0,
+                          scratch.weight[c],
+                          nu,
+                          nu_t,
+                          r_star};
     const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;

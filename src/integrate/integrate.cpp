@@ -86,6 +86,20 @@ void drift(Bodies& b, double dt) {
   });
 }
 
+void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
+  parallel_for(groups.isotropic.size(), [&](std::size_t k) {
+    const std::size_t i = groups.isotropic[k];
+    b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
+  });
+  parallel_for(groups.asymmetric.size(), [&](std::size_t k) {
+    const std::size_t i = groups.asymmetric[k];
+    b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
+    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
+  });
+}
+
 void update_angular_velocity(Bodies& b) {
   parallel_for(b.size(), [&b](std::size_t i) {
     b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);

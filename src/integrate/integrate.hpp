@@ -34,6 +34,12 @@ void drift(Bodies& b, double dt, const RotorGroups& groups);
 // Same, choosing each body's rotation path on the fly (for callers without RotorGroups).
 void drift(Bodies& b, double dt);
 
+// After the drift, before the new forces: velocity_end = v + F h/m and angular_velocity_end =
+// w + I_world^-1 T h with the last step's force and torque, h = dt/2: the end-of-step
+// velocities to O(dt^2), for the dashpots (a dashpot on the half-step velocity is first order
+// in dt). h = 0 copies the velocities (the first force evaluation, at full-step velocities).
+void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups);
+
 // angular_velocity from angular_momentum and orientation (after the caller sets them).
 void update_angular_velocity(Bodies& b);
 

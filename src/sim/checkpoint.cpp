@@ -18,10 +18,11 @@ namespace {
 // dissipation by mechanism.
 constexpr char kMagic[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '6'};
 constexpr char kMagic05[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '5'};
-// Older formats still resume, with what only the energy ledger reads missing (forces and
-// motion unchanged): 04 has no ledger shares (all its dissipation counts as dashpot); 03 has
-// neither those nor the last dashpot force, gap and weight per contact (its contacts' ledgers
-// restart as new contacts). 03-05 have no header and no checksum.
+// Older formats still resume: 04 has no ledger shares (all its dissipation counts as dashpot;
+// forces and motion unchanged); 03 has neither those nor the last dashpot force, gap and
+// weight per contact, which the dashpot reads (contact/law/second_order.hpp): its contacts
+// restart as new ones, and the run goes on near the uninterrupted one, not on its bits.
+// 03-05 have no header and no checksum.
 constexpr char kMagic04[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '4'};
 constexpr char kMagic03[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '3'};
 // Bytes of EnergyLedger up to its format-05 shares: what formats 03 and 04 hold.

@@ -23,12 +23,16 @@ void LocalStore::refresh(const Bodies& all) {
   orientation.resize(n);
   velocity.resize(n);
   angular_velocity.resize(n);
+  velocity_end.resize(n);
+  angular_velocity_end.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t g = global_id[k];
     position[k] = all.position[g];
     orientation[k] = all.orientation[g];
     velocity[k] = all.velocity[g];
     angular_velocity[k] = all.angular_velocity[g];
+    velocity_end[k] = all.velocity_end[g];
+    angular_velocity_end[k] = all.angular_velocity_end[g];
   }
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());

@@ -16,6 +16,7 @@ struct LocalStore {
   std::vector<std::uint32_t> global_id;  // increasing
   std::vector<std::uint8_t> ghost;       // 1: a copy of a body owned elsewhere
   std::vector<Vec3> position, velocity, angular_velocity;  // m, m/s, rad/s
+  std::vector<Vec3> velocity_end, angular_velocity_end;   // m/s, rad/s, predicted for the step's end
   std::vector<Quat> orientation;
   std::vector<int> shape;
   std::vector<double> scale, mass;  // -, kg
@@ -26,7 +27,8 @@ struct LocalStore {
   // Copies what changes every step (pose and velocities) from the global arrays, and zeroes the forces.
   void refresh(const Bodies& all);
   LocalBodies view() {
-    return {&position, &orientation, &velocity, &angular_velocity, &shape, &scale, &mass, &ghost, &force, &torque};
+    return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
+            &shape,    &scale,       &mass,     &ghost,            &force,        &torque};
   }
 };
 

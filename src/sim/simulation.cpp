@@ -65,6 +65,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   external_forces();
   ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
+  predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0
   if (contacts) engine_->compute(all_owned(bodies), drivers, dt_);
 }
 
@@ -89,6 +90,7 @@ void Simulation::driver_work_half() {
 void Simulation::step() {
   kick(bodies, 0.5 * dt_, rotors_);
   drift(bodies, dt_, rotors_);
+  predict_end_velocities(bodies, 0.5 * dt_, rotors_);  // the last step's force: before it is cleared
   drivers.advance(time(), dt_);
   external_forces();
   if (scene_.forces.contact.present) {

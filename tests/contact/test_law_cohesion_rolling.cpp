@@ -24,7 +24,7 @@ LawParams cohesive_law() {
 
 ContactForce at_rest(const LawParams& law, double dn) {
   ContactHistory h;
-  return contact_force(law, {Vec3::UnitZ(), dn, Vec3::Zero(), Vec3::Zero(), kMass, kRadius, 1.0}, h, 1e-5);
+  return contact_force(law, {Vec3::UnitZ(), dn, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), kMass, kRadius, 1.0}, h, 1e-5);
 }
 
 // Sphere on the wall z = 0 pulled up by a force ramped to `pull` over 0.5 s, then held 0.5 s.
@@ -37,7 +37,8 @@ double pulled_gap(const LawParams& law, double pull) {
     v += 0.5 * dt * a;
     z += dt * v;
     const double dn = z - kRadius;
-    const ContactKinematics k{Vec3::UnitZ(), dn, Vec3(0, 0, v), Vec3::Zero(), kMass, kRadius, 1.0};
+    const ContactKinematics k{Vec3::UnitZ(), dn, Vec3(0, 0, v), Vec3(0, 0, v + 0.5 * dt * a), Vec3::Zero(), kMass,
+                              kRadius, 1.0};
     const ContactForce f = contact_force(law, k, h, dt);
     a = (f.force.z() + pull * std::min(step * dt / 0.5, 1.0)) / kMass;
     v += 0.5 * dt * a;
@@ -83,7 +84,7 @@ TEST_CASE("rolling: the moment opposes w_rel and is capped at mur * lever * fn",
   REQUIRE(law.rolling);
   const Vec3 w_rel(0.0, 2.0, 0.5);  // rad/s
   const double dn = -1e-4, dt = 1e-4;
-  const ContactKinematics k{Vec3::UnitZ(), dn, Vec3::Zero(), w_rel, kMass, kRadius, 1.0};
+  const ContactKinematics k{Vec3::UnitZ(), dn, Vec3::Zero(), Vec3::Zero(), w_rel, kMass, kRadius, 1.0};
   ContactHistory h;
   ContactForce f = contact_force(law, k, h, dt);
   CHECK((f.moment + law.kr * w_rel * dt).norm() < 1e-18);  // first step: -kr w_rel dt
@@ -118,8 +119,9 @@ TEST_CASE("rolling: a sphere stops after v0^2/(10/7 mur g) with mur > 0, rolls o
       v += 0.5 * dt * a;
       w += 0.5 * dt * alpha;
       x += dt * v;
-      const Vec3 arm = -kRadius * Vec3::UnitZ(), vp = v + 0.5 * dt * a, wp = w + 0.5 * dt * alpha;
-      const ContactKinematics k{Vec3::UnitZ(), x.z() - kRadius, vp + wp.cross(arm), wp, kMass, kRadius, 1.0};
+      // As the engine: the half-step velocities for the springs, the predicted end-of-step ones for the dashpot.
+      const Vec3 arm = -kRadius * Vec3::UnitZ(), v_end = v + 0.5 * dt * a + (w + 0.5 * dt * alpha).cross(arm);
+      const ContactKinematics k{Vec3::UnitZ(), x.z() - kRadius, v + w.cross(arm), v_end, w, kMass, kRadius, 1.0};
       const ContactForce f = contact_force(law, k, h, dt);
       a = f.force / kMass - kG * Vec3::UnitZ();
       alpha = (arm.cross(f.force) + f.moment) / inertia;
@@ -155,7 +157,7 @@ TEST_CASE("patch weights: n sub-contacts of weight 1/n act as one contact of wei
     const double t = s * 1e-5;
     const double dn = -1e-4 * std::sin(2e3 * t + 0.1);  // m, in and out of the overlap
     const Vec3 v_rel(0.3 * std::cos(3e3 * t), 0.2, 0.2 * std::cos(2e3 * t));
-    ContactKinematics k{Vec3::UnitZ(), dn, v_rel, Vec3(1.0, -2.0, 0.5), kMass, kRadius, 1.0};
+    ContactKinematics k{Vec3::UnitZ(), dn, v_rel, v_rel, Vec3(1.0, -2.0, 0.5), kMass, kRadius, 1.0};
     const ContactForce whole = contact_force(law, k, one, 1e-5);
     k.weight = 1.0 / n;
     ContactForce sum{Vec3::Zero(), Vec3::Zero(), 0.0, 0.0, 0.0};

@@ -26,8 +26,9 @@ ContactParams material(double young, double poisson, double en = 1.0, double mu 
   return p;
 }
 
-ContactKinematics at_rest(double dn, Vec3 v = Vec3::Zero()) {
-  ContactKinematics k{Vec3::UnitZ(), dn, v, Vec3::Zero(), kMass, kRStar, 1.0};
+// v: the half-step velocity (springs), v_end: the predicted end-of-step one (dashpot).
+ContactKinematics at_rest(double dn, Vec3 v = Vec3::Zero(), Vec3 v_end = Vec3::Zero()) {
+  ContactKinematics k{Vec3::UnitZ(), dn, v, v_end, Vec3::Zero(), kMass, kRStar, 1.0};
   k.r_star = kRStar;
   return k;
 }
@@ -36,8 +37,8 @@ struct Impact {
   double restitution, duration, max_overlap;  // -, s, m
 };
 
-// A sphere (mass kMass) hits a wall at v0 with the kernel and velocity Verlet, the dashpot on
-// the predicted full-step velocity as in test_law_impact.cpp.
+// A sphere (mass kMass) hits a wall at v0 with the kernel and velocity Verlet, fed as the
+// engine feeds it (test_law_impact.cpp).
 Impact integrate(const LawParams& law, double v0, double dt) {
   double z = 0.5 * v0 * dt, v = -v0, a = 0.0, t = 0.0, t_touch = -1.0;
   ContactHistory h;
@@ -46,7 +47,7 @@ Impact integrate(const LawParams& law, double v0, double dt) {
     v += 0.5 * a * dt;
     z += v * dt;
     t += dt;
-    const ContactForce f = contact_force(law, at_rest(z, Vec3(0, 0, v + 0.5 * a * dt)), h, dt);
+    const ContactForce f = contact_force(law, at_rest(z, Vec3(0, 0, v), Vec3(0, 0, v + 0.5 * a * dt)), h, dt);
     a = f.force.z() / kMass;
     v += 0.5 * a * dt;
     if (z < 0.0 && t_touch < 0.0) t_touch = t;

@@ -39,9 +39,9 @@ Outgoing oblique_impact(const LawParams& law, double vt, double vn, double dt) {
     if (dn < 0.0) touched = true;
     if (touched && dn > 0.0) break;
     const Vec3 arm = -kRadius * Vec3::UnitZ();  // m, centre to contact point
-    // Dashpot and spring see the predicted full-step velocities (see test_law_impact.cpp).
-    const Vec3 v_pred = v + 0.5 * dt * a, w_pred = w + 0.5 * dt * alpha;
-    const ContactKinematics k{Vec3::UnitZ(), dn, v_pred + w_pred.cross(arm), w_pred, kMass, kRadius, 1.0};
+    // As the engine: springs see the half-step velocities, the dashpot the predicted end-of-step ones.
+    const Vec3 v_end = v + 0.5 * dt * a, w_end = w + 0.5 * dt * alpha;
+    const ContactKinematics k{Vec3::UnitZ(), dn, v + w.cross(arm), v_end + w_end.cross(arm), w, kMass, kRadius, 1.0};
     const ContactForce f = contact_force(law, k, h, dt);
     a = f.force / kMass;
     alpha = (arm.cross(f.force) + f.moment) / kInertia;

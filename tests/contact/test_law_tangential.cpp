@@ -23,7 +23,7 @@ LawParams friction_law() {
 }
 
 ContactKinematics sliding_on_z(const Vec3& v_rel) {
-  return {Vec3::UnitZ(), -kOverlap, v_rel, Vec3::Zero(), 0.01, 0.01, 1.0};
+  return {Vec3::UnitZ(), -kOverlap, v_rel, v_rel, Vec3::Zero(), 0.01, 0.01, 1.0};
 }
 
 }  // namespace
@@ -65,7 +65,7 @@ TEST_CASE("tangential spring: rotating into a tilted tangent plane keeps its len
   h.ft = Vec3(0.2, 0.3, 0.0);  // N, in the plane of n = z
   const double length = h.ft.norm();
   const Vec3 tilted = Eigen::AngleAxisd(0.5, Vec3(1, 1, 0).normalized()) * Vec3::UnitZ();
-  const ContactKinematics k{tilted, -kOverlap, Vec3::Zero(), Vec3::Zero(), 0.01, 0.01, 1.0};
+  const ContactKinematics k{tilted, -kOverlap, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), 0.01, 0.01, 1.0};
   const ContactForce f = contact_force(law, k, h, kDt);
   CHECK(h.ft.norm() == Approx(length).epsilon(1e-14));
   CHECK(std::abs(h.ft.dot(tilted)) < 1e-14);
@@ -77,7 +77,7 @@ TEST_CASE("out of reach: no force, springs released and their energy counted as 
   const LawParams law = friction_law();
   ContactHistory h;
   h.ft = Vec3(0.1, 0.0, 0.0);
-  const ContactKinematics apart{Vec3::UnitZ(), 1e-6, Vec3(1, 0, 0), Vec3::Zero(), 0.01, 0.01, 1.0};
+  const ContactKinematics apart{Vec3::UnitZ(), 1e-6, Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3::Zero(), 0.01, 0.01, 1.0};
   const ContactForce f = contact_force(law, apart, h, kDt);
   CHECK(f.force.norm() == 0.0);
   CHECK(f.fn == 0.0);

@@ -19,8 +19,10 @@ inline double normal_damped(double spring, double nu_w, double vn) { return std:
 // s, the velocity Verlet stability limit of the contact oscillator w0 = sqrt(kn/m_eff):
 // dt < 2/w0 (sqrt(1 + a^2) - a) with a dashpot of ratio a evaluated from the half-step
 // velocity (Belytschko, Liu & Moran, Nonlinear Finite Elements, 2000: central difference
-// with damping; checked in tests/contact/test_law_energy.cpp). For a = 0 this is
-// 2 sqrt(m_eff/kn) = T/pi, T = 2 pi sqrt(m_eff/kn) the undamped period. Use a fraction of it.
+// with damping). For a = 0 this is 2 sqrt(m_eff/kn) = T/pi, T = 2 pi sqrt(m_eff/kn) the
+// undamped period. The kernel's dashpot reads the end-of-step velocity with its own force
+// implicit (second_order.hpp), stable up to T/pi for any damping (test_law_energy.cpp): this
+// bound is below that and stays the step policy's reference. Use a fraction of it.
 double critical_time_step(double kn, double m_eff, double alpha_n = 0.0);
 
 }  // namespace polydem

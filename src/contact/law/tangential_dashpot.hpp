@@ -16,12 +16,13 @@ inline double pair_tangential_damping(const LawParams& law, double m_eff) {
 
 // N. Spring plus dashpot stay within the Coulomb cap: the dashpot takes its share first (at
 // most all of it) and the spring is capped at what is left, so steady sliding still carries
-// exactly mu fp. Adds the dashpot's work nu_t_w |vt|^2 dt (J, the half-step velocity on the
-// force it makes; over a contact's life it differs from the kicks' trapezoid by
-// nu_t dt (|vt_first|^2 - |vt_after|^2)/4, as no history keeps the last step's dashpot
-// force) to `dissipated` and leaves the spring's cap in `ft_max`.
-inline Vec3 tangential_dashpot(const Vec3& vt, double nu_t_w, double& ft_max, double& dissipated, double dt) {
-  Vec3 damper = -nu_t_w * vt;
+// exactly mu fp. The force reads vt_end, the tangential velocity predicted for the end of the
+// step (second_order.hpp); its work over the step's displacement vt dt (vt at the half step;
+// over a contact's life it differs from the kicks' trapezoid by a boundary term, as no history
+// keeps the last step's dashpot force) goes to `dissipated`; the spring's cap is left in `ft_max`.
+inline Vec3 tangential_dashpot(const Vec3& vt_end, const Vec3& vt, double nu_t_w, double& ft_max, double& dissipated,
+                               double dt) {
+  Vec3 damper = -nu_t_w * vt_end;
   const double size = damper.norm();  // N
   if (size > ft_max) damper *= ft_max / size;
   ft_max -= std::min(size, ft_max);

@@ -29,7 +29,7 @@ constexpr double kNoGap = std::numeric_limits<double>::max();
 struct ContactHistory {
   Vec3 ft = Vec3::Zero();  // N, tangential spring force
   Vec3 mr = Vec3::Zero();  // N m, rolling spring moment
-  // The last step, for the energy budget only (the force does not read them):
+  // The last step, for the energy budget and the dashpot (its last force: second_order.hpp):
   double fd = 0.0;         // N, dashpot force (clamped normal force minus spring)
   double gap = kNoGap;     // m (negative: overlap)
   double weight = 1.0;     // -, patch share
@@ -38,7 +38,8 @@ struct ContactHistory {
 struct ContactKinematics {
   Vec3 normal;    // unit, from j to i
   double dn;      // m, gap (negative: overlap)
-  Vec3 v_rel;     // m/s, velocity of i's contact point minus j's
+  Vec3 v_rel;     // m/s, velocity of i's contact point minus j's, at the half step (the springs' motion)
+  Vec3 v_end;     // m/s, the same from the velocities predicted for the end of the step (the dashpots)
   Vec3 w_rel;     // rad/s, w_i - w_j
   double m_eff;   // kg, m_i m_j/(m_i + m_j) (a driver: m_i)
   double lever;   // m, from i's centre to the contact point (rolling cap)

@@ -1,0 +1,61 @@
+// The accuracy slice of the work-precision sweep (accuracy_cases.hpp, tools/bench/accuracy) in
+// CI: each contact case at dt = 0.1 and 0.3 x the critical step `polydem check` prints (0.1 is
+// `dt: auto`), and the observed order of the impacts between 0.1 and 0.05, against bounds set
+// from the measured errors (tools/bench/accuracy/README.md) with a margin. The contact dynamics
+// are second order in dt (contact/law/second_order.hpp): with the dashpot on the half-step
+// velocity the sphere-wall restitution was 3.0% off at 0.1 and 13.5% at 0.3, order 1.1 (75d955f).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include "accuracy_cases.hpp"
+
+using namespace polydem;
+using namespace polydem::validation;
+using namespace polydem::validation::accuracy;
+
+namespace {
+
+// -, log2 of the error's ratio when the step is halved from 0.1 to 0.05 x critical.
+template <class Run>
+double observed_order(const Run& run) {
+  return std::log2(run(0.1) / run(0.05));
+}
+
+}  // namespace
+
+TEST_CASE("accuracy: sphere-wall restitution at 0.1 and 0.3 x critical, second order, en 0.1 to 0.9", "[validation][second_order]") {
+  for (double en : {0.1, 0.5, 0.9}) {
+    auto run = [en](double fraction) { return binary_impact(fraction, en); };
+    const double at_auto = run(0.1), at_03 = run(0.3), order = observed_order(run);
+    std::printf("sphere-wall en %.1f: error %.2e at 0.1, %.2e at 0.3, order %.2f\n", en, at_auto, at_03, order);
+    INFO("en = " << en);
+    CHECK(at_auto <= 2e-3);
+    CHECK(at_03 <= 0.05);  // the goal of 1% is not reached yet
+    CHECK(order >= 1.8);
+  }
+}
+
+TEST_CASE("accuracy: sphere-sphere restitution, masses 1 : 2.74, at 0.1 and 0.3 x critical", "[validation][second_order]") {
+  const double at_auto = sphere_pair_impact(0.1), at_03 = sphere_pair_impact(0.3);
+  const double order = observed_order(sphere_pair_impact);
+  std::printf("sphere-sphere: error %.2e at 0.1, %.2e at 0.3, order %.2f\n", at_auto, at_03, order);
+  CHECK(at_auto <= 2e-3);
+  CHECK(at_03 <= 0.05);
+  CHECK(order >= 1.8);
+}
+
+TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical", "[validation][second_order]") {
+  const double at_auto = oblique_impact(0.1), at_03 = oblique_impact(0.3);
+  std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
+  CHECK(at_auto <= 2e-3);
+  CHECK(at_03 <= 0.01);
+}
+
+TEST_CASE("accuracy: cube corner landing against the rigid-body impulse at 0.1 and 0.3 x critical", "[validation][second_order]") {
+  const double at_auto = cube_landing(0.1), at_03 = cube_landing(0.3);
+  std::printf("cube corner: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
+  CHECK(at_auto <= 3e-3);
+  CHECK(at_03 <= 0.015);
+}
