@@ -1,7 +1,7 @@
 #pragma once
 // Chooses how many of the allowed threads the step uses, by measuring. Threads meet at every
 // parallel loop of a step; on a shared machine a thread that loses its core holds the other
-// at each meeting, and 2 threads ran 5-17 times slower than 1 here. Results do not depend on
+// at each meeting, and 2 threads ran 5-40 times slower than 1 here. Results do not depend on
 // the thread count, so the governor changes no bit, only the speed.
 #include <cstdint>
 #include <vector>
@@ -13,12 +13,11 @@ class ThreadGovernor {
   // max_threads 1: nothing to choose, every call returns 1.
   explicit ThreadGovernor(int max_threads);
 
-  // Called after each step with the wall clock (s, any origin); returns the thread count for
-  // the next step.
+  // Called after each step with the wall time spent stepping so far (s; output apart);
+  // returns the thread count for the next step.
   int after_step(double now);
 
   int threads() const { return current_; }
-  int max_threads() const { return max_; }
   // Steps run at each count, index = threads (for the run's summary line).
   const std::vector<std::int64_t>& steps_at() const { return steps_at_; }
 
