@@ -9,22 +9,14 @@
 #include <stdexcept>
 
 #include "polydem/error.hpp"
+#include "brute_force_check.hpp"
 #include "scenes.hpp"
 
 namespace polydem {
 namespace {
 
 using test::Scene;
-
-void require_same_as_brute_force(const Scene& s, double skin) {
-  std::vector<BodyPair> fast;
-  std::vector<BodyPair> slow;
-  CellList cells;
-  cells.build_pairs(s.centers, s.radii, skin, fast);
-  brute_force_pairs(s.centers, s.radii, skin, slow);
-  REQUIRE(fast.size() == slow.size());
-  REQUIRE(fast == slow);
-}
+using test::require_same_as_brute_force;
 
 TEST_CASE("cell list equals brute force on uniform polydisperse scenes", "[broad_phase]") {
   // Radius ratio 1:10, packing fraction about 0.3 of the mean sphere volume.

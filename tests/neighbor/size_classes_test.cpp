@@ -4,22 +4,14 @@
 #include <cmath>
 
 #include "neighbor/broad_phase.hpp"
+#include "brute_force_check.hpp"
 #include "scenes.hpp"
 
 namespace polydem {
 namespace {
 
 using test::Scene;
-
-void require_same_as_brute_force(const Scene& s, double skin) {
-  std::vector<BodyPair> fast;
-  std::vector<BodyPair> slow;
-  CellList cells;
-  cells.build_pairs(s.centers, s.radii, skin, fast);
-  brute_force_pairs(s.centers, s.radii, skin, slow);
-  REQUIRE(fast.size() == slow.size());
-  REQUIRE(fast == slow);
-}
+using test::require_same_as_brute_force;
 
 // `count` bodies of one radius, uniform in a cube of side `side`, appended to s.
 void add_uniform(Scene& s, std::size_t count, double side, double radius, std::uint64_t seed) {
