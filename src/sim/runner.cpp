@@ -340,8 +340,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
   };
   const int max_threads = omp_get_max_threads();
-  ThreadGovernor governor(o.adapt_threads ? max_threads : 1);
-  int threads = o.adapt_threads ? governor.threads() : max_threads;
+  ThreadGovernor governor(max_threads, o.adapt_threads);
+  int threads = governor.threads();
   omp_set_num_threads(threads);
   double stepping = 0.0;  // s of wall time inside the steps: what the governor compares, output apart
   while (sim.step_index() < last_step) {
@@ -354,7 +354,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       if (bad >= 0) fail_non_finite(sim, body_name(sim, bad), last_good, good_step, o.out_dir, first_check);
       throw;
     }
-    if (o.adapt_threads && governor.after_step(stepping) != threads) omp_set_num_threads(threads = governor.threads());
+    if (governor.after_step(stepping) != threads) omp_set_num_threads(threads = governor.threads());
     const std::int64_t s = sim.step_index();
     if (s % kCheckSteps == 0 || s == last_step) {
       const long bad = first_non_finite_body(sim.bodies);
@@ -392,7 +392,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   std::signal(SIGTERM, previous_term);
   omp_set_num_threads(max_threads);
   summary.interrupted = g_interrupted;
-  if (o.adapt_threads) summary.steps_at_threads = governor.steps_at();
+  summary.steps_at_threads = governor.steps_at();
   if (!g_interrupted) writer.checkpoint(sim);
   summary.steps = sim.step_index() - first_step;
   summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -17,15 +17,15 @@ constexpr double kHopeless = 4.0;           // a probe this much slower per step
 
 }  // namespace
 
-ThreadGovernor::ThreadGovernor(int max_threads)
+ThreadGovernor::ThreadGovernor(int max_threads, bool adapt)
     // Starts on one thread and tries more after one window: on a busy machine a step at 2
     // threads took 100 times one at 1 here, so the run does not open with a window of them.
-    : max_(std::max(max_threads, 1)), current_(1), held_(1), hold_windows_(kMinHold), windows_left_(1),
-      steps_at_(std::size_t(max_) + 1, 0) {}
+    : max_(std::max(max_threads, 1)), adapt_(adapt && max_ > 1), current_(adapt_ ? 1 : max_), held_(current_),
+      hold_windows_(kMinHold), windows_left_(1), steps_at_(std::size_t(max_) + 1, 0) {}
 
 int ThreadGovernor::after_step(double now) {
   ++steps_at_[std::size_t(current_)];
-  if (max_ == 1) return 1;
+  if (!adapt_) return current_;
   if (window_start_ < 0.0) {  // the first call opens the first window
     window_start_ = now;
     return current_;

@@ -10,8 +10,8 @@ namespace polydem {
 
 class ThreadGovernor {
  public:
-  // max_threads 1: nothing to choose, every call returns 1.
-  explicit ThreadGovernor(int max_threads);
+  // adapt false (or max_threads 1): nothing to choose, every call returns max_threads.
+  ThreadGovernor(int max_threads, bool adapt);
 
   // Called after each step with the wall time spent stepping so far (s; output apart);
   // returns the thread count for the next step.
@@ -25,7 +25,9 @@ class ThreadGovernor {
   void end_window(double seconds, std::int64_t steps);
   int candidate() const;
 
-  int max_, current_, held_ = 0;    // held_: count to return to after a probe
+  int max_;
+  bool adapt_;
+  int current_, held_;              // held_: count to return to after a probe
   bool probing_ = false;
   bool probe_down_ = true;          // alternate halving and doubling when both are possible
   int hold_windows_;                // windows at the chosen count before the next probe

@@ -21,7 +21,7 @@ struct Outcome {
 };
 
 Outcome run(int max_threads, long steps, const CostModel& cost) {
-  ThreadGovernor g(max_threads);
+  ThreadGovernor g(max_threads, true);
   Outcome o;
   o.steps_at.assign(std::size_t(max_threads) + 1, 0);
   int threads = g.threads();
