@@ -32,6 +32,9 @@ class Ball {
   bool near(const Placement& at, const Vec3& center, double reach) const {
     return (center - at.center).norm() < shape_.radius + reach;
   }
+  bool overlaps(const Placement& at, const Vec3& center, double radius) const {
+    return (center - at.center).norm() <= shape_.radius + radius;
+  }
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const {
     candidate_features(a, pose(at), range, out);
   }

@@ -43,6 +43,11 @@ bool Cylinder::near(const Placement& at, const Vec3& center, double reach) const
   return shape.within_length(f.axial, reach) && f.radial.norm() + reach > shape.radius;
 }
 
+bool Cylinder::overlaps(const Placement& at, const Vec3& center, double radius) const {
+  const CylinderShape::AxisFrame f = CylinderShape::axis_frame(at, center);
+  return shape.within_length(f.axial, radius) && f.radial.norm() + radius >= shape.radius;
+}
+
 void Cylinder::candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const {
   for (std::size_t v = 0; v < a.shape->vertices.size(); ++v) {
     const CylinderShape::AxisFrame f = CylinderShape::axis_frame(at, a.vertices[v]);

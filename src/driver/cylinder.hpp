@@ -59,6 +59,7 @@ class Cylinder {
   Vec3 servo_direction(const Placement& at, const MotionSettings&) const { return at.axis; }
 
   bool near(const Placement& at, const Vec3& center, double reach) const;
+  bool overlaps(const Placement& at, const Vec3& center, double radius) const;
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
   DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;

@@ -50,6 +50,10 @@ class Drivers {
   bool near(std::uint32_t j, const Vec3& center, double reach) const {
     return state_[j].active && std::visit([&](const auto& k) { return k.near(state_[j], center, reach); }, kind_[j]);
   }
+  // True when a sphere of `radius` (m) at `center` overlaps driver j or touches it (placement).
+  bool overlaps(std::uint32_t j, const Vec3& center, double radius) const {
+    return state_[j].active && std::visit([&](const auto& k) { return k.overlaps(state_[j], center, radius); }, kind_[j]);
+  }
   // Feature pairs (feature of a, feature of the driver) within rA + range of driver j.
   void candidates(const PosedBody& a, std::uint32_t j, double range, std::vector<FeaturePair>& out) const {
     std::visit([&](const auto& k) { k.candidates(state_[j], a, range, out); }, kind_[j]);

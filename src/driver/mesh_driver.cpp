@@ -161,6 +161,19 @@ bool MeshDriver::near(const Placement& d, const Vec3& center, double reach) cons
   return mesh_->any_face_near(to_mesh(d, center), reach);
 }
 
+bool MeshDriver::overlaps(const Placement& d, const Vec3& center, double radius) const {
+  thread_local std::vector<std::uint32_t> faces;
+  thread_local std::vector<int> triangle(3);
+  const MeshFeatures& m = *mesh_;
+  const Vec3 c = to_mesh(d, center);
+  m.faces_near(c, radius, faces);
+  for (std::uint32_t f : faces) {
+    std::copy(m.faces[f].begin(), m.faces[f].end(), triangle.begin());
+    if (point_polygon_distance_sq(c, m.vertices.data(), triangle, m.face_normals[f]) <= radius * radius) return true;
+  }
+  return false;
+}
+
 void MeshDriver::candidates(const Placement& d, const PosedBody& a, double range, std::vector<FeaturePair>& out) const {
   const MeshFeatures& m = *mesh_;
   const Shape& s = *a.shape;

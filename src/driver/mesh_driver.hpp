@@ -39,6 +39,7 @@ class MeshDriver {
   Vec3 servo_direction(const Placement&, const MotionSettings& m) const { return given_servo_direction(m); }
 
   bool near(const Placement& at, const Vec3& center, double reach) const;
+  bool overlaps(const Placement& at, const Vec3& center, double radius) const;
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
   // Its triangles at the current placement.

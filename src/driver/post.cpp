@@ -35,10 +35,18 @@ PosedBody Post::axis_pose(const Placement& at, const PosedBody& a, Vec3* ends) c
   return PosedBody{&axis_shape_, ends, Mat3::Identity(), foot, r, 1.0};
 }
 
-bool Post::near(const Placement& at, const Vec3& center, double reach) const {
+double Post::axis_distance(const Placement& at, const Vec3& center) const {
   const CylinderShape::AxisFrame f = CylinderShape::axis_frame(at, center);
   const double beyond = shape.length ? std::max(0.0, std::abs(f.axial) - 0.5 * *shape.length) : 0.0;  // m, past an end
-  return std::hypot(beyond, f.radial.norm()) < shape.radius + reach;
+  return std::hypot(beyond, f.radial.norm());
+}
+
+bool Post::near(const Placement& at, const Vec3& center, double reach) const {
+  return axis_distance(at, center) < shape.radius + reach;
+}
+
+bool Post::overlaps(const Placement& at, const Vec3& center, double radius) const {
+  return axis_distance(at, center) <= shape.radius + radius;
 }
 
 void Post::candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const {

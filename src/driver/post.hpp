@@ -22,6 +22,7 @@ class Post {
   Vec3 servo_direction(const Placement& at, const MotionSettings&) const { return at.axis; }
 
   bool near(const Placement& at, const Vec3& center, double reach) const;
+  bool overlaps(const Placement& at, const Vec3& center, double radius) const;
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
   DriverMesh drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const;
@@ -29,6 +30,8 @@ class Post {
   CylinderShape shape;
 
  private:
+  // m, distance from `center` to the axis segment.
+  double axis_distance(const Placement& at, const Vec3& center) const;
   // The post as a posed body: its axis segment, radius R; `ends` receives the ends.
   PosedBody axis_pose(const Placement& at, const PosedBody& a, Vec3* ends) const;
 

@@ -32,6 +32,7 @@ class Wall {
   Vec3 servo_direction(const Placement& at, const MotionSettings&) const { return at.normal; }
 
   bool near(const Placement& at, const Vec3& center, double reach) const { return (center - at.point).dot(at.normal) < reach; }
+  bool overlaps(const Placement& at, const Vec3& center, double radius) const { return (center - at.point).dot(at.normal) <= radius; }
   void candidates(const Placement& at, const PosedBody& a, double range, std::vector<FeaturePair>& out) const;
   bool contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const;
   // The part of its plane in the view frame, cut by the other walls (or a square of `size`).

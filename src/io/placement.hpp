@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "driver/drivers.hpp"
 #include "polydem/scene.hpp"
 
 namespace polydem {
@@ -60,27 +61,17 @@ class SphereGrid {
 // of the axis segment), balls and STL meshes (the triangles, two-sided).
 class DriverClearance {
  public:
-  // Reads the STL meshes; throws InputError (file, line, key) for a missing or broken one.
+  // Makes the drivers' kinds (reads the STL meshes; throws InputError, file, line and key, for a
+  // missing or broken one).
   explicit DriverClearance(const std::vector<DriverSettings>& drivers);
 
   // True when a sphere overlaps no driver (an overlap below 1e-9 x radius is a touch).
   bool clear(const Vec3& center, double radius) const;
-  bool empty() const { return shapes_.empty() && meshes_.empty(); }
+  bool empty() const { return present_.empty(); }
 
  private:
-  struct Mesh {                   // world triangles binned in a uniform grid
-    std::vector<std::array<Vec3, 3>> triangles;  // m
-    Vec3 lower = Vec3::Zero();    // m, grid origin
-    double cell = 1.0;            // m
-    std::array<int, 3> dims{1, 1, 1};
-    std::vector<std::uint32_t> begin, entries;   // CSR: triangles of each cell
-  };
-  static Mesh load_mesh(const MeshSettings& s);
-  static bool mesh_clear(const Mesh& m, const Vec3& center, double radius, double touch);
-  static bool shape_clear(const KindSettings& kind, const Vec3& center, double radius, double touch);
-
-  std::vector<KindSettings> shapes_;  // walls, cylinders, balls
-  std::vector<Mesh> meshes_;
+  Drivers drivers_;
+  std::vector<std::uint32_t> present_;  // the drivers not removed at t = 0
 };
 
 }  // namespace polydem
