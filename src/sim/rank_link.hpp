@@ -1,0 +1,49 @@
+#pragma once
+// The link between the ranks of a distributed run (issue 20), as the step needs it: every
+// rank's bytes on every rank. The MPI implementation lives with the program (app/mpi_link.cpp),
+// so the library and its tests build without MPI; one process has no link at all.
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+namespace polydem {
+
+class RankLink {
+ public:
+  virtual ~RankLink() = default;
+  virtual int rank() const = 0;
+  virtual int ranks() const = 0;
+  // Every rank's `mine`, in rank order, on every rank (a collective: all ranks call it).
+  virtual std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const = 0;
+
+  // True on every rank when it is true on some rank.
+  bool any(bool mine) const {
+    for (const std::vector<char>& b : all_gather({char(mine)}))
+      if (b.at(0)) return true;
+    return false;
+  }
+};
+
+// Records as bytes and back, for all_gather: plain data with no pointer (Eigen's fixed-size
+// vectors and quaternions copy bit for bit, though C++ does not call them trivially copyable).
+template <class T>
+void append_record(std::vector<char>& bytes, const T& record) {
+  static_assert(std::is_standard_layout_v<T> && !std::is_polymorphic_v<T>);
+  const std::size_t at = bytes.size();
+  bytes.resize(at + sizeof(T));
+  std::memcpy(bytes.data() + at, static_cast<const void*>(&record), sizeof(T));
+}
+
+template <class T>
+std::vector<T> records_of(const std::vector<std::vector<char>>& per_rank) {
+  static_assert(std::is_standard_layout_v<T> && !std::is_polymorphic_v<T>);
+  std::vector<T> all;
+  for (const std::vector<char>& b : per_rank) {
+    const std::size_t n = b.size() / sizeof(T), at = all.size();
+    all.resize(at + n);
+    if (n) std::memcpy(static_cast<void*>(all.data() + at), b.data(), n * sizeof(T));
+  }
+  return all;
+}
+
+}  // namespace polydem
