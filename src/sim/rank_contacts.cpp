@@ -1,6 +1,7 @@
 #include "sim/rank_contacts.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include "polydem/error.hpp"
 #include "sim/contact_table.hpp"
@@ -10,27 +11,15 @@ namespace polydem {
 
 namespace {
 
+void put(double out[3], const Vec3& v) { out[0] = v.x(); out[1] = v.y(); out[2] = v.z(); }
+Vec3 get(const double in[3]) { return {in[0], in[1], in[2]}; }
+
 // m, the largest scaled bounding radius of the scene.
 double largest_bounding_radius(const std::vector<Shape>& shapes, const Bodies& bodies) {
   double r = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) r = std::max(r, shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
   return r;
 }
-
-// What a rank tells the others of a body it owns after the pair loop.
-struct BodyShare {
-  std::uint32_t id;
-  double force[3], torque[3];  // N, N m: its contact sums
-};
-
-// A driver pair's reaction, for the sum in the one-process pair order (body, then driver).
-struct ReactionShare {
-  std::uint32_t i, j;
-  double force_i[3], torque_j[3];  // N on body i, N m on driver j
-};
-
-void put(double out[3], const Vec3& v) { out[0] = v.x(); out[1] = v.y(); out[2] = v.z(); }
-Vec3 get(const double in[3]) { return {in[0], in[1], in[2]}; }
 
 }  // namespace
 
@@ -72,11 +61,22 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
 
 void RankContacts::gather_table(ContactEngine& whole) const {
   if (!engine_) return;  // no step yet: whole's lists are the table
-  std::vector<char> body_bytes, driver_bytes;
-  append_active(engine_->body_pairs(), store_, false, body_bytes);
-  append_active(engine_->driver_pairs(), store_, true, driver_bytes);
-  whole.body_pairs() = table_of(records_of<TableSlot>(link_.all_gather(body_bytes)));
-  whole.driver_pairs() = table_of(records_of<TableSlot>(link_.all_gather(driver_bytes)));
+  std::vector<char> body_slots, driver_slots, bytes;
+  append_active(engine_->body_pairs(), store_, false, body_slots);
+  append_active(engine_->driver_pairs(), store_, true, driver_slots);
+  append_record(bytes, std::uint64_t(body_slots.size()));  // body slots' bytes, then the drivers'
+  bytes.insert(bytes.end(), body_slots.begin(), body_slots.end());
+  bytes.insert(bytes.end(), driver_slots.begin(), driver_slots.end());
+  std::vector<std::vector<char>> body(link_.ranks()), driver(link_.ranks());
+  const std::vector<std::vector<char>> all = link_.all_gather(bytes);
+  for (int r = 0; r < link_.ranks(); ++r) {
+    std::uint64_t n = 0;
+    std::memcpy(&n, all[r].data(), sizeof(n));
+    body[r].assign(all[r].begin() + sizeof(n), all[r].begin() + std::ptrdiff_t(sizeof(n) + n));
+    driver[r].assign(all[r].begin() + std::ptrdiff_t(sizeof(n) + n), all[r].end());
+  }
+  whole.body_pairs() = table_of(records_of<TableSlot>(body));
+  whole.driver_pairs() = table_of(records_of<TableSlot>(driver));
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
@@ -88,41 +88,67 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     ++rebuilds_;
   }
   engine_->compute(store_.view(), drivers, dt, stale);
-  share_forces(bodies);
-  share_driver_reactions(drivers);
-  const RankEnergy total = sum_rank_energy(link_, engine_->body_pairs(), engine_->driver_pairs(), store_, bodies.size());
+  share_results(bodies, drivers);
+}
+
+// One gather: the owned bodies' contact sums, the driver pairs' reactions, the pair energies.
+void RankContacts::share_results(Bodies& bodies, Drivers& drivers) {
+  const EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
+  std::vector<char> bytes;
+  append_section(bytes, body_shares());
+  append_section(bytes, reaction_shares());
+  append_section(bytes, mine.counts);
+  append_section(bytes, mine.pairs);
+  append_record(bytes, mine.contacts);
+  std::vector<BodyShare> forces;
+  std::vector<ReactionShare> reactions;
+  std::vector<EnergyShare> energies(link_.ranks());
+  const std::vector<std::vector<char>> all = link_.all_gather(bytes);
+  for (int r = 0; r < link_.ranks(); ++r) {
+    std::size_t at = 0;
+    for (const BodyShare& b : read_section<BodyShare>(all[r], at)) forces.push_back(b);
+    for (const ReactionShare& x : read_section<ReactionShare>(all[r], at)) reactions.push_back(x);
+    energies[r].counts = read_section<PairCounts>(all[r], at);
+    energies[r].pairs = read_section<PairEnergy>(all[r], at);
+    std::memcpy(&energies[r].contacts, all[r].data() + at, sizeof(std::uint64_t));
+  }
+  for (const BodyShare& b : forces) {  // force += the owner's contact sum, for every body: one process's arithmetic
+    bodies.force[b.id] += get(b.force);
+    bodies.torque[b.id] += get(b.torque);
+  }
+  add_reactions(std::move(reactions), drivers);
+  const RankEnergy total = total_energy(energies, bodies.size());
   energy_ = total.energy;
   contacts_ = total.contacts;
 }
 
-// force += the owner's contact sum, for every body: the one-process arithmetic.
-void RankContacts::share_forces(Bodies& bodies) {
-  std::vector<char> bytes;
+std::vector<BodyShare> RankContacts::body_shares() const {
+  std::vector<BodyShare> out;
   for (std::size_t k = 0; k < store_.global_id.size(); ++k) {
     if (store_.ghost[k]) continue;
     BodyShare s{store_.global_id[k], {}, {}};
     put(s.force, store_.force[k]);
     put(s.torque, store_.torque[k]);
-    append_record(bytes, s);
+    out.push_back(s);
   }
-  for (const BodyShare& s : records_of<BodyShare>(link_.all_gather(bytes))) {
-    bodies.force[s.id] += get(s.force);
-    bodies.torque[s.id] += get(s.torque);
-  }
+  return out;
 }
 
-// Each driver's reaction summed over the touching pairs in (body, driver) order, as one process.
-void RankContacts::share_driver_reactions(Drivers& drivers) const {
+std::vector<ReactionShare> RankContacts::reaction_shares() const {
   const PairList& list = engine_->driver_pairs();
-  std::vector<char> bytes;
+  std::vector<ReactionShare> out;
   for (std::size_t k = 0; k < list.size(); ++k) {
     if (!list.touching[k]) continue;
     ReactionShare r{store_.global_id[list.pairs[k].i], list.pairs[k].j, {}, {}};
     put(r.force_i, list.force_i[k]);
     put(r.torque_j, list.torque_j[k]);
-    append_record(bytes, r);
+    out.push_back(r);
   }
-  std::vector<ReactionShare> all = records_of<ReactionShare>(link_.all_gather(bytes));
+  return out;
+}
+
+// Each driver's reaction summed over the touching pairs in (body, driver) order, as one process.
+void add_reactions(std::vector<ReactionShare> all, Drivers& drivers) {
   std::sort(all.begin(), all.end(), [](const ReactionShare& a, const ReactionShare& b) {
     return a.i != b.i ? a.i < b.i : a.j < b.j;
   });

@@ -14,10 +14,26 @@
 
 #include "contact/contact_engine.hpp"
 #include "sim/local_store.hpp"
+#include "sim/rank_energy.hpp"
 #include "sim/rank_link.hpp"
 #include "sim/slabs.hpp"
 
 namespace polydem {
+
+// What a rank tells the others of a body it owns after the pair loop: its contact sums.
+struct BodyShare {
+  std::uint32_t id;
+  double force[3], torque[3];  // N, N m
+};
+
+// A driver pair's reaction, for the sum in the one-process pair order (body, then driver).
+struct ReactionShare {
+  std::uint32_t i, j;
+  double force_i[3], torque_j[3];  // N on body i, N m on driver j
+};
+
+// Sets each driver's reaction from every rank's touching driver pairs, in one-process order.
+void add_reactions(std::vector<ReactionShare> all, Drivers& drivers);
 
 class RankContacts {
  public:
@@ -39,8 +55,9 @@ class RankContacts {
  private:
   bool lists_stale(const Bodies& bodies, const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
-  void share_forces(Bodies& bodies);
-  void share_driver_reactions(Drivers& drivers) const;
+  void share_results(Bodies& bodies, Drivers& drivers);
+  std::vector<BodyShare> body_shares() const;
+  std::vector<ReactionShare> reaction_shares() const;
 
   const RankLink& link_;
   const std::vector<Shape>& shapes_;

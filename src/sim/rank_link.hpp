@@ -2,6 +2,7 @@
 // The link between the ranks of a distributed run (issue 20), as the step needs it: every
 // rank's bytes on every rank. The MPI implementation lives with the program (app/mpi_link.cpp),
 // so the library and its tests build without MPI; one process has no link at all.
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <vector>
@@ -44,6 +45,25 @@ std::vector<T> records_of(const std::vector<std::vector<char>>& per_rank) {
     if (n) std::memcpy(static_cast<void*>(all.data() + at), b.data(), n * sizeof(T));
   }
   return all;
+}
+
+// Sections of records, so one gather carries several kinds: a count, then the records.
+template <class T>
+void append_section(std::vector<char>& bytes, const std::vector<T>& records) {
+  append_record(bytes, std::uint64_t(records.size()));
+  for (const T& r : records) append_record(bytes, r);
+}
+
+// Reads the section at `at` of one rank's bytes and moves `at` past it.
+template <class T>
+std::vector<T> read_section(const std::vector<char>& bytes, std::size_t& at) {
+  std::uint64_t n = 0;
+  std::memcpy(&n, bytes.data() + at, sizeof(n));
+  at += sizeof(n);
+  std::vector<T> records(n);
+  if (n) std::memcpy(static_cast<void*>(records.data()), bytes.data() + at, n * sizeof(T));
+  at += n * sizeof(T);
+  return records;
 }
 
 }  // namespace polydem
