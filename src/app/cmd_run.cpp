@@ -196,6 +196,7 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
                1e6 * s.wall_seconds / std::max<double>(1.0, double(s.steps) * double(sim.bodies.size())),
                s.rebuilds, o.out_dir.c_str());
   print_thread_use(s.steps_at_threads);
+  if (link) return s.interrupted ? kExitInterrupted : 0;  // the lists below are each rank's own
   std::fprintf(stderr, "polydem: last list: %zu body pairs, %zu driver pairs, %zu candidate feature pairs; %zu contacts\n",
                c.body_pairs, c.driver_pairs, c.slots, c.contacts);
   std::fprintf(stderr, "polydem: broad phase: %zu sphere tests in %zu rebuilds (%.3g per body per rebuild), %zu size classes, %.3g MB\n",

@@ -2,19 +2,19 @@
 
 #include <algorithm>
 
-#include "sim/rank_link.hpp"
 
 namespace polydem {
 
-void append_active(const PairList& list, const LocalStore& store, bool driver, std::vector<char>& bytes) {
+std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& store, bool driver) {
+  std::vector<TableSlot> out;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const BodyPair p = list.pairs[k];
     if (store.ghost[p.i]) continue;  // the owner of i answers for the pair
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        append_record(bytes, TableSlot{store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s],
-                                       list.slots[s]});
+        out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s], list.slots[s]});
   }
+  return out;
 }
 
 PairList table_of(std::vector<TableSlot> slots) {

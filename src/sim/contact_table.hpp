@@ -19,8 +19,8 @@ struct TableSlot {
   ContactSlot slot;
 };
 
-// Appends the active slots of `list` (local indices of `store`) this rank answers for.
-void append_active(const PairList& list, const LocalStore& store, bool driver, std::vector<char>& bytes);
+// The active slots of `list` (local indices of `store`) this rank answers for.
+std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& store, bool driver);
 
 // The table of all ranks' slots: pairs in increasing (i, j), each pair's slots from one rank in key order.
 PairList table_of(std::vector<TableSlot> slots);

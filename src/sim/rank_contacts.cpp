@@ -61,22 +61,17 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
 
 void RankContacts::gather_table(ContactEngine& whole) const {
   if (!engine_) return;  // no step yet: whole's lists are the table
-  std::vector<char> body_slots, driver_slots, bytes;
-  append_active(engine_->body_pairs(), store_, false, body_slots);
-  append_active(engine_->driver_pairs(), store_, true, driver_slots);
-  append_record(bytes, std::uint64_t(body_slots.size()));  // body slots' bytes, then the drivers'
-  bytes.insert(bytes.end(), body_slots.begin(), body_slots.end());
-  bytes.insert(bytes.end(), driver_slots.begin(), driver_slots.end());
-  std::vector<std::vector<char>> body(link_.ranks()), driver(link_.ranks());
-  const std::vector<std::vector<char>> all = link_.all_gather(bytes);
-  for (int r = 0; r < link_.ranks(); ++r) {
-    std::uint64_t n = 0;
-    std::memcpy(&n, all[r].data(), sizeof(n));
-    body[r].assign(all[r].begin() + sizeof(n), all[r].begin() + std::ptrdiff_t(sizeof(n) + n));
-    driver[r].assign(all[r].begin() + std::ptrdiff_t(sizeof(n) + n), all[r].end());
+  std::vector<char> bytes;
+  append_section(bytes, active_slots(engine_->body_pairs(), store_, false));
+  append_section(bytes, active_slots(engine_->driver_pairs(), store_, true));
+  std::vector<TableSlot> body, driver;
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+    std::size_t at = 0;
+    for (const TableSlot& t : read_section<TableSlot>(from, at)) body.push_back(t);
+    for (const TableSlot& t : read_section<TableSlot>(from, at)) driver.push_back(t);
   }
-  whole.body_pairs() = table_of(records_of<TableSlot>(body));
-  whole.driver_pairs() = table_of(records_of<TableSlot>(driver));
+  whole.body_pairs() = table_of(std::move(body));
+  whole.driver_pairs() = table_of(std::move(driver));
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
@@ -99,7 +94,7 @@ void RankContacts::share_results(Bodies& bodies, Drivers& drivers) {
   append_section(bytes, reaction_shares());
   append_section(bytes, mine.counts);
   append_section(bytes, mine.pairs);
-  append_record(bytes, mine.contacts);
+  append_section(bytes, std::vector<std::uint64_t>{mine.contacts});
   std::vector<BodyShare> forces;
   std::vector<ReactionShare> reactions;
   std::vector<EnergyShare> energies(link_.ranks());
@@ -110,7 +105,7 @@ void RankContacts::share_results(Bodies& bodies, Drivers& drivers) {
     for (const ReactionShare& x : read_section<ReactionShare>(all[r], at)) reactions.push_back(x);
     energies[r].counts = read_section<PairCounts>(all[r], at);
     energies[r].pairs = read_section<PairEnergy>(all[r], at);
-    std::memcpy(&energies[r].contacts, all[r].data() + at, sizeof(std::uint64_t));
+    energies[r].contacts = read_section<std::uint64_t>(all[r], at).at(0);
   }
   for (const BodyShare& b : forces) {  // force += the owner's contact sum, for every body: one process's arithmetic
     bodies.force[b.id] += get(b.force);

@@ -25,7 +25,7 @@ class RankLink {
   }
 };
 
-// Records as bytes and back, for all_gather: plain data with no pointer (Eigen's fixed-size
+// A record as bytes, for all_gather: plain data with no pointer (Eigen's fixed-size
 // vectors and quaternions copy bit for bit, though C++ does not call them trivially copyable).
 template <class T>
 void append_record(std::vector<char>& bytes, const T& record) {
@@ -33,18 +33,6 @@ void append_record(std::vector<char>& bytes, const T& record) {
   const std::size_t at = bytes.size();
   bytes.resize(at + sizeof(T));
   std::memcpy(bytes.data() + at, static_cast<const void*>(&record), sizeof(T));
-}
-
-template <class T>
-std::vector<T> records_of(const std::vector<std::vector<char>>& per_rank) {
-  static_assert(std::is_standard_layout_v<T> && !std::is_polymorphic_v<T>);
-  std::vector<T> all;
-  for (const std::vector<char>& b : per_rank) {
-    const std::size_t n = b.size() / sizeof(T), at = all.size();
-    all.resize(at + n);
-    if (n) std::memcpy(static_cast<void*>(all.data() + at), b.data(), n * sizeof(T));
-  }
-  return all;
 }
 
 // Sections of records, so one gather carries several kinds: a count, then the records.

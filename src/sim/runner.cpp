@@ -397,7 +397,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       const double wall = std::chrono::duration<double>(now - start).count();
       const double rate = double(s - first_step) / wall;
       std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %zu contacts  left %s%s",
-                   sim.time(), end_time, static_cast<long long>(s), rate, sim.engine().stats().contacts,
+                   sim.time(), end_time, static_cast<long long>(s), rate, sim.contacts(),
                    format_duration(double(last_step - s) / rate).c_str(), isatty(2) ? "      \r" : "\n");
     }
   }

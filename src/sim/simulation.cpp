@@ -148,7 +148,7 @@ EnergyRow Simulation::energy() const {
   e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;
   e.external_work = ledger.external_work;
-  e.contacts = ranks_ ? ranks_->contacts() : engine_->stats().contacts;
+  e.contacts = contacts();
   return e;
 }
 

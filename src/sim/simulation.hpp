@@ -74,6 +74,7 @@ class Simulation {
   int rank() const { return link_ ? link_->rank() : 0; }
   void sync_contacts();
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
+  std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
   std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }
 
  private:
