@@ -23,25 +23,17 @@ void collect(const PairList& list, const LocalStore& store, bool driver, std::ve
   }
 }
 
-// The blocks' sums in order, each summed in pair order (`at`: the pairs' places in the list).
-void add_blocks(const std::vector<PairEnergy>& pairs, const std::vector<std::uint64_t>& at, EnergyParts& total) {
-  std::vector<std::size_t> order(pairs.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return at[a] < at[b]; });
-  EnergyParts block;
-  std::uint64_t current = 0;
-  bool open = false;
-  for (std::size_t r : order) {
-    const std::uint64_t b = at[r] / kPairBlock;
-    if (open && b != current) {
-      total += block;
-      block = EnergyParts{};
-    }
-    current = b;
-    open = true;
-    block += pairs[r].e;
+// The blocks' sums in order, each summed in pair order over the whole one-process list
+// (`at`: the pairs' places in it; the pairs left out add exact zeros): O(pairs), no sort.
+void add_blocks(const std::vector<PairEnergy>& pairs, const std::vector<std::uint64_t>& at, std::uint64_t n_pairs,
+                EnergyParts& total) {
+  std::vector<EnergyParts> list(n_pairs);
+  for (std::size_t r = 0; r < pairs.size(); ++r) list[at[r]] = pairs[r].e;
+  for (std::uint64_t b = 0; b < n_pairs; b += kPairBlock) {
+    EnergyParts block;
+    for (std::uint64_t k = b; k < std::min<std::uint64_t>(n_pairs, b + kPairBlock); ++k) block += list[k];
+    total += block;
   }
-  if (open) total += block;
 }
 
 }  // namespace
@@ -77,8 +69,8 @@ RankEnergy total_energy(const std::vector<EnergyShare>& shares, std::size_t n_bo
       (p.driver ? driver : body).push_back(p);
       (p.driver ? at_driver : at_body).push_back((p.driver ? start_driver : start_body)[p.i] + p.ordinal);
     }
-  add_blocks(body, at_body, out.energy);
-  add_blocks(driver, at_driver, out.energy);
+  add_blocks(body, at_body, start_body.back(), out.energy);
+  add_blocks(driver, at_driver, start_driver.back(), out.energy);
   return out;
 }
 

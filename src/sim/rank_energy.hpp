@@ -24,7 +24,7 @@ struct PairEnergy {
 };
 
 // What a rank sends of the pairs it answers for: its body pairs whose lower body it owns and
-// its driver pairs (their body is owned). Pairs of zero energy are left out (adding them is exact).
+// its driver pairs (their body is owned). Pairs of zero energy are left out (they add exact zeros).
 struct EnergyShare {
   std::vector<PairCounts> counts;  // per owned body
   std::vector<PairEnergy> pairs;
