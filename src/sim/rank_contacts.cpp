@@ -1,7 +1,6 @@
 #include "sim/rank_contacts.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 #include "polydem/error.hpp"
 #include "sim/contact_table.hpp"
