@@ -132,9 +132,9 @@ void warn_fast_impacts(const Simulation& sim) {
 
 // Shapes, bodies and the simulation of a parsed scene (threads are set before: the first
 // contact search already runs in parallel).
-std::unique_ptr<Simulation> build(const Scene& scene) {
+std::unique_ptr<Simulation> build(const Scene& scene, const RankLink* link = nullptr) {
   const ShapeLibrary library = load_shape_library(scene.shape_files);
-  return std::make_unique<Simulation>(scene, library, expand_bodies(scene, library));
+  return std::make_unique<Simulation>(scene, library, expand_bodies(scene, library), link);
 }
 
 // More threads than cores share them and wait on each other at every loop of the step.
@@ -167,31 +167,36 @@ void print_thread_use(const std::vector<std::int64_t>& steps_at) {
 
 }  // namespace
 
-int cmd_run(const std::vector<std::string>& args) {
+int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
   const RunArgs a = parse_run_args(args, kRunHelp, true);
   const Scene scene = load_scene(a.scene);
+  const bool io = !link || link->rank() == 0;  // one message per run, whatever the rank count
   const int threads = a.threads ? *a.threads : scene.simulation.threads;
-  if (threads > 0) warn_threads(threads, scene, bool(a.threads));
+  if (threads > 0 && io) warn_threads(threads, scene, bool(a.threads));
   if (threads > 0) omp_set_num_threads(threads);
-  const auto built = build(scene);
+  const auto built = build(scene, link);
   Simulation& sim = *built;
-  warn_unsafe_step(sim);
-  warn_fast_impacts(sim);
+  if (io) warn_unsafe_step(sim);
+  if (io) warn_fast_impacts(sim);
   RunOptions o;
   o.out_dir = a.out ? *a.out : scene.output.dir;
   o.until = a.until;
   o.resume = a.resume;
   o.force = a.force;
   o.adapt_threads = !a.fixed_threads;
-  std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s, %d threads, output in %s\n",
-               sim.bodies.size(), sim.drivers.size(), sim.dt(), omp_get_max_threads(), o.out_dir.c_str());
+  if (io)
+    std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s, %d threads%s, output in %s\n",
+                 sim.bodies.size(), sim.drivers.size(), sim.dt(), omp_get_max_threads(),
+                 link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "", o.out_dir.c_str());
   const RunSummary s = run_simulation(sim, o);
+  if (!io) return s.interrupted ? kExitInterrupted : 0;
   const ContactStats& c = sim.engine().stats();
   std::fprintf(stderr, "polydem: %lld steps in %.2f s (%.3g us per body-step), %zu rebuilds; ParaView: %s/scene.pvd\n",
                static_cast<long long>(s.steps), s.wall_seconds,
                1e6 * s.wall_seconds / std::max<double>(1.0, double(s.steps) * double(sim.bodies.size())),
                s.rebuilds, o.out_dir.c_str());
   print_thread_use(s.steps_at_threads);
+  if (link) return s.interrupted ? kExitInterrupted : 0;  // the lists below are each rank's own
   std::fprintf(stderr, "polydem: last list: %zu body pairs, %zu driver pairs, %zu candidate feature pairs; %zu contacts\n",
                c.body_pairs, c.driver_pairs, c.slots, c.contacts);
   std::fprintf(stderr, "polydem: broad phase: %zu sphere tests in %zu rebuilds (%.3g per body per rebuild), %zu size classes, %.3g MB\n",

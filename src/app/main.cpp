@@ -30,10 +30,13 @@ const char* kUsage =
 
 int main(int argc, char** argv) {
   const polydem::MpiSession mpi(argc, argv);
-  if (mpi.ranks() > 1) {  // every rank exits 1; one message
-    if (mpi.rank() == 0)
-      std::fprintf(stderr, "error: %d MPI ranks: polydem runs a scene on one rank so far (%s); use mpirun -np 1 "
-                           "and --threads N\n", mpi.ranks(), mpi.with_mpi() ? "issue 20" : "this build has no MPI");
+  // Many ranks share `run` alone; the rest, or a build without MPI, stop at once, every rank
+  // with exit 1, rank 0 saying why.
+  const bool many = mpi.ranks() > 1, io = mpi.rank() == 0;
+  if (many && (!mpi.link() || argc < 2 || std::strcmp(argv[1], "run") != 0)) {
+    if (io)
+      std::fprintf(stderr, "error: %d MPI ranks: %s; use mpirun -np 1 and --threads N\n", mpi.ranks(),
+                   mpi.link() ? "only 'polydem run' runs over many ranks" : "this build has no MPI");
     return 1;
   }
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
@@ -43,7 +46,7 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
-    if (command == "run") return polydem::cmd_run(args);
+    if (command == "run") return polydem::cmd_run(args, many ? mpi.link() : nullptr);
     if (command == "check") return polydem::cmd_check(args);
     if (command == "shape") return polydem::cmd_shape(args);
     if (command == "plot") return polydem::cmd_plot(args);
@@ -51,11 +54,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "polydem: unknown command '%s' (commands: run, check, shape, plot, render)\n",
                  command.c_str());
     return 1;
-  } catch (const polydem::InputError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const polydem::InputError& e) {  // every rank meets a bad scene: rank 0 says it
+    if (io) std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::exception& e) {  // the state is the same on every rank: so is the failure
+    if (io) std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
 }

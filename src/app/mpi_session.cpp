@@ -18,6 +18,29 @@ int launcher_value(const char* openmpi, const char* pmi, int absent) {
   return absent;
 }
 
+#ifdef POLYDEM_WITH_MPI
+class MpiLink final : public RankLink {
+ public:
+  MpiLink(int rank, int ranks) : rank_(rank), ranks_(ranks) {}
+  int rank() const override { return rank_; }
+  int ranks() const override { return ranks_; }
+  std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
+    const int n = int(mine.size());
+    std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
+    MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
+    std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
+    MPI_Allgatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
+    std::vector<std::vector<char>> per_rank(ranks_);
+    for (int r = 0; r < ranks_; ++r) per_rank[r].assign(all.begin() + offsets[r], all.begin() + offsets[r + 1]);
+    return per_rank;
+  }
+
+ private:
+  int rank_, ranks_;
+};
+#endif
+
 }  // namespace
 
 MpiSession::MpiSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv) {
@@ -29,6 +52,7 @@ MpiSession::MpiSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv
     initialised_ = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+    link_ = std::make_unique<MpiLink>(rank_, ranks_);
   }
 #endif
 }

@@ -190,7 +190,8 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   }
   world_vertices_.resize(vertex_offset_[n]);
   posed_.resize(n);
-  spheres_only_ = std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
+  spheres_only_ = settings_.spheres_only >= 0 ? settings_.spheres_only == 1
+                  : std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
   radius_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
     const Shape& s = shapes_[shape[b]];
@@ -344,6 +345,10 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
                       bodies.angular_velocity_end->data(), bodies.mass->data()};
   stats_.energy = EnergyParts{};
   stats_.contacts = 0;
+  if (settings_.pair_energies) {
+    body_list_.pair_energy.resize(body_list_.size());
+    driver_list_.pair_energy.resize(driver_list_.size());
+  }
   // Energies are summed block by block in order: repeatable whatever the thread count.
   auto add_totals = [this](const PairList& list) {
     for (const EnergyParts& e : list.block_energy) stats_.energy += e;

@@ -16,6 +16,11 @@ struct ContactSettings {
   LawParams particle;       // `config`
   LawParams driver;         // `config_driver`
   double skin = 0.0;        // m, Verlet skin
+  // A rank's share of a distributed run (sim/rank_contacts.hpp): the sphere fast path as
+  // chosen for the whole scene (1 or 0; -1: for the bodies given), and each pair's energy
+  // kept (PairList::pair_energy) to be summed in the one-process order across ranks.
+  int spheres_only = -1;
+  bool pair_energies = false;
 };
 
 // Over this process's lists: a pair across a cut between processes is listed by both.

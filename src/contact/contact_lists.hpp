@@ -42,6 +42,7 @@ struct PairList {
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
   std::vector<EnergyParts> block_energy;   // J, per block of pairs, this step (energy ledger)
+  std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
 
   std::size_t size() const { return pairs.size(); }
   void resize_results() {

@@ -19,6 +19,7 @@ template <class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
   list.block_energy.resize(blocks);
+  const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
   auto one_block = [&](std::size_t b, PairScratch& scratch) {
     EnergyParts energy;  // J
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
@@ -28,6 +29,7 @@ void all_pair_forces(PairList& list, const Kernel& kernel) {
       list.torque_j[k] = t.torque_j;
       list.touching[k] = std::uint16_t(t.contacts);
       energy += t.energy;
+      if (per_pair) list.pair_energy[k] = t.energy;
     }
     list.block_energy[b] = energy;
   };

@@ -307,7 +307,7 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   check_state(r, sim);
   read_active(r, sim.engine().body_pairs(), n, n, false);
   read_active(r, sim.engine().driver_pairs(), n, nd, true);
-  sim.engine().force_rebuild();
+  sim.force_rebuild();
   r.pod(progress.frame);
   std::uint64_t nf = 0;
   r.pod(nf);

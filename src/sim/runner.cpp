@@ -147,10 +147,13 @@ class FluidSeries {
 
 class OutputWriter {
  public:
-  OutputWriter(const Simulation& sim, const RunOptions& o, OutputProgress progress)
-      : sim_(sim), dir_(o.out_dir), progress_(std::move(progress)), pvd_(dir_),
+  // Rank 0 of a distributed run writes; the others only take part in the gathers.
+  OutputWriter(Simulation& sim, const RunOptions& o, OutputProgress progress)
+      : sim_(sim), dir_(o.out_dir), io_(sim.rank() == 0), progress_(std::move(progress)),
         view_box_(view_box(sim.bodies, sim.shapes(), sim.drivers)) {
-    for (const OutputFrame& f : progress_.frames) pvd_.add(f.time, f.files);
+    if (!io_) return;
+    pvd_ = std::make_unique<PvdFiles>(dir_);
+    for (const OutputFrame& f : progress_.frames) pvd_->add(f.time, f.files);
     if (!sim.scene().output.csv_every) return;
     energy_ = std::make_unique<CsvSeries>(dir_ + "/energy.csv",
         std::vector<std::string>{"time", "kinetic", "rotational", "elastic", "dissipated", "gravity_work",
@@ -166,6 +169,8 @@ class OutputWriter {
   }
 
   void frame() {
+    if (sim_.scene().output.contacts) sim_.sync_contacts();
+    if (!io_) return;
     OutputFrame f{sim_.time(), {numbered("bodies", progress_.frame, "vtu")}};
     write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
                      sim_.scene().forces.gravity);
@@ -181,12 +186,14 @@ class OutputWriter {
       f.files.push_back(numbered("fluid", progress_.frame, "vti"));
       write_fluid_vti(dir_ + "/" + f.files.back(), sim_);
     }
-    pvd_.add(f.time, f.files);
+    pvd_->add(f.time, f.files);
     progress_.frames.push_back(f);
     ++progress_.frame;
   }
 
   void energy_row() {
+    if (!sim_.scene().output.csv_every) return;
+    sim_.sync_contacts();  // the elastic energy reads every rank's contacts
     if (!energy_) return;
     const EnergyRow e = sim_.energy();
     if (fluid_) fluid_->row();
@@ -205,16 +212,18 @@ class OutputWriter {
 
   std::string checkpoint(Simulation& sim) {
     const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
-    write_checkpoint(path, sim, progress_);
-    sim.engine().force_rebuild();  // the resumed run rebuilds here too: same lists, same bits
+    sim.sync_contacts();
+    if (io_) write_checkpoint(path, sim, progress_);
+    sim.force_rebuild();  // the resumed run rebuilds here too: same lists, same bits
     return path;
   }
 
  private:
-  const Simulation& sim_;
+  Simulation& sim_;
   std::string dir_;
+  bool io_;  // writes the files
   OutputProgress progress_;
-  PvdFiles pvd_;  // scene.pvd and bodies.pvd, drivers.pvd, ...
+  std::unique_ptr<PvdFiles> pvd_;  // scene.pvd and bodies.pvd, drivers.pvd, ...
   std::unique_ptr<CsvSeries> energy_;
   std::vector<std::unique_ptr<CsvSeries>> driver_series_;
   std::unique_ptr<FluidSeries> fluid_;
@@ -266,7 +275,7 @@ std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
 [[noreturn]] void fail_non_finite(const Simulation& sim, const std::string& what, const Bodies& last_good,
                                   std::int64_t good_step, const std::string& dir, bool first_check_after_resume) {
   const std::string good = dir + "/bodies_last_good.vtu";
-  write_bodies_vtu(good, last_good, sim.shapes());
+  if (sim.rank() == 0) write_bodies_vtu(good, last_good, sim.shapes());
   char msg[256];
   std::snprintf(msg, sizeof(msg), " became non-finite by step %lld (t = %.6g s). Likely cause: ",
                 static_cast<long long>(sim.step_index()), sim.time());
@@ -298,7 +307,9 @@ void make_output_folder(const std::string& dir) {
 }  // namespace
 
 RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
-  for (const std::string& w : check_run_limits(sim, o.until)) std::fprintf(stderr, "%s\n", w.c_str());
+  const bool io = sim.rank() == 0;  // distributed runs: rank 0 prints
+  for (const std::string& w : check_run_limits(sim, o.until))
+    if (io) std::fprintf(stderr, "%s\n", w.c_str());
   make_output_folder(o.out_dir);
   OutputProgress progress;
   if (!o.resume.empty()) read_checkpoint(o.resume, sim, progress, o.force);
@@ -335,9 +346,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
   auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check
     if (!law.present) return;
+    sim.sync_contacts();
     const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
                                          kn_driver, sim.time());
-    if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
+    if (!w.empty() && io) std::fprintf(stderr, "%s\n", w.c_str());
   };
   const int max_threads = omp_get_max_threads();
   ThreadGovernor governor(max_threads, o.adapt_threads);
@@ -372,19 +384,20 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       check_overlaps();
     }
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
-    if (g_interrupted) {
+    if (sim.any_rank(g_interrupted)) {  // every rank stops at the same step
+      g_interrupted = true;
       const std::string path = writer.checkpoint(sim);
-      std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run %s --out %s --resume %s\n",
+      if (io) std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run %s --out %s --resume %s\n",
                    sim.time(), sim.scene().path.c_str(), o.out_dir.c_str(), path.c_str());
       break;
     }
     const auto now = Clock::now();
-    if (o.progress && std::chrono::duration<double>(now - last_print).count() > 2.0) {
+    if (o.progress && io && std::chrono::duration<double>(now - last_print).count() > 2.0) {
       last_print = now;
       const double wall = std::chrono::duration<double>(now - start).count();
       const double rate = double(s - first_step) / wall;
       std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %zu contacts  left %s%s",
-                   sim.time(), end_time, static_cast<long long>(s), rate, sim.engine().stats().contacts,
+                   sim.time(), end_time, static_cast<long long>(s), rate, sim.contacts(),
                    format_duration(double(last_step - s) / rate).c_str(), isatty(2) ? "      \r" : "\n");
     }
   }
@@ -396,7 +409,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   if (!g_interrupted) writer.checkpoint(sim);
   summary.steps = sim.step_index() - first_step;
   summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  summary.rebuilds = sim.engine().stats().rebuilds;
+  summary.rebuilds = sim.rebuilds();
   if (o.progress && isatty(2)) std::fprintf(stderr, "\n");
   return summary;
 }

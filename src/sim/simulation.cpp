@@ -43,11 +43,13 @@ int scene_line(const Scene& scene, const std::string& key) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs)
-    : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library) {
+Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs,
+                       const RankLink* link)
+    : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library), link_(link) {
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
+  if (link && link->ranks() > 1) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
   rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
@@ -66,7 +68,24 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const st
   external_forces();
   ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
   predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0
-  if (contacts) engine_->compute(all_owned(bodies), drivers, dt_);
+  if (contacts) contact_stage();
+}
+
+// One process: the engine over all bodies; many: this rank's share, then shared.
+void Simulation::contact_stage() {
+  if (ranks_)
+    ranks_->compute(bodies, drivers, dt_, *engine_);
+  else
+    engine_->compute(all_owned(bodies), drivers, dt_);
+}
+
+void Simulation::force_rebuild() {
+  engine_->force_rebuild();
+  if (ranks_) ranks_->force_rebuild();
+}
+
+void Simulation::sync_contacts() {
+  if (ranks_) ranks_->gather_table(*engine_);
 }
 
 void Simulation::external_forces() {
@@ -97,8 +116,8 @@ void Simulation::step() {
     // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half
     // of the last step's reaction and half of this step's, on this step's driver motion.
     driver_work_half();
-    engine_->compute(all_owned(bodies), drivers, dt_);
-    const EnergyParts& step = engine_->stats().energy;
+    contact_stage();
+    const EnergyParts& step = ranks_ ? ranks_->energy() : engine_->stats().energy;
     ledger.dissipated += step.net;
     ledger.sliding += step.sliding;
     ledger.rolling += step.rolling;
@@ -129,7 +148,7 @@ EnergyRow Simulation::energy() const {
   e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;
   e.external_work = ledger.external_work;
-  e.contacts = engine_->stats().contacts;
+  e.contacts = contacts();
   return e;
 }
 

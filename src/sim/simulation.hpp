@@ -12,6 +12,7 @@
 #include "polydem/scene.hpp"
 #include "polydem/shape_library.hpp"
 #include "contact/contact_engine.hpp"
+#include "sim/rank_contacts.hpp"
 #include "sim/time_step.hpp"
 
 namespace polydem {
@@ -39,7 +40,9 @@ struct EnergyRow {
 
 class Simulation {
  public:
-  Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs);
+  // `link`: the ranks of a distributed run (null or one rank: one process).
+  Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs,
+             const RankLink* link = nullptr);
 
   void step();  // one velocity-Verlet step of dt
 
@@ -61,10 +64,23 @@ class Simulation {
 
   // Checkpoint support: the step counter is part of the state.
   void set_step_index(std::int64_t s) { step_ = s; }
+  // Rebuilds the contact lists at the next step from engine()'s lists (a checkpoint read or
+  // written: the same lists, the same bits either way).
+  void force_rebuild();
+
+  // Distributed runs: engine() holds every rank's contacts (global ids) only after
+  // sync_contacts(), a collective, called before output and checkpoints read them.
+  bool distributed() const { return bool(ranks_); }
+  int rank() const { return link_ ? link_->rank() : 0; }
+  void sync_contacts();
+  bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
+  std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
+  std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }
 
  private:
   void external_forces();
   void driver_work_half();
+  void contact_stage();
 
   Scene scene_;
   ShapeLibrary library_;
@@ -75,6 +91,8 @@ class Simulation {
   std::int64_t step_ = 0;
   Vec3 gravity_ = Vec3::Zero();  // m/s^2
   std::unique_ptr<ExternalForces> external_;
+  const RankLink* link_ = nullptr;
+  std::unique_ptr<RankContacts> ranks_;  // distributed runs: this rank's contact stage
 };
 
 // Index of the first body whose state is not finite, or -1.

@@ -1,0 +1,57 @@
+#pragma once
+// The link between the ranks of a distributed run (issue 20), as the step needs it: every
+// rank's bytes on every rank. The MPI implementation lives with the program (app/mpi_link.cpp),
+// so the library and its tests build without MPI; one process has no link at all.
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+namespace polydem {
+
+class RankLink {
+ public:
+  virtual ~RankLink() = default;
+  virtual int rank() const = 0;
+  virtual int ranks() const = 0;
+  // Every rank's `mine`, in rank order, on every rank (a collective: all ranks call it).
+  virtual std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const = 0;
+
+  // True on every rank when it is true on some rank.
+  bool any(bool mine) const {
+    for (const std::vector<char>& b : all_gather({char(mine)}))
+      if (b.at(0)) return true;
+    return false;
+  }
+};
+
+// A record as bytes, for all_gather: plain data with no pointer (Eigen's fixed-size
+// vectors and quaternions copy bit for bit, though C++ does not call them trivially copyable).
+template <class T>
+void append_record(std::vector<char>& bytes, const T& record) {
+  static_assert(std::is_standard_layout_v<T> && !std::is_polymorphic_v<T>);
+  const std::size_t at = bytes.size();
+  bytes.resize(at + sizeof(T));
+  std::memcpy(bytes.data() + at, static_cast<const void*>(&record), sizeof(T));
+}
+
+// Sections of records, so one gather carries several kinds: a count, then the records.
+template <class T>
+void append_section(std::vector<char>& bytes, const std::vector<T>& records) {
+  append_record(bytes, std::uint64_t(records.size()));
+  for (const T& r : records) append_record(bytes, r);
+}
+
+// Reads the section at `at` of one rank's bytes and moves `at` past it.
+template <class T>
+std::vector<T> read_section(const std::vector<char>& bytes, std::size_t& at) {
+  std::uint64_t n = 0;
+  std::memcpy(&n, bytes.data() + at, sizeof(n));
+  at += sizeof(n);
+  std::vector<T> records(n);
+  if (n) std::memcpy(static_cast<void*>(records.data()), bytes.data() + at, n * sizeof(T));
+  at += n * sizeof(T);
+  return records;
+}
+
+}  // namespace polydem

@@ -1,0 +1,124 @@
+// The distributed step without MPI: ranks as threads joined by an in-process link. The pile
+// of 150 cubes and spheres (walls, fast spins, many rebuilds) stepped over 2 and 3 ranks ends
+// on the bits of one process on every rank: bodies, driver reactions, the energy ledger, the
+// contact count and, after the table is gathered, the stored energy.
+#include <catch2/catch.hpp>
+
+#include <barrier>
+#include <cstring>
+#include <thread>
+
+#include "pile.hpp"
+
+using namespace polydem;
+using namespace polydem::test;
+
+namespace {
+
+// Ranks as threads: each all_gather posts its bytes, waits for all, copies all, waits again.
+struct ThreadRanks {
+  explicit ThreadRanks(int n) : posted(n), sync(n) {}
+  std::vector<std::vector<char>> posted;
+  std::barrier<> sync;
+};
+
+class ThreadLink final : public RankLink {
+ public:
+  ThreadLink(ThreadRanks& all, int rank) : all_(all), rank_(rank) {}
+  int rank() const override { return rank_; }
+  int ranks() const override { return int(all_.posted.size()); }
+  std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
+    all_.posted[rank_] = mine;
+    all_.sync.arrive_and_wait();
+    std::vector<std::vector<char>> copy = all_.posted;
+    all_.sync.arrive_and_wait();
+    return copy;
+  }
+
+ private:
+  ThreadRanks& all_;
+  int rank_;
+};
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(static_cast<const void*>(a.data()), static_cast<const void*>(b.data()),
+                                             a.size() * sizeof(T)) == 0;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+struct Outcome {
+  Bodies bodies;
+  EnergyLedger ledger;
+  EnergyRow energy;
+  std::vector<Vec3> driver_force, driver_torque;
+  std::size_t rebuilds = 0;
+};
+
+Outcome outcome(Simulation& sim) {
+  sim.sync_contacts();
+  Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds()};
+  for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
+    o.driver_force.push_back(sim.drivers[j].force);
+    o.driver_torque.push_back(sim.drivers[j].torque);
+  }
+  return o;
+}
+
+Outcome run(const Pile& p, int steps, const RankLink* link) {
+  Simulation sim(p.scene, p.lib, p.specs, link);
+  for (int s = 0; s < steps; ++s) sim.step();
+  return outcome(sim);
+}
+
+// Steps of one process until the pile holds `contacts` contacts, then `more`.
+int steps_to_contacts(const Pile& p, std::size_t contacts, int more) {
+  Simulation sim(p.scene, p.lib, p.specs);
+  int s = 0;
+  for (; s < 100000 && sim.contacts() < contacts; ++s) sim.step();
+  return s + more;
+}
+
+void require_same(const Outcome& a, const Outcome& b) {
+  CHECK(same_bits(a.bodies.position, b.bodies.position));
+  CHECK(same_bits(a.bodies.orientation, b.bodies.orientation));
+  CHECK(same_bits(a.bodies.velocity, b.bodies.velocity));
+  CHECK(same_bits(a.bodies.angular_momentum, b.bodies.angular_momentum));
+  CHECK(same_bits(a.bodies.force, b.bodies.force));
+  CHECK(same_bits(a.driver_force, b.driver_force));
+  CHECK(same_bits(a.driver_torque, b.driver_torque));
+  CHECK(same_bits(a.ledger.dissipated, b.ledger.dissipated));
+  CHECK(same_bits(a.ledger.sliding, b.ledger.sliding));
+  CHECK(same_bits(a.ledger.patch_work, b.ledger.patch_work));
+  CHECK(same_bits(a.ledger.driver_work, b.ledger.driver_work));
+  CHECK(a.energy.contacts == b.energy.contacts);
+  CHECK(same_bits(a.energy.elastic, b.energy.elastic));
+  CHECK(same_bits(a.energy.elastic_parts.tangential, b.energy.elastic_parts.tangential));
+}
+
+}  // namespace
+
+TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits on every rank") {
+  const Pile p;
+  const int kSteps = steps_to_contacts(p, 150, 300);  // through the pour into a settling pile
+  const Outcome one = run(p, kSteps, nullptr);
+  REQUIRE(one.energy.contacts > 100);
+  REQUIRE(one.rebuilds > 5);
+  for (int n : {2, 3}) {
+    ThreadRanks all(n);
+    std::vector<Outcome> got(n);
+    std::vector<std::thread> ranks;
+    for (int r = 0; r < n; ++r)
+      ranks.emplace_back([&, r] {
+        const ThreadLink link(all, r);
+        got[r] = run(p, kSteps, &link);
+      });
+    for (std::thread& t : ranks) t.join();
+    for (int r = 0; r < n; ++r) {
+      INFO(n << " ranks, rank " << r);
+      require_same(one, got[r]);
+      CHECK(got[r].rebuilds == one.rebuilds);
+    }
+  }
+}
