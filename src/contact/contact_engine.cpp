@@ -330,25 +330,29 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
 }
 
 bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers) {
-  return must_rebuild_ || trigger_.needs_rebuild(*bodies.position, *bodies.orientation, core_reach_, settings_.skin) ||
-         drivers_moved(drivers);
+  in_team(bodies.size() >= kParallelMinItems, [&] { measure_motion(bodies); });
+  return stale_after_measure(drivers);
+}
+
+void ContactEngine::measure_motion(const LocalBodies& bodies) {
+  trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin);
+}
+
+bool ContactEngine::stale_after_measure(const Drivers& drivers) {
+  const bool moved = trigger_.take_exceeded();  // taken every step: the next step measures afresh
+  return must_rebuild_ || moved || drivers_moved(drivers);
 }
 
 void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool stale) {
-  if (stale)
-    rebuild(bodies, drivers);  // poses the bodies it pairs
-  else
-    pose(bodies);
+  if (stale) rebuild(bodies, drivers);  // poses the bodies it pairs
+  in_team(bodies.size() >= kParallelMinItems, [&] { forces(bodies, drivers, dt, !stale); });
+}
+
+void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies) {
+  if (pose_bodies) pose(bodies);
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data()};
-  stats_.energy = EnergyParts{};
-  stats_.contacts = 0;
-  // Energies are summed block by block in order: repeatable whatever the thread count.
-  auto add_totals = [this](const PairList& list) {
-    for (const EnergyParts& e : list.block_energy) stats_.energy += e;
-    for (std::uint16_t c : list.touching) stats_.contacts += c;
-  };
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
   } else {
@@ -363,7 +367,6 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
       });
     });
   }
-  add_totals(body_list_);
   if (!driver_list_.pairs.empty()) {
     with_law(settings_.driver, [&](auto parts) {
       using Parts = decltype(parts);
@@ -372,9 +375,23 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
         return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
-    add_totals(driver_list_);
   }
-  reduce(bodies, drivers);
+  reduce_bodies(bodies);
+#pragma omp single nowait
+  {
+    add_totals();
+    reduce_drivers(drivers);
+  }
+}
+
+// Energies are summed block by block in order: repeatable whatever the thread count.
+void ContactEngine::add_totals() {
+  stats_.energy = EnergyParts{};
+  stats_.contacts = 0;
+  for (const PairList* list : {&body_list_, &driver_list_}) {
+    for (const EnergyParts& e : list->block_energy) stats_.energy += e;
+    for (std::uint16_t c : list->touching) stats_.contacts += c;
+  }
 }
 
 // Sums the active slots in order: the same bits for any thread count.
@@ -399,7 +416,7 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
   return total;
 }
 
-void ContactEngine::reduce(const LocalBodies& bodies, Drivers& drivers) const {
+void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
   const std::size_t n = bodies.size();
   std::vector<Vec3>& force = *bodies.force;
   std::vector<Vec3>& torque = *bodies.torque;
@@ -425,6 +442,9 @@ void ContactEngine::reduce(const LocalBodies& bodies, Drivers& drivers) const {
       torque[b] += t;
     });
   });
+}
+
+void ContactEngine::reduce_drivers(Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
   for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable
     if (!driver_list_.touching[k]) continue;

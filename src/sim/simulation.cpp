@@ -87,17 +87,32 @@ void Simulation::driver_work_half() {
   }
 }
 
+// Two parallel regions a normal step (one more at a rebuild, one with drag or fluid forces):
+// each stage inside is a work-shared loop that ends at a barrier, so the threads wake twice,
+// not once per stage. MPI's exchanges go between stages (between the regions: a region is split there).
 void Simulation::step() {
-  kick(bodies, 0.5 * dt_, rotors_);
-  drift(bodies, dt_, rotors_);
-  predict_end_velocities(bodies, 0.5 * dt_, rotors_);  // the last step's force: before it is cleared
+  const bool contacts = scene_.forces.contact.present;
+  const bool team = bodies.size() >= kParallelMinItems;
+  in_team(team, [&] {
+    start_step(bodies, 0.5 * dt_, dt_, rotors_, gravity_);  // kick, drift, predict, gravity
+    if (contacts) engine_->measure_motion(all_owned(bodies));
+  });
   drivers.advance(time(), dt_);
-  external_forces();
-  if (scene_.forces.contact.present) {
+  // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
+  if (external_) ledger.external_work += external_->add(bodies) * dt_;
+  bool stale = false;
+  if (contacts) {
     // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half
     // of the last step's reaction and half of this step's, on this step's driver motion.
     driver_work_half();
-    engine_->compute(all_owned(bodies), drivers, dt_);
+    stale = engine_->stale_after_measure(drivers);
+    if (stale) engine_->rebuild(all_owned(bodies), drivers);
+  }
+  in_team(team, [&] {
+    if (contacts) engine_->forces(all_owned(bodies), drivers, dt_, !stale);
+    kick(bodies, 0.5 * dt_, rotors_);
+  });
+  if (contacts) {
     const EnergyParts& step = engine_->stats().energy;
     ledger.dissipated += step.net;
     ledger.sliding += step.sliding;
@@ -105,7 +120,6 @@ void Simulation::step() {
     ledger.patch_work += step.patch;
     driver_work_half();
   }
-  kick(bodies, 0.5 * dt_, rotors_);
   ++step_;
 }
 
