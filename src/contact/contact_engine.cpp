@@ -246,22 +246,26 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
-  PairList fresh;
-  std::vector<BodyPair> near;
-  cells_.build_pairs(*bodies.position, bounding_, range_p, near);
-  stats_.broad_tests += cells_.candidate_tests();
-  stats_.broad_levels = cells_.levels();
-  stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
-  drop_ghost_pairs(bodies, near);
-  PairList fresh_d;
-  fresh_d.pairs = near_drivers(bodies, drivers, range_d);
-  mark_listed(bodies.size(), near, fresh_d.pairs);
-  pose(bodies);
-  BodyCandidates found = body_candidates(near, posed_, range_p);
-  fresh.pairs = std::move(found.pairs);
-  fresh.gap_at_build = std::move(found.pair_gap);
-  fill_slots(found.features, &found.gaps, fresh);
-  carry_history(body_list_, fresh);
+  const PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
+  body_list_ = PairList{};  // freed before the new lists are built
+  driver_list_ = PairList{};
+  PairList fresh, fresh_d;
+  {  // the broad phase's pairs and the candidates are freed once the slots are laid out
+    std::vector<BodyPair> near;
+    cells_.build_pairs(*bodies.position, bounding_, range_p, near);
+    stats_.broad_tests += cells_.candidate_tests();
+    stats_.broad_levels = cells_.levels();
+    stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
+    drop_ghost_pairs(bodies, near);
+    fresh_d.pairs = near_drivers(bodies, drivers, range_d);
+    mark_listed(bodies.size(), near, fresh_d.pairs);
+    pose(bodies);
+    BodyCandidates found = body_candidates(near, posed_, range_p);
+    fresh.pairs = std::move(found.pairs);
+    fresh.gap_at_build = std::move(found.pair_gap);
+    fill_slots(found.features, &found.gaps, fresh);
+  }
+  carry_history(old_body, fresh);
   body_list_ = std::move(fresh);
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
@@ -270,7 +274,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     drivers.candidates(posed_[fresh_d.pairs[k].i], fresh_d.pairs[k].j, range_d, per_pair[k]);
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_slots(per_pair, nullptr, fresh_d);
-  carry_history(driver_list_, fresh_d);
+  carry_history(old_driver, fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);

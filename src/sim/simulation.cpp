@@ -43,8 +43,9 @@ int scene_line(const Scene& scene, const std::string& key) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs)
+Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vector<BodySpec> specs)
     : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library) {
+  std::vector<BodySpec>().swap(specs);
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
