@@ -247,22 +247,26 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
-  PairList fresh;
-  std::vector<BodyPair> near;
-  cells_.build_pairs(*bodies.position, bounding_, range_p, near);
-  stats_.broad_tests += cells_.candidate_tests();
-  stats_.broad_levels = cells_.levels();
-  stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
-  drop_ghost_pairs(bodies, near);
-  PairList fresh_d;
-  fresh_d.pairs = near_drivers(bodies, drivers, range_d);
-  mark_listed(bodies.size(), near, fresh_d.pairs);
-  pose(bodies);
-  BodyCandidates found = body_candidates(near, posed_, range_p);
-  fresh.pairs = std::move(found.pairs);
-  fresh.gap_at_build = std::move(found.pair_gap);
-  fill_slots(found.features, &found.gaps, fresh);
-  carry_history(body_list_, fresh);
+  const PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
+  body_list_ = PairList{};  // freed before the new lists are built
+  driver_list_ = PairList{};
+  PairList fresh, fresh_d;
+  {  // the broad phase's pairs and the candidates are freed once the slots are laid out
+    std::vector<BodyPair> near;
+    cells_.build_pairs(*bodies.position, bounding_, range_p, near);
+    stats_.broad_tests += cells_.candidate_tests();
+    stats_.broad_levels = cells_.levels();
+    stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
+    drop_ghost_pairs(bodies, near);
+    fresh_d.pairs = near_drivers(bodies, drivers, range_d);
+    mark_listed(bodies.size(), near, fresh_d.pairs);
+    pose(bodies);
+    BodyCandidates found = body_candidates(near, posed_, range_p);
+    fresh.pairs = std::move(found.pairs);
+    fresh.gap_at_build = std::move(found.pair_gap);
+    fill_slots(found.features, &found.gaps, fresh);
+  }
+  carry_history(old_body, fresh);
   body_list_ = std::move(fresh);
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
@@ -271,7 +275,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     drivers.candidates(posed_[fresh_d.pairs[k].i], fresh_d.pairs[k].j, range_d, per_pair[k]);
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_slots(per_pair, nullptr, fresh_d);
-  carry_history(driver_list_, fresh_d);
+  carry_history(old_driver, fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
@@ -331,29 +335,36 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
 }
 
 bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers) {
-  return must_rebuild_ || trigger_.needs_rebuild(*bodies.position, *bodies.orientation, core_reach_, settings_.skin) ||
-         drivers_moved(drivers);
+  in_team(bodies.size() >= kParallelMinItems, [&] { measure_motion(bodies); });
+  return stale_after_measure(drivers);
+}
+
+void ContactEngine::measure_motion(const LocalBodies& bodies) {
+  trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin);
+}
+
+bool ContactEngine::stale_after_measure(const Drivers& drivers) {
+  const bool moved = trigger_.take_exceeded();  // taken every step: the next step measures afresh
+  return must_rebuild_ || moved || drivers_moved(drivers);
 }
 
 void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool stale) {
-  if (stale)
-    rebuild(bodies, drivers);  // poses the bodies it pairs
-  else
-    pose(bodies);
+  if (stale) rebuild(bodies, drivers);  // poses the bodies it pairs
+  in_team(bodies.size() >= kParallelMinItems, [&] { forces(bodies, drivers, dt, !stale); });
+}
+
+void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies) {
+  if (pose_bodies) pose(bodies);
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data()};
-  stats_.energy = EnergyParts{};
-  stats_.contacts = 0;
-  if (settings_.pair_energies) {
-    body_list_.pair_energy.resize(body_list_.size());
-    driver_list_.pair_energy.resize(driver_list_.size());
+  if (settings_.pair_energies) {  // a rank's share: its pairs' energies, summed again across ranks
+#pragma omp single
+    {
+      body_list_.pair_energy.resize(body_list_.size());
+      driver_list_.pair_energy.resize(driver_list_.size());
+    }
   }
-  // Energies are summed block by block in order: repeatable whatever the thread count.
-  auto add_totals = [this](const PairList& list) {
-    for (const EnergyParts& e : list.block_energy) stats_.energy += e;
-    for (std::uint16_t c : list.touching) stats_.contacts += c;
-  };
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
   } else {
@@ -368,7 +379,6 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
       });
     });
   }
-  add_totals(body_list_);
   if (!driver_list_.pairs.empty()) {
     with_law(settings_.driver, [&](auto parts) {
       using Parts = decltype(parts);
@@ -377,9 +387,23 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
         return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
-    add_totals(driver_list_);
   }
-  reduce(bodies, drivers);
+  reduce_bodies(bodies);
+#pragma omp single nowait
+  {
+    add_totals();
+    reduce_drivers(drivers);
+  }
+}
+
+// Energies are summed block by block in order: repeatable whatever the thread count.
+void ContactEngine::add_totals() {
+  stats_.energy = EnergyParts{};
+  stats_.contacts = 0;
+  for (const PairList* list : {&body_list_, &driver_list_}) {
+    for (const EnergyParts& e : list->block_energy) stats_.energy += e;
+    for (std::uint16_t c : list->touching) stats_.contacts += c;
+  }
 }
 
 // Sums the active slots in order: the same bits for any thread count.
@@ -404,7 +428,7 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
   return total;
 }
 
-void ContactEngine::reduce(const LocalBodies& bodies, Drivers& drivers) const {
+void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
   const std::size_t n = bodies.size();
   std::vector<Vec3>& force = *bodies.force;
   std::vector<Vec3>& torque = *bodies.torque;
@@ -430,6 +454,9 @@ void ContactEngine::reduce(const LocalBodies& bodies, Drivers& drivers) const {
       torque[b] += t;
     });
   });
+}
+
+void ContactEngine::reduce_drivers(Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers.size(); ++j) drivers[j].force = drivers[j].torque = Vec3::Zero();
   for (std::size_t k = 0; k < driver_list_.size(); ++k) {  // pair order: repeatable
     if (!driver_list_.touching[k]) continue;

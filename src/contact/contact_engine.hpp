@@ -48,6 +48,16 @@ class ContactEngine {
   // driver moved as far, or a rebuild was forced. Once per step: it measures each body's
   // displacement, which the pair loop's skip test reads.
   bool lists_stale(const LocalBodies& bodies, const Drivers& drivers);
+  // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
+  // the team calls measure_motion, then one thread outside the region stale_after_measure
+  // (true as lists_stale would be), then rebuild when stale, then every thread forces.
+  void measure_motion(const LocalBodies& bodies);
+  bool stale_after_measure(const Drivers& drivers);
+  void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
+  // The pairs' forces added to the bodies (team stage: ends at a barrier), the drivers'
+  // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
+  // right after a rebuild (it posed them).
+  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies);
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
@@ -64,8 +74,9 @@ class ContactEngine {
  private:
   void pose(const LocalBodies& bodies);
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
-  void rebuild(const LocalBodies& bodies, const Drivers& drivers);
-  void reduce(const LocalBodies& bodies, Drivers& drivers) const;
+  void reduce_bodies(const LocalBodies& bodies) const;
+  void reduce_drivers(Drivers& drivers) const;
+  void add_totals();
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
   void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
   bool drivers_moved(const Drivers& drivers) const;

@@ -24,6 +24,24 @@ bool pair_less(const BodyPair& a, const BodyPair& b) {
 }
 }  // namespace
 
+PairList active_part(const PairList& list) {
+  PairList kept;
+  kept.slot_begin.push_back(0);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::size_t before = kept.slots.size();
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
+      if (!list.active[s]) continue;
+      kept.features.push_back(list.features[s]);
+      kept.slots.push_back(list.slots[s]);
+    }
+    if (kept.slots.size() == before) continue;
+    kept.pairs.push_back(list.pairs[k]);
+    kept.slot_begin.push_back(std::uint32_t(kept.slots.size()));
+  }
+  kept.active.assign(kept.slots.size(), 1);
+  return kept;
+}
+
 void carry_history(const PairList& old_list, PairList& fresh) {
   std::size_t k_new = 0;
   for (std::size_t k_old = 0; k_old < old_list.size(); ++k_old) {

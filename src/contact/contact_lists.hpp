@@ -62,6 +62,10 @@ struct BodyPairIndex {
   void build(const std::vector<BodyPair>& pairs, std::size_t n_bodies, bool partner_is_body);
 };
 
+// The pairs of `list` with an active slot, and those slots alone: all carry_history reads of
+// an old list, held instead of it while the new one is built (a rebuild's memory peak).
+PairList active_part(const PairList& list);
+
 // Copies the history of every active slot of `old_list` into the slot with the same pair
 // and key in `fresh` (both sorted) and counts it in the pair's `touching`. Keys absent from `fresh`
 // end their contact.

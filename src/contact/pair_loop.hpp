@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "contact/pair_kernel.hpp"
+#include "polydem/parallel.hpp"
 
 namespace polydem {
 
@@ -18,7 +19,6 @@ constexpr std::size_t kPairBlock = 256;
 template <class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
-  list.block_energy.resize(blocks);
   const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
   auto one_block = [&](std::size_t b, PairScratch& scratch) {
     EnergyParts energy;  // J
@@ -33,17 +33,14 @@ void all_pair_forces(PairList& list, const Kernel& kernel) {
     }
     list.block_energy[b] = energy;
   };
-  if (blocks < 2) {  // small scenes: no thread wake-up
-    PairScratch scratch;
-    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
-    return;
-  }
-#pragma omp parallel
-  {
+  // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
+  in_team(blocks >= 2, [&] {
+#pragma omp single
+    list.block_energy.resize(blocks);
     PairScratch scratch;
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
-  }
+  });
 }
 
 // Calls run(flag), flag a std::bool_constant<on>: a run-time switch made a compile-time one.

@@ -2,6 +2,8 @@
 // bitwise the same for any thread count.
 #include "integrate/integrate.hpp"
 
+#include <type_traits>
+
 #include "integrate/free_rotor.hpp"
 #include "polydem/parallel.hpp"
 
@@ -26,6 +28,38 @@ void drift_body(Bodies& b, std::size_t i, double dt) {
     free_rotor::renormalize(b.orientation[i]);
     b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
   }
+}
+
+// v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame).
+template <bool kIsotropicPath>
+void kick_body(Bodies& b, std::size_t i, double h) {
+  b.velocity[i] += b.force[i] * (h / b.mass[i]);
+  if constexpr (kIsotropicPath) {
+    const Vec3 dl = b.torque[i] * h;  // N m s, world frame
+    b.angular_momentum[i] += b.orientation[i].conjugate() * dl;
+    b.angular_velocity[i] += dl / b.inertia[i].x();
+  } else {
+    b.angular_momentum[i] += b.orientation[i].conjugate() * (b.torque[i] * h);
+    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
+  }
+}
+
+template <bool kIsotropicPath>
+void predict_body(Bodies& b, std::size_t i, double h) {
+  b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
+  if constexpr (kIsotropicPath) {
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
+  } else {
+    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
+  }
+}
+
+// Runs body(i, isotropic path) over the bodies of both groups.
+template <class Body>
+void over_groups(const RotorGroups& groups, const Body& body) {
+  parallel_for(groups.isotropic.size(), [&](std::size_t k) { body(groups.isotropic[k], std::true_type{}); });
+  parallel_for(groups.asymmetric.size(), [&](std::size_t k) { body(groups.asymmetric[k], std::false_type{}); });
 }
 
 }  // namespace
@@ -54,26 +88,11 @@ void kick(Bodies& b, double h) {
 }
 
 void kick(Bodies& b, double h, const RotorGroups& groups) {
-  parallel_for(groups.isotropic.size(), [&](std::size_t k) {
-    const std::size_t i = groups.isotropic[k];
-    b.velocity[i] += b.force[i] * (h / b.mass[i]);
-    const Vec3 dl = b.torque[i] * h;  // N m s, world frame
-    b.angular_momentum[i] += b.orientation[i].conjugate() * dl;
-    b.angular_velocity[i] += dl / b.inertia[i].x();  // w = L / I in any frame
-  });
-  parallel_for(groups.asymmetric.size(), [&](std::size_t k) {
-    const std::size_t i = groups.asymmetric[k];
-    b.velocity[i] += b.force[i] * (h / b.mass[i]);
-    b.angular_momentum[i] += b.orientation[i].conjugate() * (b.torque[i] * h);
-    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
-  });
+  over_groups(groups, [&](std::size_t i, auto iso) { kick_body<decltype(iso)::value>(b, i, h); });
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  parallel_for(groups.isotropic.size(),
-                 [&](std::size_t k) { drift_body<true>(b, groups.isotropic[k], dt); });
-  parallel_for(groups.asymmetric.size(),
-                 [&](std::size_t k) { drift_body<false>(b, groups.asymmetric[k], dt); });
+  over_groups(groups, [&](std::size_t i, auto iso) { drift_body<decltype(iso)::value>(b, i, dt); });
 }
 
 void drift(Bodies& b, double dt) {
@@ -87,16 +106,16 @@ void drift(Bodies& b, double dt) {
 }
 
 void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
-  parallel_for(groups.isotropic.size(), [&](std::size_t k) {
-    const std::size_t i = groups.isotropic[k];
-    b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
-    b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
-  });
-  parallel_for(groups.asymmetric.size(), [&](std::size_t k) {
-    const std::size_t i = groups.asymmetric[k];
-    b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
-    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
-    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
+  over_groups(groups, [&](std::size_t i, auto iso) { predict_body<decltype(iso)::value>(b, i, h); });
+}
+
+void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
+  over_groups(groups, [&](std::size_t i, auto iso) {
+    kick_body<decltype(iso)::value>(b, i, h);
+    drift_body<decltype(iso)::value>(b, i, dt);
+    predict_body<decltype(iso)::value>(b, i, h);  // the last step's force: before it is cleared
+    b.force[i] = b.mass[i] * gravity;
+    b.torque[i].setZero();
   });
 }
 

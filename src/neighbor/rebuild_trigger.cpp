@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "polydem/parallel.hpp"
+
 namespace polydem {
 namespace {
 
@@ -30,6 +32,7 @@ void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Qu
   x_built = x;
   q_built = q;
   displacement_.assign(x.size(), 0.0);
+  exceeded_.store(false, std::memory_order_relaxed);
   ++rebuild_count;
 }
 
@@ -39,17 +42,30 @@ bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector
   if (q.size() != n || bounding_radius.size() != n) {
     throw std::invalid_argument("needs_rebuild: sizes of positions, orientations and radii differ");
   }
-  if (rebuild_count == 0 || x_built.size() != n) return true;
+  in_team(n >= kMinParallel, [&] { measure(x, q, bounding_radius, skin); });
+  return take_exceeded();
+}
+
+void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>& q,
+                             const std::vector<double>& bounding_radius, double skin) {
+  const std::size_t n = x.size();  // q and bounding_radius: as many (needs_rebuild checks)
+  if (rebuild_count == 0 || x_built.size() != n) {
+    exceeded_.store(true, std::memory_order_relaxed);
+    return;
+  }
   const double limit = 0.5 * skin;  // m, each body may use half the skin
-  int exceeded = 0;
-#pragma omp parallel for schedule(static) reduction(max : exceeded) if (n >= kMinParallel)
+  bool exceeded = false;            // by this thread's bodies
+#pragma omp for schedule(static) nowait
   for (std::size_t i = 0; i < n; ++i) {
     const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
     displacement_[i] = d;
     // Written as !(d <= limit) so a NaN state also asks for a rebuild.
-    if (!(d <= limit)) exceeded = 1;
+    if (!(d <= limit)) exceeded = true;
   }
-  return exceeded != 0;
+  if (exceeded) exceeded_.store(true, std::memory_order_relaxed);  // only ever set: any order gives the same
+#pragma omp barrier
 }
+
+bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }
 
 }  // namespace polydem

@@ -1,6 +1,7 @@
 #pragma once
 // Decides when the Verlet lists must be rebuilt: as soon as some core point may have moved
 // more than skin/2 since the last build, not on a fixed period.
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -24,6 +25,12 @@ class RebuildTrigger {
   // each body's bound in displacement().
   bool needs_rebuild(const std::vector<Vec3>& x, const std::vector<Quat>& q,
                      const std::vector<double>& bounding_radius, double skin);
+  // needs_rebuild in two halves, so the measure can be a stage of a team's region (parallel.hpp):
+  // `measure` keeps each body's bound (every thread of the team calls it), then, after the
+  // region, `take_exceeded` answers as needs_rebuild would and clears the answer.
+  void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
+               double skin);
+  bool take_exceeded();
   // m, per body, the displacement_bound found by the last needs_rebuild (0 right after a build):
   // two features closer than their distance at the build minus both bounds cannot have met.
   const std::vector<double>& displacement() const { return displacement_; }
@@ -35,6 +42,7 @@ class RebuildTrigger {
   std::vector<Quat> q_built;
   std::vector<double> displacement_;  // m
   std::size_t rebuild_count = 0;
+  std::atomic<bool> exceeded_{false};  // some body moved past skin/2 since the last take_exceeded
 };
 
 }  // namespace polydem

@@ -43,9 +43,10 @@ int scene_line(const Scene& scene, const std::string& key) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, const std::vector<BodySpec>& specs,
+Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vector<BodySpec> specs,
                        const RankLink* link)
     : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library), link_(link) {
+  std::vector<BodySpec>().swap(specs);
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
@@ -106,25 +107,44 @@ void Simulation::driver_work_half() {
   }
 }
 
+// Two parallel regions a normal step (one more at a rebuild, one with drag or fluid forces):
+// each stage inside is a work-shared loop that ends at a barrier, so the threads wake twice,
+// not once per stage. Many ranks: the contact stage runs between the regions, exchanges and all.
 void Simulation::step() {
-  kick(bodies, 0.5 * dt_, rotors_);
-  drift(bodies, dt_, rotors_);
-  predict_end_velocities(bodies, 0.5 * dt_, rotors_);  // the last step's force: before it is cleared
+  const bool contacts = scene_.forces.contact.present;
+  const bool one_process = !ranks_;
+  const bool team = bodies.size() >= kParallelMinItems;
+  in_team(team, [&] {
+    start_step(bodies, 0.5 * dt_, dt_, rotors_, gravity_);  // kick, drift, predict, gravity
+    if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
+  });
   drivers.advance(time(), dt_);
-  external_forces();
-  if (scene_.forces.contact.present) {
+  // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
+  if (external_) ledger.external_work += external_->add(bodies) * dt_;
+  bool stale = false;
+  if (contacts) {
     // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half
     // of the last step's reaction and half of this step's, on this step's driver motion.
     driver_work_half();
-    contact_stage();
-    const EnergyParts& step = ranks_ ? ranks_->energy() : engine_->stats().energy;
+    if (!one_process) {
+      ranks_->compute(bodies, drivers, dt_, *engine_);
+    } else {
+      stale = engine_->stale_after_measure(drivers);
+      if (stale) engine_->rebuild(all_owned(bodies), drivers);
+    }
+  }
+  in_team(team, [&] {
+    if (contacts && one_process) engine_->forces(all_owned(bodies), drivers, dt_, !stale);
+    kick(bodies, 0.5 * dt_, rotors_);
+  });
+  if (contacts) {
+    const EnergyParts& step = one_process ? engine_->stats().energy : ranks_->energy();
     ledger.dissipated += step.net;
     ledger.sliding += step.sliding;
     ledger.rolling += step.rolling;
     ledger.patch_work += step.patch;
     driver_work_half();
   }
-  kick(bodies, 0.5 * dt_, rotors_);
   ++step_;
 }
 

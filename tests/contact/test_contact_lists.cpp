@@ -1,0 +1,63 @@
+// A rebuild keeps only the old lists' active slots (active_part) to hand their history over:
+// the new lists must come out as they did from the whole old lists.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+#include "contact/contact_lists.hpp"
+
+using namespace polydem;
+
+namespace {
+
+// A list from per-pair runs of (feature b, active?), each slot's history marked by its index.
+PairList make_list(const std::vector<BodyPair>& pairs, const std::vector<std::vector<std::pair<std::uint32_t, bool>>>& runs) {
+  PairList list;
+  list.pairs = pairs;
+  list.slot_begin.push_back(0);
+  for (const auto& run : runs) {
+    for (const auto& [b, on] : run) {
+      list.features.push_back(FeaturePair{PairType{}, 0, b});
+      ContactSlot slot;
+      slot.history.fd = double(list.slots.size()) + 1.0;  // N, a tag
+      list.slots.push_back(slot);
+      list.active.push_back(on ? 1 : 0);
+    }
+    list.slot_begin.push_back(std::uint32_t(list.slots.size()));
+  }
+  list.resize_results();
+  return list;
+}
+
+}  // namespace
+
+TEST_CASE("active_part keeps the active slots with their pairs, keys and state, in order") {
+  const PairList old = make_list({{0, 1}, {0, 2}, {1, 2}}, {{{1, true}, {4, false}}, {{2, false}}, {{3, false}, {5, true}, {6, true}}});
+  const PairList kept = active_part(old);
+  REQUIRE(kept.pairs.size() == 2);  // (0, 2) had no active slot
+  CHECK((kept.pairs[0].i == 0 && kept.pairs[0].j == 1));
+  CHECK((kept.pairs[1].i == 1 && kept.pairs[1].j == 2));
+  REQUIRE(kept.slot_begin == std::vector<std::uint32_t>{0, 1, 3});
+  CHECK(kept.features[0].b == 1);
+  CHECK(kept.features[1].b == 5);
+  CHECK(kept.features[2].b == 6);
+  CHECK(kept.slots[0].history.fd == 1.0);  // old slot 0
+  CHECK(kept.slots[2].history.fd == 6.0);  // old slot 5
+  CHECK(kept.active == std::vector<std::uint8_t>{1, 1, 1});
+}
+
+TEST_CASE("carry_history from the active part gives the new list the whole old list gives") {
+  const PairList old = make_list({{0, 1}, {0, 2}, {1, 2}, {2, 3}},
+                                 {{{1, true}, {4, false}}, {{2, true}}, {{3, false}, {5, true}, {6, true}}, {{7, false}}});
+  // The new list: (0, 2) left range, (1, 3) came in, key 5 of (1, 2) is gone, key 9 new.
+  const PairList fresh = make_list({{0, 1}, {1, 2}, {1, 3}, {2, 3}}, {{{1, false}, {4, false}}, {{3, false}, {6, false}, {9, false}}, {{2, false}}, {{7, false}}});
+  PairList from_whole = fresh, from_part = fresh;
+  carry_history(old, from_whole);
+  carry_history(active_part(old), from_part);
+  CHECK(from_part.active == from_whole.active);
+  CHECK(from_part.touching == from_whole.touching);
+  for (std::size_t s = 0; s < fresh.slots.size(); ++s)
+    CHECK(from_part.slots[s].history.fd == from_whole.slots[s].history.fd);
+  CHECK(from_whole.active == std::vector<std::uint8_t>{1, 0, 0, 1, 0, 0, 0});  // keys 1 and 6 carried
+  CHECK(from_whole.touching == std::vector<std::uint16_t>{1, 1, 0, 0});
+}

@@ -1,0 +1,73 @@
+// start_step does in one pass, and in one parallel team, what kick, drift,
+// predict_end_velocities and the gravity reset did as four loops: bit for bit, at 1 and 2 threads.
+#include <catch2/catch.hpp>
+
+#include <omp.h>
+
+#include <cstring>
+#include <random>
+
+#include "integrate/integrate.hpp"
+#include "polydem/parallel.hpp"
+
+using namespace polydem;
+
+namespace {
+
+// n bodies, every third a cuboid (asymmetric path), the rest spheres, with random state.
+Bodies random_bodies(std::size_t n) {
+  Bodies b;
+  b.resize(n);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  for (std::size_t i = 0; i < n; ++i) {
+    b.position[i] = vec();
+    b.orientation[i] = Quat(1.0 + u(rng), u(rng), u(rng), u(rng)).normalized();
+    b.velocity[i] = vec();
+    b.angular_momentum[i] = 1e-3 * vec();
+    b.force[i] = vec();
+    b.torque[i] = 1e-3 * vec();
+    b.mass[i] = 1.5 + u(rng);                                                  // kg
+    b.inertia[i] = i % 3 == 0 ? Vec3(1e-3, 2e-3, 3e-3) : Vec3::Constant(2e-3);  // kg m^2
+  }
+  update_angular_velocity(b);
+  return b;
+}
+
+bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  return std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("start_step equals kick, drift, predict and the gravity reset, bit for bit, at 1 and 2 threads") {
+  const double h = 5e-6, dt = 1e-5;      // s
+  const Vec3 gravity(0.0, 0.0, -9.807);  // m/s^2
+  const std::size_t n = 3 * kParallelMinItems;  // enough to run in a team
+  Bodies separate = random_bodies(n);
+  const RotorGroups groups = group_rotors(separate);
+  REQUIRE(!groups.asymmetric.empty());
+  Bodies fused = separate;
+  kick(separate, h, groups);
+  drift(separate, dt, groups);
+  predict_end_velocities(separate, h, groups);
+  for (std::size_t i = 0; i < n; ++i) {
+    separate.force[i] = separate.mass[i] * gravity;
+    separate.torque[i].setZero();
+  }
+  for (int threads : {1, 2}) {
+    Bodies b = fused;
+    omp_set_num_threads(threads);
+    in_team(true, [&] { start_step(b, h, dt, groups, gravity); });
+    CHECK(same_bits(b.position, separate.position));
+    CHECK(same_bits(b.velocity, separate.velocity));
+    CHECK(same_bits(b.angular_momentum, separate.angular_momentum));
+    CHECK(same_bits(b.angular_velocity, separate.angular_velocity));
+    CHECK(same_bits(b.velocity_end, separate.velocity_end));
+    CHECK(same_bits(b.angular_velocity_end, separate.angular_velocity_end));
+    CHECK(same_bits(b.force, separate.force));
+    CHECK(std::memcmp(b.orientation.data(), separate.orientation.data(), n * sizeof(Quat)) == 0);
+  }
+  omp_set_num_threads(1);
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Peak memory per body: a simple cubic lattice of touching spheres (r = 5 mm, the bench bed's
+# material; 3 neighbour pairs per sphere within the skin, as many as a settled bed has) of
+# n^3 bodies falling at 0.5 m/s, 40 steps under /usr/bin/time -v: three list builds, the later
+# ones with the old and the new lists both held (the peak of a long run). Prints
+# "bodies peak_kB kB_per_body"; the per-body figure is peak / bodies, and the marginal cost
+# between two sizes is the slope.
+# usage: tools/bench/memory/run_memory.sh [POLYDEM] [N ...]   (N per side; default 15 30 45)
+set -euo pipefail
+cd "$(dirname "$0")/../../.."
+bin=$(realpath "${1:-build/polydem}")
+shift || true
+sides=("${@:-15 30 45}")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+for n in ${sides[@]}; do
+  side=$(python3 -c "print($n * 0.01 + 0.001)")
+  cat > "$work/scene.yaml" <<YAML
+simulation: {duration: "1 s", dt: "5 us", skin: "0.1 mm", seed: 1}
+shapes: [$PWD/shapes/platonic.shp]
+bodies:
+  - generate: lattice
+    shapes: sphere
+    count: $((n * n * n))
+    region: {box: {min: [0, 0, 0.0005], max: [$side, $side, $(python3 -c "print($side + 0.0005)")]}}
+    velocity: [0, 0, -0.5]
+    density: 2700
+drivers:
+  - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 1]}
+forces:
+  - gravity_force: {gravity: [0, 0, -9.807]}
+  - contact_sphere:
+      config:        {kn: 1.0e5, kt: 0.8e5, mu: 0.5, en: 0.3}
+      config_driver: {kn: 1.0e5, kt: 0.8e5, mu: 0.5, en: 0.3}
+output: {csv_every: "1 s", checkpoint_every: "1 s", contacts: false}
+YAML
+  rm -rf "$work/out"
+  /usr/bin/time -v "$bin" run "$work/scene.yaml" --out "$work/out" --threads 1 --until 2e-4 \
+      > /dev/null 2> "$work/log" || { cat "$work/log"; exit 1; }
+  peak=$(grep 'Maximum resident' "$work/log" | awk '{print $NF}')
+  bodies=$((n * n * n))
+  echo "$bodies $peak $(python3 -c "print(round($peak / $bodies, 3))")"
+done
