@@ -48,7 +48,7 @@ template <class Parts>
                         mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
   if constexpr (Parts::Normal::kCurved) kin.r_star = ri * rj / (ri + rj);
   if (!list.active[s]) slot.history = ContactHistory{};
-  const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
+  const ContactForce f = contact_force<Parts, true>(law, kin, slot.history, dt);
   list.active[s] = 1;
   slot.point = point;
   slot.force = f.force;
