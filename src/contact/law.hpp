@@ -143,8 +143,12 @@ template <class Normal, bool kLone>
                                        f_last_unit, k.m_eff, 0.5 * dt);  // m/s
   const double nu_w = k.weight * c;  // N s/m
   NormalForce out;
-  if (overlap > 0.0) out.fp = normal_damped(spring, nu_w, vn_e);
-  if constexpr (!Normal::kCurved) {
+  if constexpr (Normal::kCurved) {
+    if (overlap > 0.0) out.fp = normal_damped(spring, nu_w, vn_e);
+  } else {
+    // N, unclamped and signed: the spring at -dn is `spring` inside the overlap (one evaluation).
+    const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;
+    if (overlap > 0.0) out.fp = std::max(u, 0.0);
     if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
       const OnsetForce onset = onset_force(overlap, vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
       out.fp += onset.dashpot;
@@ -152,9 +156,8 @@ template <class Normal, bool kLone>
       // undamped contact ends at x = 0, where the kernels no longer see it (band 0), so it
       // takes neither (pushing on one side only would add k v^2 dt^2/8 per contact).
       if (c > 0.0) out.push = onset.spring;
-    } else if (f_last > 0.0) {
-      const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;  // N, unclamped, signed
-      if (u <= 0.0) out.push = release_force(f_last, u, dt);
+    } else if (f_last > 0.0 && u <= 0.0) {
+      out.push = release_force(f_last, u, dt);
     }
   }
   return out;

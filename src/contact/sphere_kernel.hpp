@@ -41,8 +41,12 @@ template <class Parts>
   const Vec3 arm_i = point - xi, arm_j = point - xj;
   const Vec3 v_rel = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(arm_i) - bodies.velocity[p.j] -
                      bodies.angular_velocity[p.j].cross(arm_j);
-  const Vec3 v_end = bodies.velocity_end[p.i] + bodies.angular_velocity_end[p.i].cross(arm_i) -
-                     bodies.velocity_end[p.j] - bodies.angular_velocity_end[p.j].cross(arm_j);
+  // m/s, for the dashpots. The arms lie along n, so spin moves the contact point along the
+  // tangent only: without a tangential dashpot the centres' velocities are all the normal one reads.
+  const Vec3 v_end = Parts::tangential_dashpot
+                         ? Vec3(bodies.velocity_end[p.i] + bodies.angular_velocity_end[p.i].cross(arm_i) -
+                                bodies.velocity_end[p.j] - bodies.angular_velocity_end[p.j].cross(arm_j))
+                         : Vec3(bodies.velocity_end[p.i] - bodies.velocity_end[p.j]);
   const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
   ContactKinematics kin{n, gap, v_rel, v_end, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
                         mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
