@@ -17,6 +17,7 @@ struct ContactParams {
   double damp_tangential = 0.0;  // -, tangential damping ratio alpha_t in [0, 1) (0: SPEC's spring alone)
   double fc = 0.0;         // N, cohesion force at touching (0: no cohesion)
   double dncut = 0.0;      // m, width of the cohesion band beyond touching
+  bool damping_contact_mass = false;  // damping_mass: contact (the normal dashpot on the contact point's mass); pair: m_i m_j/(m_i + m_j)
 };
 
 }  // namespace polydem

@@ -59,6 +59,9 @@ struct BodyPartner {
   RigidMotion motion(std::uint32_t j) const {
     return {velocity[j], angular_velocity[j], position[j], velocity_end[j], angular_velocity_end[j]};
   }
+  double point_inverse_mass(std::uint32_t j, const Vec3& point, const Vec3& n) const {
+    return polydem::point_inverse_mass(posed[j], mass[j], point - position[j], n);
+  }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
     const double mi = mass[i], mj = mass[j];
     return mi * mj / (mi + mj);
@@ -85,6 +88,7 @@ struct DriverPartner {
     return {d.velocity, d.omega, d.pivot, d.velocity, d.omega};
   }
   double m_eff(std::uint32_t i, std::uint32_t) const { return mass[i]; }
+  double point_inverse_mass(std::uint32_t, const Vec3&, const Vec3&) const { return 0.0; }  // infinitely massive
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 

@@ -40,6 +40,7 @@ LawParams prepare_law(const ContactParams& p, const ContactParams* particle) {
   law.dncut = p.fc > 0.0 ? p.dncut : 0.0;
   law.cohesion = p.fc > 0.0;
   law.rolling = p.kr > 0.0 && p.mur > 0.0;  // SPEC: mur = 0 (the default) turns rolling off
+  law.contact_mass = p.damping_contact_mass;
   if (p.hertz) {
     law.normal = NormalModel::hertz;
     combine_moduli(particle ? *particle : p, p, law);

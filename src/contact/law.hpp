@@ -126,24 +126,29 @@ namespace law_detail {
 // `push`, the spring's part of that push and the push where the clamp lets go or the overlap
 // ends. The push is a correction of the spring's impulse: kept out of the dashpot's share (the
 // ledger, the last force in h.fd), so an elastic contact dissipates nothing and a release is
-// seen once.
+// seen once. kLone: the weight is 1 at n and n+1 (the sphere path), so nothing is divided by it.
 struct NormalForce {
   double fp = 0.0, push = 0.0;  // N
 };
-template <class Normal>
+template <class Normal, bool kLone>
 [[gnu::always_inline]] inline NormalForce normal_force(const LawParams& law, const ContactKinematics& k,
                                                        const ContactHistory& h, double dt, double vn, double spring) {
   const double overlap = std::max(-k.dn, 0.0), overlap_last = std::max(-h.gap, 0.0);  // m
   const double nu_pair = k.nu >= 0.0 ? k.nu : Normal::pair_damping(law, k.m_eff, k.r_star);  // N s/m
   const double c = Normal::damping(nu_pair, overlap);  // N s/m, per unit weight
-  const double f_last = h.fd + Normal::spring(law, k.r_star, h.weight, overlap_last);  // N, fp at n
-  const double f_last_unit = h.weight > 0.0 ? f_last / h.weight : 0.0;  // N, per unit weight
+  const double weight_last = kLone ? 1.0 : h.weight;  // -
+  const double f_last = h.fd + Normal::spring(law, k.r_star, weight_last, overlap_last);  // N, fp at n
+  const double f_last_unit = kLone ? f_last : (h.weight > 0.0 ? f_last / h.weight : 0.0);  // N, per unit weight
   const double vn_e = dashpot_velocity(k.v_end.dot(k.normal), Normal::spring(law, k.r_star, 1.0, overlap), c,
                                        f_last_unit, k.m_eff, 0.5 * dt);  // m/s
   const double nu_w = k.weight * c;  // N s/m
   NormalForce out;
-  if (overlap > 0.0) out.fp = normal_damped(spring, nu_w, vn_e);
-  if constexpr (!Normal::kCurved) {
+  if constexpr (Normal::kCurved) {
+    if (overlap > 0.0) out.fp = normal_damped(spring, nu_w, vn_e);
+  } else {
+    // N, unclamped and signed: the spring at -dn is `spring` inside the overlap (one evaluation).
+    const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;
+    if (overlap > 0.0) out.fp = std::max(u, 0.0);
     if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
       const OnsetForce onset = onset_force(overlap, vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
       out.fp += onset.dashpot;
@@ -151,9 +156,8 @@ template <class Normal>
       // undamped contact ends at x = 0, where the kernels no longer see it (band 0), so it
       // takes neither (pushing on one side only would add k v^2 dt^2/8 per contact).
       if (c > 0.0) out.push = onset.spring;
-    } else if (f_last > 0.0) {
-      const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;  // N, unclamped, signed
-      if (u <= 0.0) out.push = release_force(f_last, u, dt);
+    } else if (f_last > 0.0 && u <= 0.0) {
+      out.push = release_force(f_last, u, dt);
     }
   }
   return out;
@@ -161,7 +165,8 @@ template <class Normal>
 }  // namespace law_detail
 
 // The parts in order: normal with damping, cohesion, tangential spring (and dashpot), rolling.
-template <class Parts>
+// kLone: a contact alone in its pair, weight 1 throughout (the sphere path).
+template <class Parts, bool kLone = false>
 [[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k,
                                                          ContactHistory& h, double dt) {
   using Normal = typename Parts::Normal;
@@ -179,7 +184,7 @@ template <class Parts>
     out.sliding = released.sliding;
     out.rolling = released.rolling;
     if (!Normal::kCurved && h.gap < 0.0) {
-      out.fn = law_detail::normal_force<Normal>(law, k, h, dt, vn, 0.0).push;
+      out.fn = law_detail::normal_force<Normal, kLone>(law, k, h, dt, vn, 0.0).push;
       out.force = out.fn * k.normal;
     }
     h = ContactHistory{};
@@ -189,7 +194,7 @@ template <class Parts>
   const double spring = Normal::spring(law, k.r_star, w, overlap);  // N
   // A contact that starts: one step back it was a stroke vn dt away, with no dashpot force.
   if (h.gap == kNoGap) h = ContactHistory{h.ft, h.mr, 0.0, k.dn - vn * dt, w};
-  const law_detail::NormalForce normal = law_detail::normal_force<Normal>(law, k, h, dt, vn, spring);
+  const law_detail::NormalForce normal = law_detail::normal_force<Normal, kLone>(law, k, h, dt, vn, spring);
   const double fp = normal.fp + normal.push;  // N, the compressive force the caps scale with
   out.fn = fp;
   const double fd = normal.fp - spring;  // N, the dashpot's share after the clamp

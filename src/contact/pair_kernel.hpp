@@ -4,6 +4,7 @@
 // partner (another body or a driver) so the hot loop has no virtual call.
 #include <vector>
 
+#include "contact/contact_mass.hpp"
 #include "contact/law.hpp"
 #include "geometry/shadowing.hpp"
 #include "contact/contact_lists.hpp"
@@ -136,6 +137,7 @@ struct RigidMotion {
 //   bool convex(j): the partner's core is convex (drivers: true; a mesh keeps its own rules)
 //   const Shape* shape(j): the partner body's shape, null for a driver (contact regions)
 //   Vec3 center(j), RigidMotion motion(j), double m_eff(i, j)
+//   double point_inverse_mass(j, point, n): 1/kg, the partner's share of 1/m* (contact_mass.hpp; a driver: 0)
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 
 // Evaluates the candidate feature pairs of pair k (slots [s0, s1)) into scratch.found and drops
@@ -188,15 +190,21 @@ template <class Parts, class Partner>
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
     const Vec3 lever = g.point - xi;  // m, from i's centre
+    double m_dashpot = m_eff, nu_dashpot = nu;  // kg, N s/m: the normal dashpot's mass and coefficient
+    if (law.contact_mass) {  // damping_mass: contact
+      m_dashpot = 1.0 / (point_inverse_mass(bodies.posed[p.i], bodies.mass[p.i], lever, g.normal) +
+                         partner.point_inverse_mass(p.j, g.point, g.normal));
+      nu_dashpot = Normal::pair_damping(law, m_dashpot, r_star);
+    }
     ContactKinematics kin{g.normal,
                           g.gap,
                           v_centre + w_rel.cross(lever),
                           v_centre_end + w_rel_end.cross(lever),
                           w_rel,
-                          m_eff,
+                          m_dashpot,
                           Parts::rolling && law.rolling ? lever.norm() : 0.0,
                           scratch.weight[c],
-                          nu,
+                          nu_dashpot,
                           nu_t,
                           r_star};
     const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);

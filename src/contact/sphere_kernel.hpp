@@ -41,14 +41,18 @@ template <class Parts>
   const Vec3 arm_i = point - xi, arm_j = point - xj;
   const Vec3 v_rel = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(arm_i) - bodies.velocity[p.j] -
                      bodies.angular_velocity[p.j].cross(arm_j);
-  const Vec3 v_end = bodies.velocity_end[p.i] + bodies.angular_velocity_end[p.i].cross(arm_i) -
-                     bodies.velocity_end[p.j] - bodies.angular_velocity_end[p.j].cross(arm_j);
+  // m/s, for the dashpots. The arms lie along n, so spin moves the contact point along the
+  // tangent only: without a tangential dashpot the centres' velocities are all the normal one reads.
+  const Vec3 v_end = Parts::tangential_dashpot
+                         ? Vec3(bodies.velocity_end[p.i] + bodies.angular_velocity_end[p.i].cross(arm_i) -
+                                bodies.velocity_end[p.j] - bodies.angular_velocity_end[p.j].cross(arm_j))
+                         : Vec3(bodies.velocity_end[p.i] - bodies.velocity_end[p.j]);
   const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
   ContactKinematics kin{n, gap, v_rel, v_end, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
                         mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
   if constexpr (Parts::Normal::kCurved) kin.r_star = ri * rj / (ri + rj);
   if (!list.active[s]) slot.history = ContactHistory{};
-  const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
+  const ContactForce f = contact_force<Parts, true>(law, kin, slot.history, dt);
   list.active[s] = 1;
   slot.point = point;
   slot.force = f.force;

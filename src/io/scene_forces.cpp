@@ -26,7 +26,7 @@ const std::vector<std::string> kForceNames = {"gravity_force",
 const std::vector<std::string> kConfigKeys = {"model", "E",  "poisson",   "kn",
                                               "kt",    "kr", "mur",       "mu",
                                               "en",    "damp_rate",       "damp_tangential",
-                                              "fc",    "dncut"};
+                                              "fc",    "dncut",           "damping_mass"};
 
 void read_damping(const YamlMap& m, ContactParams& p) {
   if (m.has("en") == m.has("damp_rate"))
@@ -52,6 +52,15 @@ void read_tangential_damping(const YamlMap& m, ContactParams& p) {
     m.fail("damp_tangential", "is not available with model: hertz yet (its tangential stiffness varies)");
   if (p.damp_tangential > 0.0 && !(p.mu > 0.0 && p.kt > 0.0))
     m.fail("damp_tangential", "needs friction to act on (mu > 0 and kt > 0)");
+}
+
+// damping_mass: pair (the default: the pair's m_i m_j/(m_i + m_j)) or contact (the contact
+// point's effective mass, contact/contact_mass.hpp).
+void read_damping_mass(const YamlMap& m, ContactParams& p) {
+  if (!m.has("damping_mass")) return;
+  const std::string mass = m.scalar("damping_mass");
+  if (mass != "pair" && mass != "contact") m.fail("damping_mass", "must be pair or contact, got '" + mass + "'");
+  p.damping_contact_mass = mass == "contact";
 }
 
 void read_cohesion(const YamlMap& m, ContactParams& p, const std::string& op, bool cohesion) {
@@ -101,6 +110,7 @@ ContactParams read_params(const YamlMap& op_map, const std::string& key, const s
     m.fail("kt", "mu > 0 needs kt > 0, or friction is lost (kt = kn is common)");
   read_damping(m, p);
   read_tangential_damping(m, p);
+  read_damping_mass(m, p);
   read_cohesion(m, p, op, cohesion);
   return p;
 }

@@ -21,6 +21,7 @@ struct Hasher {
   void add(const Quat& q) { add(q.x()); add(q.y()); add(q.z()); add(q.w()); }
   void add(const ContactParams& p) {
     for (double v : {p.kn, p.kt, p.kr, p.mur, p.mu, p.en, p.damp_rate, p.damp_tangential, p.fc, p.dncut}) add(v);
+    if (p.damping_contact_mass) add(std::int64_t(1));  // only when set: the default's fingerprint is as before
   }
 };
 

@@ -124,6 +124,9 @@ TEST_CASE("restitution, damping and cohesion parameters", "[scene][errors]") {
               "damp_tangential", "[0, 1)");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0, en: 0.5, damp_tangential: 0.2}"), 5,
               "damp_tangential", "mu > 0");
+  check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, damping_mass: body}"), 5,
+              "damping_mass", "pair or contact");
+  CHECK(error_of(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, damping_mass: contact}")) == "");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, damp_tangental: 0.2}"), 5,
               "damp_tangental", "did you mean 'damp_tangential'?");
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 0.5, fc: 0.05}"), 5, "fc",

@@ -21,6 +21,7 @@ struct LawParams {
   bool cohesion, rolling, tangential_damping;  // chosen once: the parts the scene's law is composed of
   NormalModel normal = NormalModel::linear;
   double e_star = 0.0, g_star = 0.0;  // Pa, Hertz: effective Young and shear moduli of the pair
+  bool contact_mass = false;  // damping_mass: contact: the normal dashpot on the contact point's mass (contact_mass.hpp)
 };
 
 // m, the gap of a contact with no previous step (it starts now).
@@ -41,7 +42,7 @@ struct ContactKinematics {
   Vec3 v_rel;     // m/s, velocity of i's contact point minus j's, at the half step (the springs' motion)
   Vec3 v_end;     // m/s, the same from the velocities predicted for the end of the step (the dashpots)
   Vec3 w_rel;     // rad/s, w_i - w_j
-  double m_eff;   // kg, m_i m_j/(m_i + m_j) (a driver: m_i)
+  double m_eff;   // kg, the normal dashpot's mass: m_i m_j/(m_i + m_j) (a driver: m_i), or the contact point's (damping_mass: contact)
   double lever;   // m, from i's centre to the contact point (rolling cap)
   double weight;  // -, patch share in (0, 1]: scales kn, kt, kr, nu and fc (1 for a lone contact)
   double nu = -1.0;  // N s/m, the pair's dashpot 2 alpha_n sqrt(kn m_eff) before the weight, set once
