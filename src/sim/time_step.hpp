@@ -43,10 +43,12 @@ constexpr double kUnsafeFraction = 0.3;
 // spring and the rolling spring, each on the smallest mass (or inertia) it meets at any
 // contact point of any body; pairs of bodies halve it, a driver does not. Each law's normal
 // part gives its stiffness at an impact at `impact_speed` (m/s; two bodies close at twice it).
-// The step: given_dt, else kAutoFraction of the limit.
+// The step: given_dt, else the fraction of the limit whose expected restitution error is
+// within `accuracy` (accuracy_fraction), else kAutoFraction of the limit.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
-                                    std::optional<double> given_dt, double impact_speed = kMinImpactSpeed);
+                                    std::optional<double> given_dt, double impact_speed = kMinImpactSpeed,
+                                    std::optional<double> accuracy = std::nullopt);
 
 // A warning line ("" when none) for a given step above kUnsafeFraction of the critical one.
 std::string unsafe_step_warning(const TimeStepEstimate& t);
