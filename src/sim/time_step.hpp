@@ -34,8 +34,9 @@ double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& sha
                              const Vec3& gravity);
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
-// heavier contacts; the half-step dashpot velocity then costs 1-3% of restitution on a single
-// impact (tools/bench/accuracy: 1% needs 0.03-0.07). A given step above kUnsafeFraction draws a warning.
+// heavier contacts; a single impact's restitution is then 0.1-0.25% off (tools/bench/accuracy;
+// simulation: accuracy picks another fraction, sim/step_accuracy.hpp). A given step above
+// kUnsafeFraction draws a warning, and `accuracy` never picks more.
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;
 
