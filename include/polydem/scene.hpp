@@ -18,9 +18,14 @@
 
 namespace polydem {
 
+// The range `simulation: accuracy` accepts (relative restitution error, dimensionless): within
+// the sphere-wall errors measured in tools/bench/accuracy (1e-5 at 0.01 x critical).
+constexpr double kMinAccuracy = 1e-5, kMaxAccuracy = 0.2;
+
 struct SimulationSettings {
   double duration = 1.0;          // s of simulated time
   std::optional<double> dt;       // s; empty means `auto` (a safe fraction of the critical step)
+  std::optional<double> accuracy; // relative restitution error of one impact `auto` aims at (sim/step_accuracy.hpp)
   int threads = 0;                // 0: all cores
   std::optional<double> skin;     // m, Verlet skin; empty: 0.1 x smallest body bounding radius
   std::uint64_t seed = 0;         // every random choice derives from it

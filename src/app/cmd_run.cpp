@@ -12,6 +12,7 @@
 #include "polydem/error.hpp"
 #include "sim/run_limits.hpp"
 #include "sim/runner.hpp"
+#include "sim/step_accuracy.hpp"
 
 namespace polydem {
 
@@ -113,9 +114,16 @@ void print_counts(const Simulation& sim) {
                 "kn %.4g N/m between bodies, %.4g N/m on drivers\n",
                 t.impact_speed, t.kn_particle, t.kn_driver);
   std::printf("chosen time step:   %.4g s (%.3g x critical)%s\n", t.chosen, t.chosen / t.critical,
-              sim.scene().simulation.dt ? "" : " [auto]");
+              sim.scene().simulation.dt ? "" : (sim.scene().simulation.accuracy ? " [auto, accuracy]" : " [auto]"));
+  if (sim.scene().forces.contact.present) std::printf("  %s\n", impact_error_note(t.chosen, t.critical).c_str());
   const double steps = sim.scene().simulation.duration / t.chosen;
   std::printf("steps for %.4g s: %.0f\n", sim.scene().simulation.duration, steps);
+}
+
+// " (expected restitution error ...)" after the dt of the start-up line, "" without a contact law.
+std::string dt_note(const Simulation& sim) {
+  if (!sim.scene().forces.contact.present) return "";
+  return " (" + impact_error_note(sim.dt(), sim.time_step().critical) + ")";
 }
 
 void warn_unsafe_step(const Simulation& sim) {
@@ -185,8 +193,8 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
   o.force = a.force;
   o.adapt_threads = !a.fixed_threads;
   if (io)
-    std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s, %d threads%s, output in %s\n",
-                 sim.bodies.size(), sim.drivers.size(), sim.dt(), omp_get_max_threads(),
+    std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s%s, %d threads%s, output in %s\n",
+                 sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), omp_get_max_threads(),
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "", o.out_dir.c_str());
   const RunSummary s = run_simulation(sim, o);
   if (!io) return s.interrupted ? kExitInterrupted : 0;

@@ -83,21 +83,34 @@ void note_locs(const YamlMap& m, const std::string& block, const std::vector<std
   scene.key_locs[block] = {m.file(), m.line()};
 }
 
+// The restitution error `dt: auto` aims at, kMinAccuracy..kMaxAccuracy (the measured range of
+// sim/step_accuracy.cpp); it chooses the step, so a numeric dt conflicts with it.
+std::optional<double> read_accuracy(const YamlMap& m, bool numeric_dt) {
+  if (!m.has("accuracy")) return std::nullopt;
+  const double a = m.quantity("accuracy", Dimension::dimensionless);
+  if (!(a >= kMinAccuracy && a <= kMaxAccuracy))
+    m.fail("accuracy", "the relative restitution error must be within [1e-5, 0.2], got " + m.scalar("accuracy"));
+  if (numeric_dt)
+    m.fail("accuracy", "accuracy chooses the step: it needs dt: auto (or no dt), but dt is " + m.scalar("dt"));
+  return a;
+}
+
 SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   root.require("simulation", "simulation: {duration: \"1 s\", dt: auto}");
   const YamlMap m =
-      root.map("simulation", "simulation", {"duration", "dt", "threads", "skin", "seed"});
+      root.map("simulation", "simulation", {"duration", "dt", "accuracy", "threads", "skin", "seed"});
   SimulationSettings s;
   s.duration = check_positive(m, "duration", m.quantity("duration", Dimension::time));
   if (m.has("dt") && m.scalar("dt") != "auto")
     s.dt = check_positive(m, "dt", m.quantity("dt", Dimension::time));
+  s.accuracy = read_accuracy(m, s.dt.has_value());
   const long long threads = m.integer("threads", 0, 0);
   if (threads > kMaxThreads)
     m.fail("threads", "at most " + std::to_string(kMaxThreads) + ", got " + m.scalar("threads"));
   s.threads = static_cast<int>(threads);
   if (m.has("skin")) s.skin = check_positive(m, "skin", m.quantity("skin", Dimension::length));
   s.seed = m.unsigned64("seed", 0);
-  note_locs(m, "simulation", {"duration", "dt", "threads", "skin"}, scene);
+  note_locs(m, "simulation", {"duration", "dt", "accuracy", "threads", "skin"}, scene);
   if (s.dt && *s.dt > s.duration)
     m.fail("dt", "the step " + m.scalar("dt") + " is longer than the duration " + m.scalar("duration") +
                      " (the limit): the run would take no step");

@@ -54,7 +54,8 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
-                                    scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_));
+                                    scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_),
+                                    scene.simulation.accuracy);
   if (!contacts && !scene.simulation.dt)
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
                                    "'auto' needs a contact law to estimate the critical step; give a number"));

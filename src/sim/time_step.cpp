@@ -9,6 +9,7 @@
 
 #include "driver/drivers.hpp"
 #include "contact/contact_lists.hpp"
+#include "sim/step_accuracy.hpp"
 
 namespace polydem {
 
@@ -107,7 +108,8 @@ const char* step_mode_name(StepMode mode) {
 
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
-                                    std::optional<double> given_dt, double impact_speed) {
+                                    std::optional<double> given_dt, double impact_speed,
+                                    std::optional<double> accuracy) {
   Compliance worst;
   double lightest = std::numeric_limits<double>::infinity();  // kg
   double heaviest = 0.0, rounding = 0.0;  // kg, m (largest rounding radius: the stiffest Hertz contact)
@@ -138,7 +140,10 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
   e.critical = limit.dt;
   e.critical_normal = normal.dt;
   e.mode = limit.mode;
-  e.chosen = given_dt ? *given_dt : kAutoFraction * limit.dt;
+  if (given_dt)
+    e.chosen = *given_dt;
+  else
+    e.chosen = (accuracy ? accuracy_fraction(*accuracy) : kAutoFraction) * limit.dt;
   return e;
 }
 

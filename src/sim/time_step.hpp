@@ -34,8 +34,9 @@ double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& sha
                              const Vec3& gravity);
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
-// heavier contacts; the half-step dashpot velocity then costs 1-3% of restitution on a single
-// impact (tools/bench/accuracy: 1% needs 0.03-0.07). A given step above kUnsafeFraction draws a warning.
+// heavier contacts; a single impact's restitution is then 0.1-0.25% off (tools/bench/accuracy;
+// simulation: accuracy picks another fraction, sim/step_accuracy.hpp). A given step above
+// kUnsafeFraction draws a warning, and `accuracy` never picks more.
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;
 
@@ -43,10 +44,12 @@ constexpr double kUnsafeFraction = 0.3;
 // spring and the rolling spring, each on the smallest mass (or inertia) it meets at any
 // contact point of any body; pairs of bodies halve it, a driver does not. Each law's normal
 // part gives its stiffness at an impact at `impact_speed` (m/s; two bodies close at twice it).
-// The step: given_dt, else kAutoFraction of the limit.
+// The step: given_dt, else the fraction of the limit whose expected restitution error is
+// within `accuracy` (accuracy_fraction), else kAutoFraction of the limit.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
-                                    std::optional<double> given_dt, double impact_speed = kMinImpactSpeed);
+                                    std::optional<double> given_dt, double impact_speed = kMinImpactSpeed,
+                                    std::optional<double> accuracy = std::nullopt);
 
 // A warning line ("" when none) for a given step above kUnsafeFraction of the critical one.
 std::string unsafe_step_warning(const TimeStepEstimate& t);

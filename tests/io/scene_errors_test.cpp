@@ -111,6 +111,17 @@ TEST_CASE("non-positive sizes, densities, stiffnesses and times", "[scene][error
   check_error(with_line(1, "simulation: {duration: 0}"), 1, "duration", "> 0");
 }
 
+TEST_CASE("simulation accuracy: its range, and no numeric dt beside it", "[scene][errors]") {
+  check_error(with_line(1, "simulation: {duration: 1, accuracy: 0.3}"), 1, "accuracy", "within [1e-5, 0.2], got 0.3");
+  check_error(with_line(1, "simulation: {duration: 1, accuracy: 1e-6}"), 1, "accuracy", "within [1e-5, 0.2]");
+  check_error(with_line(1, "simulation: {duration: 1, accuracy: -1e-3}"), 1, "accuracy", "within [1e-5, 0.2]");
+  check_error(with_line(1, "simulation: {duration: 1, dt: \"1 us\", accuracy: 1e-3}"), 1, "accuracy",
+              "needs dt: auto (or no dt), but dt is 1 us");
+  check_error(with_line(1, "simulation:\n  duration: 1\n  dt: 1e-6\n  accuracy: 1e-3"), 4, "accuracy", "needs dt: auto");
+  CHECK(error_of(with_line(1, "simulation: {duration: 1, dt: auto, accuracy: 1e-3}")) == "");
+  CHECK(error_of(with_line(1, "simulation: {duration: 1, accuracy: 0.2}")) == "");
+}
+
 TEST_CASE("restitution, damping and cohesion parameters", "[scene][errors]") {
   check_error(with_line(5, "      config: {kn: 1e5, kt: 1e5, mu: 0.5, en: 1.5}"), 5, "en",
               "(0, 1]");

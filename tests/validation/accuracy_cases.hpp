@@ -20,17 +20,33 @@ inline double critical_step(const Scene& scene, const ShapeLibrary& lib, const s
   return Simulation(scene, lib, specs).time_step().critical;
 }
 
-// Sphere on a wall at 0.5 m/s: error of the restitution.
-inline double binary_impact(double fraction, double en = kEn) {
+// Sphere on a wall at 0.5 m/s, the step set by `step(scene, lib, specs)`: error of the restitution.
+template <class SetStep>
+double sphere_wall_error(double en, const SetStep& step) {
   Scene scene = base_scene(law(kKn, en), true);
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
   const std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -0.5})};
-  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  step(scene, lib, specs);
   Simulation sim(scene, lib, specs);
   const MeasuredImpact r = run_impact(
       sim, 0.5, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
       [&] { return sim.bodies.velocity[0].z(); });
   return std::abs(r.restitution / en - 1.0);
+}
+
+// The same at dt = fraction x critical.
+inline double binary_impact(double fraction, double en = kEn) {
+  return sphere_wall_error(en, [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+    scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  });
+}
+
+// The same at `dt: auto` with `simulation: accuracy` (the step chosen for that error).
+inline double binary_impact_at_accuracy(double accuracy, double en = kEn) {
+  return sphere_wall_error(en, [&](Scene& scene, const ShapeLibrary&, const std::vector<BodySpec>&) {
+    scene.simulation.dt.reset();
+    scene.simulation.accuracy = accuracy;
+  });
 }
 
 // Spheres of radius 5 and 7 mm (masses 1 : 2.74) meeting at 0.5 m/s: error of the restitution.

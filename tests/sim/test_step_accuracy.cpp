@@ -1,0 +1,53 @@
+// The step for a target restitution error (simulation: accuracy, sim/step_accuracy.cpp): the
+// model reproduces the sphere-wall errors measured in tools/bench/accuracy/results.csv, grows
+// with the step, and inverts; `dt: auto` without it keeps kAutoFraction.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "polydem/scene.hpp"
+#include "sim/step_accuracy.hpp"
+#include "sim/time_step.hpp"
+
+using namespace polydem;
+
+TEST_CASE("step accuracy: the model passes through the measured sphere-wall errors", "[step_accuracy]") {
+  // tools/bench/accuracy/results.csv, binary impact at e9b1677.
+  CHECK(expected_restitution_error(0.1) == Approx(0.00194553).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.2) == Approx(0.0128749).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.3) == Approx(0.0411651).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.01) == Approx(1.04713e-05).epsilon(1e-9));
+  // Between two points, the log-log line: 0.07 -> 0.1 has slope log(1.9455e-3/8.4174e-4)/log(1/0.7).
+  const double slope = std::log(0.00194553 / 0.000841735) / std::log(0.1 / 0.07);
+  CHECK(expected_restitution_error(0.085) == Approx(0.000841735 * std::pow(0.085 / 0.07, slope)).epsilon(1e-9));
+  // Below the smallest measured fraction, second order; above the largest, unknown.
+  CHECK(expected_restitution_error(0.001) == Approx(3.88329e-07 / 4).epsilon(1e-9));
+  CHECK(std::isinf(expected_restitution_error(0.6)));
+}
+
+TEST_CASE("step accuracy: error grows with the step and the fraction inverts it", "[step_accuracy]") {
+  double previous = 0.0;
+  for (double f = 1e-3; f <= 0.5; f *= 1.05) {
+    const double e = expected_restitution_error(f);
+    CHECK(e > previous);
+    previous = e;
+  }
+  double previous_fraction = 0.0;
+  for (double a = kMinAccuracy; a <= kMaxAccuracy; a *= 1.1) {
+    const double f = accuracy_fraction(a);
+    INFO("accuracy " << a << ", fraction " << f);
+    CHECK(f >= previous_fraction);
+    CHECK(f <= kUnsafeFraction);
+    CHECK(expected_restitution_error(f) <= a * (1 + 1e-12));
+    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f) == Approx(a).epsilon(1e-9));
+    previous_fraction = f;
+  }
+  CHECK(accuracy_fraction(0.00194553) == Approx(0.1).epsilon(1e-9));
+  CHECK(accuracy_fraction(0.1) == kUnsafeFraction);  // beyond 0.3 x critical: capped
+}
+
+TEST_CASE("step accuracy: the note names the error and the fraction", "[step_accuracy]") {
+  CHECK(impact_error_note(1e-6, 1e-5) == "expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical)");
+  CHECK(impact_error_note(6e-6, 1e-5).find("above 0.14 (0.6 x critical") != std::string::npos);
+  CHECK(impact_error_note(1e-6, INFINITY).empty());
+}
