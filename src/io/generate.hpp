@@ -2,7 +2,7 @@
 // Turns a scene's bodies and generators into the explicit list of bodies to simulate.
 #include <vector>
 
-#include "polydem/scene.hpp"
+#include "io/scene_settings.hpp"
 #include "polydem/shape_library.hpp"
 
 namespace polydem {

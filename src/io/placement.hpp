@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "driver/drivers.hpp"
-#include "polydem/scene.hpp"
+#include "io/scene_settings.hpp"
 
 namespace polydem {
 

@@ -3,7 +3,7 @@
 // polydem/scene.hpp. Every later stage trusts what comes out of here.
 #include <string>
 
-#include "polydem/scene.hpp"
+#include "io/scene_settings.hpp"
 
 namespace polydem {
 

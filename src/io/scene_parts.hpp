@@ -4,8 +4,8 @@
 
 #include <string>
 
+#include "io/scene_settings.hpp"
 #include "io/yaml_reader.hpp"
-#include "polydem/scene.hpp"
 
 namespace polydem {
 

@@ -1,8 +1,8 @@
 #pragma once
 // The `probes:` list of the `output:` block: time series polydem computes itself (flow
 // through a plane, angle of repose in a drum), each written to NAME.csv on csv_every.
+#include "io/scene_settings.hpp"
 #include "io/yaml_reader.hpp"
-#include "polydem/scene.hpp"
 
 namespace polydem {
 

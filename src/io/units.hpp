@@ -2,7 +2,7 @@
 // Quantities with units in the scene file: a bare number is SI, a string "5 mm" is converted.
 #include <string>
 
-#include "polydem/scene.hpp"
+#include "io/scene_settings.hpp"
 
 namespace polydem {
 

@@ -2,8 +2,8 @@
 // Turns body specifications (explicit and generated) into the body arrays of a run.
 #include <vector>
 
+#include "io/scene_settings.hpp"
 #include "polydem/bodies.hpp"
-#include "polydem/scene.hpp"
 #include "polydem/shape_library.hpp"
 
 namespace polydem {

@@ -5,13 +5,13 @@
 #include <optional>
 #include <vector>
 
+#include "contact/contact_engine.hpp"
 #include "driver/drivers.hpp"
 #include "field/external_forces.hpp"
 #include "integrate/integrate.hpp"
+#include "io/scene_settings.hpp"
 #include "polydem/bodies.hpp"
-#include "polydem/scene.hpp"
 #include "polydem/shape_library.hpp"
-#include "contact/contact_engine.hpp"
 #include "sim/rank_contacts.hpp"
 #include "sim/time_step.hpp"
 

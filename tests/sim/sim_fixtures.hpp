@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "polydem/scene.hpp"
+#include "io/scene_settings.hpp"
 #include "polydem/shape_library.hpp"
 #include "shape/mass.hpp"
 #include "sim/simulation.hpp"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "polydem/scene.hpp"
+#include "io/scene_settings.hpp"
 #include "sim/step_accuracy.hpp"
 #include "sim/time_step.hpp"
 
