@@ -72,7 +72,7 @@ struct Reader {
   std::size_t left() const { return end - at; }
   template <class T> void pod(T& v) {
     if (left() < sizeof(T)) fail("truncated at byte " + std::to_string(at));
-    std::memcpy(&v, bytes.data() + at, sizeof(T));
+    std::memcpy(static_cast<void*>(&v), bytes.data() + at, sizeof(T));  // Eigen types: trivially copyable in fact
     at += sizeof(T);
   }
   void flag(bool& b) {
@@ -93,7 +93,7 @@ struct Reader {
                                         " (was it written for another scene?)");
     count(n, sizeof(T), "entry");
     v.resize(n);
-    std::memcpy(v.data(), bytes.data() + at, n * sizeof(T));
+    std::memcpy(static_cast<void*>(v.data()), bytes.data() + at, n * sizeof(T));
     at += n * sizeof(T);
   }
   void string(std::string& s) {
