@@ -124,9 +124,13 @@ BodyCandidates body_candidates(const std::vector<BodyPair>& near, const std::vec
   parallel_for_dynamic(near.size(), [&](std::size_t k) {
     const PosedBody& a = posed[near[k].i];
     const PosedBody& b = posed[near[k].j];
+    // Found into reused scratch, then copied: one exact allocation per pair, not one per doubling.
+    thread_local std::vector<FeaturePair> found;
     thread_local std::vector<double> distances2;
+    found.clear();
     distances2.clear();
-    all.pair_gap[k] = candidate_features(a, b, range, all.features[k], &distances2);
+    all.pair_gap[k] = candidate_features(a, b, range, found, &distances2);
+    all.features[k].assign(found.begin(), found.end());
     all.gaps[k].resize(distances2.size());
     for (std::size_t c = 0; c < distances2.size(); ++c) all.gaps[k][c] = gap_below(distances2[c], a.radius + b.radius);
   });
@@ -163,7 +167,9 @@ void fill_slots(const std::vector<std::vector<FeaturePair>>& per_pair, const std
     thread_local std::vector<std::uint32_t> order;
     order.resize(c.size());
     std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return feature_key(c[x]) < feature_key(c[y]); });
+    const auto by_key = [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); };
+    if (!std::is_sorted(c.begin(), c.end(), by_key))  // body pairs come sorted (candidate_features' order)
+      std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return by_key(c[x], c[y]); });
     const std::uint32_t base = list.slot_begin[k];
     for (std::size_t r = 0; r < order.size(); ++r) {
       list.features[base + r] = c[order[r]];

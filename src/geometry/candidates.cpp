@@ -11,6 +11,12 @@
 namespace polydem {
 namespace {
 
+// Axis-aligned box of an edge (world, m): the distance between two boxes bounds the distance
+// between their edges from below.
+struct Box {
+  Vec3 lo, hi;
+};
+
 // Features of one body that may come within `cutoff` of the other body's core, with their
 // reach towards it: the largest (x - own centre) . u over the feature's vertices, u the unit
 // vector from the own centre to the other's. Two features are at least
@@ -19,6 +25,7 @@ namespace {
 struct NearFeatures {
   std::vector<std::uint16_t> vertices, edges, faces;
   std::vector<double> vertex_reach, edge_reach, face_reach;  // m, one per entry
+  std::vector<Box> edge_box;       // one per entry of `edges`
   std::vector<Vec3> face_normals;  // world, outward, one per entry of `faces`
   std::vector<double> projection;  // m, (vertex - own centre) . u per vertex of the body (scratch)
   double support = 0.0;            // m, largest projection: the body's reach towards the other
@@ -26,6 +33,21 @@ struct NearFeatures {
 
 // Relative margin on the projection bound: round-off must never drop a true candidate.
 constexpr double kProjectionMargin = 1e-9;
+// Relative margin of the box and line bounds (of cutoff^2): a pair is dropped by them only when
+// its exact distance would drop it too, so the candidates and their distances keep their bits.
+constexpr double kBoxMargin = 1e-6;
+
+// m^2, the squared distance between boxes a and b (0 when they overlap): at most the squared
+// distance between any point of a and any point of b.
+inline double box_gap2(const Box& a, const Box& b) {
+  double g2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double g = std::max(std::max(a.lo[k] - b.hi[k], b.lo[k] - a.hi[k]), 0.0);  // m
+    g2 += g * g;
+  }
+  return g2;
+}
+inline double box_gap2(const Vec3& p, const Box& b) { return box_gap2(Box{p, p}, b); }
 
 // m, radius of the sphere about the centre of mass holding the core (unrounded) polyhedron.
 double core_bounding_radius(const PosedBody& body) {
@@ -56,8 +78,9 @@ void project(const PosedBody& body, const Vec3& u, NearFeatures& near) {
 }
 
 // Fills `near` with the features of `body` that reach at least `floor` towards the other body
-// (the slab test) and lie closer than `reach` to its centre `centre` (the sphere test), in
-// index order. The slab test is cheap and runs first.
+// (the slab test) and lie closer than `reach` to its centre `centre` (the sphere test; for a
+// face, its plane: the polygon's distance cost more than the pairs it spared), in index order.
+// The slab test is cheap and runs first.
 void collect_near(const PosedBody& body, const Vec3& centre, double reach, double floor, NearFeatures& near) {
   const Shape& s = *body.shape;
   const double reach2 = reach * reach;
@@ -69,6 +92,7 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, doubl
   near.edge_reach.clear();
   near.face_reach.clear();
   near.face_normals.clear();
+  near.edge_box.clear();
   for (std::size_t i = 0; i < s.vertices.size(); ++i)
     if (proj[i] >= floor && (body.vertices[i] - centre).squaredNorm() < reach2) {
       near.vertices.push_back(static_cast<std::uint16_t>(i));
@@ -81,6 +105,8 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, doubl
     if (point_segment_distance_sq(centre, p0, body.vertices[s.edges[i][1]] - p0) < reach2) {
       near.edges.push_back(static_cast<std::uint16_t>(i));
       near.edge_reach.push_back(edge_reach);
+      const Vec3& p1 = body.vertices[s.edges[i][1]];
+      near.edge_box.push_back({p0.cwiseMin(p1), p0.cwiseMax(p1)});
     }
   }
   for (std::size_t i = 0; i < s.faces.size(); ++i) {
@@ -88,7 +114,8 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, doubl
     for (int v : s.faces[i]) face_reach = std::max(face_reach, proj[v]);
     if (face_reach < floor) continue;
     const Vec3 n = body.rotation * s.face_normals[i];
-    if (face_distance_sq(centre, body, static_cast<int>(i), n, reach2) < reach2) {
+    const double d = (centre - body.vertices[s.faces[i][0]]).dot(n);  // m, the centre above the face plane
+    if (d * d < reach2) {
       near.faces.push_back(static_cast<std::uint16_t>(i));
       near.face_reach.push_back(face_reach);
       near.face_normals.push_back(n);
@@ -101,6 +128,7 @@ struct CandidateSink {
   std::vector<FeaturePair>& pairs;
   std::vector<double>* distances2;  // m^2, or null
   double slab;                      // m, two features whose reaches sum below it are too far apart
+  double box_limit2;                // m^2, edge boxes farther apart than its root hold no candidate
   double nearest2 = std::numeric_limits<double>::infinity();
 };
 
@@ -133,6 +161,7 @@ void append_vertex_edge(const PosedBody& V, const PosedBody& E, const NearFeatur
       const std::size_t iv = v_is_a ? oi : ij, ie = v_is_a ? ij : oi;
       if (nv.vertex_reach[iv] + ne.edge_reach[ie] < out.slab) continue;
       const std::uint16_t v = nv.vertices[iv], e = ne.edges[ie];
+      if (box_gap2(V.vertices[v], ne.edge_box[ie]) > out.box_limit2) continue;
       const std::uint16_t i = v_is_a ? v : e, j = v_is_a ? e : v;
       const Vec3& p0 = E.vertices[E.shape->edges[e][0]];
       keep_if_near({type, i, j}, point_segment_distance_sq(V.vertices[v], p0, E.vertices[E.shape->edges[e][1]] - p0),
@@ -158,6 +187,19 @@ void append_vertex_face(const PosedBody& V, const PosedBody& F, const NearFeatur
     }
 }
 
+// sin^2 of the angle above which two edges' common normal is trusted for the line test.
+constexpr double kSkewSin2 = 1e-6;
+
+// True when the lines of two skew edges (r = pa - pb, directions da, db) are farther apart than
+// sqrt(limit2): the segments then are too. Decided on squares: no division, no square root.
+inline bool lines_apart(const Vec3& r, const Vec3& da, const Vec3& db, double limit2) {
+  const Vec3 c = da.cross(db);
+  const double c2 = c.squaredNorm();
+  if (c2 <= kSkewSin2 * da.squaredNorm() * db.squaredNorm()) return false;  // near parallel: no verdict
+  const double rc = r.dot(c);  // m^3, line distance times |c|
+  return rc * rc > limit2 * c2;
+}
+
 void append_edge_edge(const PosedBody& A, const PosedBody& B, const NearFeatures& na, const NearFeatures& nb,
                       double cutoff2, CandidateSink& out) {
   for (std::size_t i = 0; i < na.edges.size(); ++i) {
@@ -166,10 +208,12 @@ void append_edge_edge(const PosedBody& A, const PosedBody& B, const NearFeatures
     const Vec3 da = A.vertices[A.shape->edges[ea][1]] - pa;
     for (std::size_t j = 0; j < nb.edges.size(); ++j) {
       if (na.edge_reach[i] + nb.edge_reach[j] < out.slab) continue;
+      if (box_gap2(na.edge_box[i], nb.edge_box[j]) > out.box_limit2) continue;
       const std::uint16_t eb = nb.edges[j];
       const Vec3& pb = B.vertices[B.shape->edges[eb][0]];
-      keep_if_near({PairType::edge_edge, ea, eb},
-                   segment_segment_distance_sq(pa, da, pb, B.vertices[B.shape->edges[eb][1]] - pb), cutoff2, out);
+      const Vec3 db = B.vertices[B.shape->edges[eb][1]] - pb;
+      if (lines_apart(pa - pb, da, db, out.box_limit2)) continue;
+      keep_if_near({PairType::edge_edge, ea, eb}, segment_segment_distance_sq(pa, da, pb, db), cutoff2, out);
     }
   }
 }
@@ -220,10 +264,11 @@ double candidate_features(const PosedBody& A, const PosedBody& B, double range, 
                                    : -std::numeric_limits<double>::infinity();
   project(A, u, na);
   project(B, -u, nb);
+  if (na.support + nb.support < slab) return kNone;  // the bodies' own supports are too far apart
   collect_near(A, B.position, core_bounding_radius(B) + cutoff, slab - nb.support, na);
   if (na.vertices.empty() && na.edges.empty() && na.faces.empty()) return kNone;
   collect_near(B, A.position, core_bounding_radius(A) + cutoff, slab - na.support, nb);
-  CandidateSink out{pairs, distances2, slab};
+  CandidateSink out{pairs, distances2, slab, cutoff2 * (1.0 + kBoxMargin)};
   append_vertex_pairs(A, B, na, nb, cutoff2, out);
   append_vertex_edge(A, B, na, nb, cutoff2, PairType::vertex_edge, out);
   append_vertex_edge(B, A, nb, na, cutoff2, PairType::edge_vertex, out);
