@@ -25,7 +25,7 @@ double largest_bounding_radius(const std::vector<Shape>& shapes, const Bodies& b
 
 RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies,
                            ContactSettings settings)
-    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()) {
+    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()), pair_counts_(link.ranks()) {
   const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
   halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), settings_.skin + band);
   settings_.spheres_only = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) {
@@ -90,7 +90,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     bodies.force[plan_.local[k]] += store_.force[k];
     bodies.torque[plan_.local[k]] += store_.torque[k];
   }
-  share_results(drivers);
+  share_results(drivers, stale);
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its owner.
@@ -110,9 +110,11 @@ void RankContacts::sync_bodies(Bodies& bodies) const {
     if (r != link_.rank()) unpack_owned(all[r], bodies);
 }
 
-// One gather: the touching driver pairs' reactions and the pair energies.
-void RankContacts::share_results(Drivers& drivers) {
-  const EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
+// One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'
+// pair counts at rebuilds only (the lists, so the counts, hold until the next).
+void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
+  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
+  if (!rebuilt) mine.counts.clear();
   std::vector<char> bytes;
   append_section(bytes, reaction_shares());
   append_section(bytes, mine.counts);
@@ -125,6 +127,8 @@ void RankContacts::share_results(Drivers& drivers) {
     std::size_t at = 0;
     for (const ReactionShare& x : read_section<ReactionShare>(all[r], at)) reactions.push_back(x);
     energies[r].counts = read_section<PairCounts>(all[r], at);
+    if (rebuilt) pair_counts_[r] = energies[r].counts;
+    else energies[r].counts = pair_counts_[r];
     energies[r].pairs = read_section<PairEnergy>(all[r], at);
     energies[r].contacts = read_section<std::uint64_t>(all[r], at).at(0);
   }

@@ -5,7 +5,8 @@
 // sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
 // to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
 // reactions (summed in the one-process pair order) and the pair energies (summed in the
-// one-process blocks of kPairBlock pairs). At a rebuild every rank gathers every body's state
+// one-process blocks of kPairBlock pairs; where each pair falls follows from the owned
+// bodies' pair counts, sent at rebuilds). At a rebuild every rank gathers every body's state
 // (sync_bodies), cuts the slabs again and takes its bodies and their contact histories from
 // the table of active slots in global ids (sim/contact_table.hpp). Every rank keeps arrays for
 // all bodies: only its owned bodies and ghosts are current between gathers.
@@ -60,7 +61,7 @@ class RankContacts {
   bool lists_stale(const Bodies& bodies, const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
   void exchange_ghosts(Bodies& bodies) const;
-  void share_results(Drivers& drivers);
+  void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
 
   const RankLink& link_;
@@ -69,6 +70,7 @@ class RankContacts {
   std::size_t n_bodies_;
   double halo_;  // m, ghosts: bodies within this distance of the slab
   GhostPlan plan_;
+  std::vector<std::vector<PairCounts>> pair_counts_;  // per rank, sent at the last rebuild
   RotorGroups owned_rotors_;
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;

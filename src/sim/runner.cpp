@@ -344,9 +344,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const ContactOperator& law = sim.scene().forces.contact;
   const double kn = sim.time_step().kn_particle, kn_driver = sim.time_step().kn_driver;  // N/m
   OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
-  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check
+  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check, after their sync_state
     if (!law.present) return;
-    sim.sync_state();
     const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
                                          kn_driver, sim.time());
     if (!w.empty() && io) std::fprintf(stderr, "%s\n", w.c_str());

@@ -118,9 +118,10 @@ void Simulation::step() {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
-  // The bodies this rank moves; a rebuild in the contact stage hands some to other ranks
-  // before the closing kick (a reference: it reads the new owners).
-  const RotorGroups& moved = one_process ? rotors_ : ranks_->owned_rotors();
+  // The bodies this rank moves (all without a contact stage: nothing to cut); a rebuild in
+  // the contact stage hands some to other ranks before the closing kick (a reference: it
+  // reads the new owners).
+  const RotorGroups& moved = one_process || !contacts ? rotors_ : ranks_->owned_rotors();
   in_team(team, [&] {
     start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
