@@ -1,7 +1,8 @@
 #pragma once
 // Slab decomposition: the domain cut across its longest side into parts holding equal numbers
 // of bodies, a part owning the bodies whose centre lies in its slab; each part also sees, as
-// ghosts, the bodies within `halo` of its slab (the pairs its owned bodies may form).
+// ghosts, the bodies within `halo` of its slab (the pairs its owned bodies may form:
+// sim/ghost_plan.hpp).
 #include <vector>
 
 #include "polydem/math.hpp"
