@@ -2,8 +2,10 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
 
@@ -173,6 +175,17 @@ void print_thread_use(const std::vector<std::int64_t>& steps_at) {
                "then; --fixed-threads to keep them all)\n", shares.c_str());
 }
 
+// Each rank's share and traffic (POLYDEM_MPI_COUNTS set: README, MPI section): counted, not timed.
+void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t steps) {
+  const LinkCounts c = link.counts();
+  const double n = double(std::max<std::int64_t>(1, steps));
+  std::fprintf(stderr, "polydem: rank %d of %d: holds %zu of %zu bodies (%zu owned, %zu ghosts); per step: %.3g "
+               "point-to-point messages, %.4g bytes; %.3g collectives, %.4g bytes of its own in them\n",
+               link.rank(), link.ranks(), sim.owned_bodies() + sim.ghost_bodies(), sim.bodies.size(),
+               sim.owned_bodies(), sim.ghost_bodies(), double(c.parcels) / n, double(c.parcel_bytes) / n,
+               double(c.collectives) / n, double(c.collective_bytes) / n);
+}
+
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
@@ -197,6 +210,7 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
                  sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), omp_get_max_threads(),
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "", o.out_dir.c_str());
   const RunSummary s = run_simulation(sim, o);
+  if (link && std::getenv("POLYDEM_MPI_COUNTS")) print_link_counts(sim, *link, s.steps);
   if (!io) return s.interrupted ? kExitInterrupted : 0;
   const ContactStats& c = sim.engine().stats();
   std::fprintf(stderr, "polydem: %lld steps in %.2f s (%.3g us per body-step), %zu rebuilds; ParaView: %s/scene.pvd\n",

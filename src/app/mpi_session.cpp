@@ -26,6 +26,8 @@ class MpiLink final : public RankLink {
   int ranks() const override { return ranks_; }
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
     const int n = int(mine.size());
+    ++counts_.collectives;
+    counts_.collective_bytes += mine.size();
     std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
     MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
     for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
@@ -35,9 +37,25 @@ class MpiLink final : public RankLink {
     for (int r = 0; r < ranks_; ++r) per_rank[r].assign(all.begin() + offsets[r], all.begin() + offsets[r + 1]);
     return per_rank;
   }
+  void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
+    std::vector<MPI_Request> pending(out.size() + in.size());
+    for (std::size_t k = 0; k < in.size(); ++k)
+      MPI_Irecv(in[k].bytes.data(), int(in[k].bytes.size()), MPI_CHAR, in[k].rank, kGhostTag, MPI_COMM_WORLD,
+                &pending[k]);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      MPI_Isend(out[k].bytes.data(), int(out[k].bytes.size()), MPI_CHAR, out[k].rank, kGhostTag, MPI_COMM_WORLD,
+                &pending[in.size() + k]);
+      ++counts_.parcels;
+      counts_.parcel_bytes += out[k].bytes.size();
+    }
+    MPI_Waitall(int(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  }
+  LinkCounts counts() const override { return counts_; }
 
  private:
+  static constexpr int kGhostTag = 20;  // the number: one kind of point-to-point message
   int rank_, ranks_;
+  mutable LinkCounts counts_;
 };
 #endif
 

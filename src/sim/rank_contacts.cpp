@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "polydem/error.hpp"
+#include "sim/body_exchange.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/rank_energy.hpp"
 
@@ -24,7 +25,7 @@ double largest_bounding_radius(const std::vector<Shape>& shapes, const Bodies& b
 
 RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies,
                            ContactSettings settings)
-    : link_(link), shapes_(shapes), settings_(settings) {
+    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()), pair_counts_(link.ranks()) {
   const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
   halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), settings_.skin + band);
   settings_.spheres_only = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) {
@@ -46,13 +47,13 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
     if (!bodies.position[b].allFinite())
       throw RunError("the neighbour search met a non-finite position (body " + std::to_string(b) + ")");
-  const Slabs slabs = cut_slabs(bodies.position, link_.ranks());
-  std::vector<std::uint32_t> ids;
-  std::vector<std::uint8_t> ghost;
-  local_bodies_of(slabs, link_.rank(), bodies.position, halo_, ids, ghost);
+  plan_ = plan_ghosts(cut_slabs(bodies.position, link_.ranks()), link_.rank(), bodies.position, halo_);
   local_of_.assign(bodies.size(), -1);
-  for (std::size_t k = 0; k < ids.size(); ++k) local_of_[ids[k]] = std::int32_t(k);
-  store_.select(bodies, std::move(ids), std::move(ghost));
+  for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
+  owned_rotors_ = RotorGroups{};
+  for (std::uint32_t b : plan_.owned)  // group_rotors' test, on the owned bodies
+    (is_isotropic(bodies.inertia[b]) ? owned_rotors_.isotropic : owned_rotors_.asymmetric).push_back(b);
+  store_.select(bodies, plan_.local, plan_.ghost);
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(whole.body_pairs(), local_of_, false);  // handed over by the rebuild
   engine_->driver_pairs() = localise(whole.driver_pairs(), local_of_, true);
@@ -74,58 +75,67 @@ void RankContacts::gather_table(ContactEngine& whole) const {
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
+  if (!forced_ && engine_) exchange_ghosts(bodies);
   const bool stale = lists_stale(bodies, drivers);
   if (stale) {
+    sync_bodies(bodies);  // the new cut and the migration read every body's state
     if (!forced_) gather_table(whole);  // forced: whole's lists hold the table already
     redistribute(bodies, whole);
     forced_ = false;
     ++rebuilds_;
   }
   engine_->compute(store_.view(), drivers, dt, stale);
-  share_results(bodies, drivers);
+  for (std::size_t k = 0; k < plan_.local.size(); ++k) {  // force += the contact sum: one process's arithmetic
+    if (plan_.ghost[k]) continue;
+    bodies.force[plan_.local[k]] += store_.force[k];
+    bodies.torque[plan_.local[k]] += store_.torque[k];
+  }
+  share_results(drivers, stale);
 }
 
-// One gather: the owned bodies' contact sums, the driver pairs' reactions, the pair energies.
-void RankContacts::share_results(Bodies& bodies, Drivers& drivers) {
-  const EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
+// Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its owner.
+void RankContacts::exchange_ghosts(Bodies& bodies) const {
+  std::vector<Parcel> out, in;
+  for (int q = 0; q < link_.ranks(); ++q) {
+    if (!plan_.send[q].empty()) out.push_back({q, pack_ghosts(bodies, plan_.send[q])});
+    if (!plan_.receive[q].empty()) in.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+  }
+  link_.exchange(out, in);
+  for (const Parcel& p : in) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
+}
+
+void RankContacts::sync_bodies(Bodies& bodies) const {
+  const std::vector<std::vector<char>> all = link_.all_gather(pack_owned(bodies, plan_.owned));
+  for (int r = 0; r < link_.ranks(); ++r)
+    if (r != link_.rank()) unpack_owned(all[r], bodies);
+}
+
+// One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'
+// pair counts at rebuilds only (the lists, so the counts, hold until the next).
+void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
+  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
+  if (!rebuilt) mine.counts.clear();
   std::vector<char> bytes;
-  append_section(bytes, body_shares());
   append_section(bytes, reaction_shares());
   append_section(bytes, mine.counts);
   append_section(bytes, mine.pairs);
   append_section(bytes, std::vector<std::uint64_t>{mine.contacts});
-  std::vector<BodyShare> forces;
   std::vector<ReactionShare> reactions;
   std::vector<EnergyShare> energies(link_.ranks());
   const std::vector<std::vector<char>> all = link_.all_gather(bytes);
   for (int r = 0; r < link_.ranks(); ++r) {
     std::size_t at = 0;
-    for (const BodyShare& b : read_section<BodyShare>(all[r], at)) forces.push_back(b);
     for (const ReactionShare& x : read_section<ReactionShare>(all[r], at)) reactions.push_back(x);
     energies[r].counts = read_section<PairCounts>(all[r], at);
+    if (rebuilt) pair_counts_[r] = energies[r].counts;
+    else energies[r].counts = pair_counts_[r];
     energies[r].pairs = read_section<PairEnergy>(all[r], at);
     energies[r].contacts = read_section<std::uint64_t>(all[r], at).at(0);
   }
-  for (const BodyShare& b : forces) {  // force += the owner's contact sum, for every body: one process's arithmetic
-    bodies.force[b.id] += get(b.force);
-    bodies.torque[b.id] += get(b.torque);
-  }
   add_reactions(std::move(reactions), drivers);
-  const RankEnergy total = total_energy(energies, bodies.size());
+  const RankEnergy total = total_energy(energies, n_bodies_);
   energy_ = total.energy;
   contacts_ = total.contacts;
-}
-
-std::vector<BodyShare> RankContacts::body_shares() const {
-  std::vector<BodyShare> out;
-  for (std::size_t k = 0; k < store_.global_id.size(); ++k) {
-    if (store_.ghost[k]) continue;
-    BodyShare s{store_.global_id[k], {}, {}};
-    put(s.force, store_.force[k]);
-    put(s.torque, store_.torque[k]);
-    out.push_back(s);
-  }
-  return out;
 }
 
 std::vector<ReactionShare> RankContacts::reaction_shares() const {

@@ -1,30 +1,27 @@
 #pragma once
-// The contact stage of a distributed run (issue 20, first version): every rank holds every
-// body's state and integrates it (the same arithmetic on the same numbers: the same bits on
-// every rank); the contact stage, the cost of a step, is cut in slabs. Each rank computes the
-// pairs of the bodies it owns (their centres in its slab, cut at each rebuild at equal body
-// counts along the longest side) with ghosts within reach, in global id order, so each body's
-// force sum is the one of one process; then the ranks share the owned bodies' forces, the
-// drivers' reactions (summed in the one-process pair order) and the pair energies (summed in
-// the one-process blocks of kPairBlock pairs). Contacts migrate at rebuilds through the table
-// of active slots in global ids (sim/contact_table.hpp). Replicated state bounds a run by one
-// node's memory: ghost exchange of state between rebuilds is the next step (README).
+// The contact stage of a distributed run (issue 20): each rank integrates the bodies it owns
+// (their centres in its slab, cut at each rebuild at equal body counts along the longest side)
+// and computes their pairs with ghosts within reach, in global id order, so each body's force
+// sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
+// to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
+// reactions (summed in the one-process pair order) and the pair energies (summed in the
+// one-process blocks of kPairBlock pairs; where each pair falls follows from the owned
+// bodies' pair counts, sent at rebuilds). At a rebuild every rank gathers every body's state
+// (sync_bodies), cuts the slabs again and takes its bodies and their contact histories from
+// the table of active slots in global ids (sim/contact_table.hpp). Every rank keeps arrays for
+// all bodies: only its owned bodies and ghosts are current between gathers.
 #include <memory>
 #include <vector>
 
 #include "contact/contact_engine.hpp"
+#include "integrate/integrate.hpp"
+#include "sim/ghost_plan.hpp"
 #include "sim/local_store.hpp"
 #include "sim/rank_energy.hpp"
 #include "sim/rank_link.hpp"
 #include "sim/slabs.hpp"
 
 namespace polydem {
-
-// What a rank tells the others of a body it owns after the pair loop: its contact sums.
-struct BodyShare {
-  std::uint32_t id;
-  double force[3], torque[3];  // N, N m
-};
 
 // A driver pair's reaction, for the sum in the one-process pair order (body, then driver).
 struct ReactionShare {
@@ -39,14 +36,22 @@ class RankContacts {
  public:
   RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies, ContactSettings settings);
 
-  // Adds every body's contact force and torque of this step, sets the drivers' reactions and
-  // the step's energy, on every rank. `whole`: the engine over all bodies, whose lists hold
-  // the table of histories (read at a forced rebuild, written by gather_table).
+  // Adds the owned bodies' contact forces and torques of this step, sets the drivers'
+  // reactions and the step's energy, on every rank (a collective). `whole`: the engine over
+  // all bodies, whose lists hold the table of histories (read at a forced rebuild, written by
+  // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
   // Rebuilds at the next step from `whole`'s lists (a checkpoint read or just written).
   void force_rebuild() { forced_ = true; }
   // Gathers every rank's active slots into `whole`'s lists (global ids): checkpoints, output.
   void gather_table(ContactEngine& whole) const;
+
+  // Gives every rank every body's state: each rank's owned bodies, gathered (a collective).
+  void sync_bodies(Bodies& bodies) const;
+  // The bodies this rank integrates, by rotation path (empty before the first compute).
+  const RotorGroups& owned_rotors() const { return owned_rotors_; }
+  std::size_t owned() const { return plan_.owned.size(); }
+  std::size_t ghosts() const { return plan_.local.size() - plan_.owned.size(); }
 
   const EnergyParts& energy() const { return energy_; }  // J, this step, every rank's pairs
   std::size_t contacts() const { return contacts_; }    // active sub-contacts, every rank's pairs
@@ -55,14 +60,18 @@ class RankContacts {
  private:
   bool lists_stale(const Bodies& bodies, const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
-  void share_results(Bodies& bodies, Drivers& drivers);
-  std::vector<BodyShare> body_shares() const;
+  void exchange_ghosts(Bodies& bodies) const;
+  void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
 
   const RankLink& link_;
   const std::vector<Shape>& shapes_;
   ContactSettings settings_;
+  std::size_t n_bodies_;
   double halo_;  // m, ghosts: bodies within this distance of the slab
+  GhostPlan plan_;
+  std::vector<std::vector<PairCounts>> pair_counts_;  // per rank, sent at the last rebuild
+  RotorGroups owned_rotors_;
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local

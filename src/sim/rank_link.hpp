@@ -1,6 +1,7 @@
 #pragma once
 // The link between the ranks of a distributed run (issue 20), as the step needs it: every
-// rank's bytes on every rank. The MPI implementation lives with the program (app/mpi_link.cpp),
+// rank's bytes on every rank (a collective), and parcels to and from chosen ranks (the ghost
+// exchange, point to point). The MPI implementation lives with the program (app/mpi_link.cpp),
 // so the library and its tests build without MPI; one process has no link at all.
 #include <cstdint>
 #include <cstring>
@@ -9,6 +10,18 @@
 
 namespace polydem {
 
+// Bytes to or from one rank; a receiver knows each parcel's size beforehand.
+struct Parcel {
+  int rank;
+  std::vector<char> bytes;
+};
+
+// What a rank has sent since the start: point-to-point parcels and its share of the collectives.
+struct LinkCounts {
+  std::uint64_t parcels = 0, parcel_bytes = 0;          // sent point to point
+  std::uint64_t collectives = 0, collective_bytes = 0;  // all_gather calls, this rank's bytes in them
+};
+
 class RankLink {
  public:
   virtual ~RankLink() = default;
@@ -16,6 +29,10 @@ class RankLink {
   virtual int ranks() const = 0;
   // Every rank's `mine`, in rank order, on every rank (a collective: all ranks call it).
   virtual std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const = 0;
+  // Sends each parcel of `out` to its rank and fills each parcel of `in` (its bytes sized by
+  // the caller) from its rank. Every rank calls it; the pattern is symmetric between ranks.
+  virtual void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;
+  virtual LinkCounts counts() const { return {}; }
 
   // True on every rank when it is true on some rank.
   bool any(bool mine) const {

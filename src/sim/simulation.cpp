@@ -86,8 +86,10 @@ void Simulation::force_rebuild() {
   if (ranks_) ranks_->force_rebuild();
 }
 
-void Simulation::sync_contacts() {
-  if (ranks_) ranks_->gather_table(*engine_);
+void Simulation::sync_state() {
+  if (!ranks_) return;
+  ranks_->sync_bodies(bodies);
+  ranks_->gather_table(*engine_);
 }
 
 void Simulation::external_forces() {
@@ -110,16 +112,23 @@ void Simulation::driver_work_half() {
 
 // Two parallel regions a normal step (one more at a rebuild, one with drag or fluid forces):
 // each stage inside is a work-shared loop that ends at a barrier, so the threads wake twice,
-// not once per stage. Many ranks: the contact stage runs between the regions, exchanges and all.
+// not once per stage. Many ranks: the contact stage runs between the regions, exchanges and
+// all, and each rank moves the bodies it owns.
 void Simulation::step() {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
+  // The bodies this rank moves (all without a contact stage: nothing to cut); a rebuild in
+  // the contact stage hands some to other ranks before the closing kick (a reference: it
+  // reads the new owners).
+  const RotorGroups& moved = one_process || !contacts ? rotors_ : ranks_->owned_rotors();
   in_team(team, [&] {
-    start_step(bodies, 0.5 * dt_, dt_, rotors_, gravity_);  // kick, drift, predict, gravity
+    start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
   });
   drivers.advance(time(), dt_);
+  // Drag and fluid forces read every body (the void fraction, the power summed in id order).
+  if (external_ && !one_process) ranks_->sync_bodies(bodies);
   // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
   if (external_) ledger.external_work += external_->add(bodies) * dt_;
   bool stale = false;
@@ -136,7 +145,7 @@ void Simulation::step() {
   }
   in_team(team, [&] {
     if (contacts && one_process) engine_->forces(all_owned(bodies), drivers, dt_, !stale);
-    kick(bodies, 0.5 * dt_, rotors_);
+    kick(bodies, 0.5 * dt_, moved);
   });
   if (contacts) {
     const EnergyParts& step = one_process ? engine_->stats().energy : ranks_->energy();

@@ -70,11 +70,15 @@ class Simulation {
   // written: the same lists, the same bits either way).
   void force_rebuild();
 
-  // Distributed runs: engine() holds every rank's contacts (global ids) only after
-  // sync_contacts(), a collective, called before output and checkpoints read them.
+  // Distributed runs: `bodies` holds every body's state and engine() every rank's contacts
+  // (global ids) only after sync_state(), a collective, called before output, checkpoints and
+  // checks read them; between, a rank's owned bodies and ghosts are current.
   bool distributed() const { return bool(ranks_); }
   int rank() const { return link_ ? link_->rank() : 0; }
-  void sync_contacts();
+  void sync_state();
+  // Distributed runs: the bodies this rank owns and holds as ghosts since the last rebuild.
+  std::size_t owned_bodies() const { return ranks_ ? ranks_->owned() : bodies.size(); }
+  std::size_t ghost_bodies() const { return ranks_ ? ranks_->ghosts() : 0; }
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
   std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
   std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }

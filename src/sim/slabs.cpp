@@ -35,16 +35,4 @@ Slabs cut_slabs(const std::vector<Vec3>& x, int parts) {
 // A part in a million over the reach: the slab distance and the pair test round differently.
 double ghost_halo(double max_bounding_radius, double range) { return (2.0 * max_bounding_radius + range) * (1.0 + 1e-6); }
 
-void local_bodies_of(const Slabs& slabs, int p, const std::vector<Vec3>& x, double halo,
-                     std::vector<std::uint32_t>& ids, std::vector<std::uint8_t>& ghost) {
-  ids.clear();
-  ghost.clear();
-  for (std::uint32_t b = 0; b < x.size(); ++b) {
-    const bool mine = slabs.owner(x[b]) == p;
-    if (!mine && !(slabs.distance(p, x[b]) < halo)) continue;
-    ids.push_back(b);
-    ghost.push_back(mine ? 0 : 1);
-  }
-}
-
 }  // namespace polydem

@@ -1,8 +1,8 @@
 #pragma once
 // Slab decomposition: the domain cut across its longest side into parts holding equal numbers
 // of bodies, a part owning the bodies whose centre lies in its slab; each part also sees, as
-// ghosts, the bodies within `halo` of its slab (the pairs its owned bodies may form).
-#include <cstdint>
+// ghosts, the bodies within `halo` of its slab (the pairs its owned bodies may form:
+// sim/ghost_plan.hpp).
 #include <vector>
 
 #include "polydem/math.hpp"
@@ -26,10 +26,5 @@ Slabs cut_slabs(const std::vector<Vec3>& x, int parts);
 // m, the halo that holds every partner of an owned body: a pair is listed when its centres
 // are closer than R_i + R_j + range, R the bounding radii, range the skin and cohesion band.
 double ghost_halo(double max_bounding_radius, double range);
-
-// Part p's local bodies in increasing id: those it owns and, as ghosts (`ghost` 1), those
-// within `halo` of its slab.
-void local_bodies_of(const Slabs& slabs, int p, const std::vector<Vec3>& x, double halo,
-                     std::vector<std::uint32_t>& ids, std::vector<std::uint8_t>& ghost);
 
 }  // namespace polydem

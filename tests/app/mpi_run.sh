@@ -3,7 +3,8 @@
 # energy.csv and the driver CSVs of -np 1, 2 and 3 equal a plain run's byte for byte, on a
 # pour with walls (cubes, octahedra, spheres) and a turning drum (spheres, dodecahedra); a
 # -np 2 checkpoint resumed with -np 3 ends on the same bits; a fast sphere running through a
-# row across the slab boundaries keeps the body count and the momentum; a bad scene under
+# row across the slab boundaries keeps the body count and the momentum; at -np 3 each rank
+# holds fewer than all bodies (POLYDEM_MPI_COUNTS); a bad scene under
 # -np 2 gives one message and exit 1, no hang.
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
@@ -34,6 +35,26 @@ for scene in pour drum; do
   done
   echo "ok: $scene: -np 1, 2, 3 give the plain run's bits"
 done
+
+# Each of 3 ranks moves a third of the pour and holds fewer than all 100 bodies; the ghosts
+# come point to point from the neighbour slabs (POLYDEM_MPI_COUNTS: one line per rank).
+POLYDEM_MPI_COUNTS=1 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/counted" --threads 1 > /dev/null 2> "$tmp/counts" ||
+  fail "counted pour at -np 3"
+same_outputs "$tmp/pour" "$tmp/counted"
+/usr/bin/python3 - "$tmp/counts" <<'PY'
+import re, sys
+rows = [re.search(r"rank (\d) of 3: holds (\d+) of 100 bodies \((\d+) owned, (\d+) ghosts\); per step: ([\d.]+) point-to-point", l)
+        for l in open(sys.argv[1])]
+rows = sorted((int(m[1]), int(m[2]), int(m[3]), int(m[4]), float(m[5])) for m in rows if m)
+assert [r[0] for r in rows] == [0, 1, 2], rows
+assert sum(r[2] for r in rows) == 100, f"owned bodies add up to {sum(r[2] for r in rows)}, expected 100"
+for rank, held, owned, ghosts, messages in rows:
+    assert held == owned + ghosts and held < 100, f"rank {rank} holds {held} bodies"
+    assert 33 <= owned <= 34 and ghosts > 0, f"rank {rank}: {owned} owned, {ghosts} ghosts"
+    assert messages <= (2 if rank == 1 else 1), f"rank {rank}: {messages} messages a step (neighbours only)"
+print("; ".join(f"rank {r}: {o} owned + {g} ghosts, {m:g} messages a step" for r, _, o, g, m in rows))
+PY
+echo "ok: -np 3: each rank holds fewer than all bodies, ghosts from its neighbours only"
 
 # A -np 2 checkpoint at 20 ms resumed with -np 3 ends where the plain run ends.
 first=$(ls "$tmp/pour2"/checkpoint_*.bin | sort | head -1)

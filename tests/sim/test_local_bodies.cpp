@@ -8,7 +8,7 @@
 #include "integrate/integrate.hpp"
 #include "pile.hpp"
 #include "sim/local_store.hpp"
-#include "sim/slabs.hpp"
+#include "sim/ghost_plan.hpp"
 
 using namespace polydem;
 using namespace polydem::test;
@@ -60,12 +60,10 @@ SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
   std::vector<Part> split;
   SplitRun out;
   for (int k = 0; k < parts; ++k) {
-    std::vector<std::uint32_t> ids;
-    std::vector<std::uint8_t> ghost;
-    local_bodies_of(slabs, k, bodies.position, halo, ids, ghost);
-    for (std::uint8_t g : ghost) out.ghosts += g;
+    GhostPlan plan = plan_ghosts(slabs, k, bodies.position, halo);
+    for (std::uint8_t g : plan.ghost) out.ghosts += g;
     Part& part = split.emplace_back(Part{LocalStore{}, drivers, nullptr});
-    part.store.select(bodies, std::move(ids), std::move(ghost));
+    part.store.select(bodies, std::move(plan.local), std::move(plan.ghost));
     part.engine = std::make_unique<ContactEngine>(sim.shapes(), part.store.view(), settings);
   }
   const Vec3 gravity = *p.scene.forces.gravity;  // m/s^2
@@ -132,9 +130,7 @@ TEST_CASE("slabs cut the longest side at equal body counts and ghosts lie within
   CHECK(owned[0] == 4);
   CHECK(owned[1] == 4);
   CHECK(owned[2] == 4);
-  std::vector<std::uint32_t> ids;
-  std::vector<std::uint8_t> ghost;
-  local_bodies_of(s, 1, x, 0.15, ids, ghost);  // bodies 4..7 owned; 3, 8 and 9 within 0.15 m of [0.4, 0.8)
-  CHECK(ids == std::vector<std::uint32_t>{3, 4, 5, 6, 7, 8, 9});
-  CHECK(ghost == std::vector<std::uint8_t>{1, 0, 0, 0, 0, 1, 1});
+  const GhostPlan plan = plan_ghosts(s, 1, x, 0.15);  // bodies 4..7 owned; 3, 8 and 9 within 0.15 m of [0.4, 0.8)
+  CHECK(plan.local == std::vector<std::uint32_t>{3, 4, 5, 6, 7, 8, 9});
+  CHECK(plan.ghost == std::vector<std::uint8_t>{1, 0, 0, 0, 0, 1, 1});
 }

@@ -4,6 +4,8 @@
 // contact count and, after the table is gathered, the stored energy.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <atomic>
 #include <barrier>
 #include <cstring>
 #include <thread>
@@ -16,9 +18,12 @@ using namespace polydem::test;
 namespace {
 
 // Ranks as threads: each all_gather posts its bytes, waits for all, copies all, waits again.
+// An exchange posts each parcel in the box of (sender, receiver) and reads its own the same way.
 struct ThreadRanks {
-  explicit ThreadRanks(int n) : posted(n), sync(n) {}
+  explicit ThreadRanks(int n) : posted(n), box(n, std::vector<std::vector<char>>(n)), sync(n) {}
   std::vector<std::vector<char>> posted;
+  std::vector<std::vector<std::vector<char>>> box;  // [from][to]
+  std::atomic<bool> mismatch = false;  // a parcel of another size than the receiver expects
   std::barrier<> sync;
 };
 
@@ -33,6 +38,16 @@ class ThreadLink final : public RankLink {
     std::vector<std::vector<char>> copy = all_.posted;
     all_.sync.arrive_and_wait();
     return copy;
+  }
+  void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
+    for (const Parcel& p : out) all_.box[rank_][p.rank] = p.bytes;
+    all_.sync.arrive_and_wait();
+    for (Parcel& p : in) {
+      if (all_.box[p.rank][rank_].size() != p.bytes.size()) all_.mismatch = true;  // the sizes both plans give
+      p.bytes = all_.box[p.rank][rank_];
+    }
+    all_.sync.arrive_and_wait();
+    for (const Parcel& p : out) all_.box[rank_][p.rank].clear();
   }
 
  private:
@@ -54,11 +69,12 @@ struct Outcome {
   EnergyRow energy;
   std::vector<Vec3> driver_force, driver_torque;
   std::size_t rebuilds = 0;
+  std::size_t owned = 0, ghosts = 0;  // held by the rank at the last rebuild
 };
 
 Outcome outcome(Simulation& sim) {
-  sim.sync_contacts();
-  Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds()};
+  sim.sync_state();
+  Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     o.driver_force.push_back(sim.drivers[j].force);
     o.driver_torque.push_back(sim.drivers[j].torque);
@@ -115,10 +131,18 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
         got[r] = run(p, kSteps, &link);
       });
     for (std::thread& t : ranks) t.join();
+    CHECK_FALSE(all.mismatch);
+    std::size_t owned = 0, held = 0, fewest = one.bodies.size();
     for (int r = 0; r < n; ++r) {
       INFO(n << " ranks, rank " << r);
       require_same(one, got[r]);
       CHECK(got[r].rebuilds == one.rebuilds);
+      owned += got[r].owned;
+      held += got[r].owned + got[r].ghosts;
+      fewest = std::min(fewest, got[r].owned + got[r].ghosts);
     }
+    CHECK(owned == one.bodies.size());  // every body moved by exactly one rank
+    CHECK(held < std::size_t(n) * one.bodies.size());  // 272 of 300 at 2 ranks, 361 of 450 at 3: not replicated
+    CHECK(fewest < one.bodies.size());  // an end slab holds its share and the ghosts near its cut
   }
 }

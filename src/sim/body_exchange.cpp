@@ -1,0 +1,78 @@
+#include "sim/body_exchange.hpp"
+
+#include <cstring>
+
+namespace polydem {
+
+namespace {
+
+// Appends and reads doubles and ids at a moving offset.
+struct Writer {
+  char* at;
+  void field(const Vec3& v) { doubles(v.data(), 3); }
+  void field(const Quat& q) { doubles(q.coeffs().data(), 4); }
+  void field(std::uint32_t id) { std::memcpy(at, &id, sizeof id); at += sizeof id; }
+  void doubles(const double* d, std::size_t n) { std::memcpy(at, d, n * sizeof(double)); at += n * sizeof(double); }
+};
+
+struct Reader {
+  const char* at;
+  void field(Vec3& v) { doubles(v.data(), 3); }
+  void field(Quat& q) { doubles(q.coeffs().data(), 4); }
+  void field(std::uint32_t& id) { std::memcpy(&id, at, sizeof id); at += sizeof id; }
+  void doubles(double* d, std::size_t n) { std::memcpy(d, at, n * sizeof(double)); at += n * sizeof(double); }
+};
+
+// The fields in one order for both directions: Io is a Writer (const bodies) or a Reader.
+template <class Io, class B>
+void ghost_fields(Io& io, B& b, std::size_t i) {
+  io.field(b.position[i]);
+  io.field(b.orientation[i]);
+  io.field(b.velocity[i]);
+  io.field(b.angular_velocity[i]);
+  io.field(b.velocity_end[i]);
+  io.field(b.angular_velocity_end[i]);
+}
+
+template <class Io, class B>
+void owned_fields(Io& io, B& b, std::size_t i) {
+  ghost_fields(io, b, i);
+  io.field(b.angular_momentum[i]);
+  io.field(b.force[i]);
+  io.field(b.torque[i]);
+}
+
+}  // namespace
+
+std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {
+  std::vector<char> bytes(ids.size() * kGhostBytes);
+  Writer w{bytes.data()};
+  for (std::uint32_t b : ids) ghost_fields(w, bodies, b);
+  return bytes;
+}
+
+void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies) {
+  Reader r{bytes.data()};
+  for (std::uint32_t b : ids) ghost_fields(r, bodies, b);
+}
+
+std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {
+  std::vector<char> bytes(ids.size() * kOwnedBytes);
+  Writer w{bytes.data()};
+  for (std::uint32_t b : ids) {
+    w.field(b);
+    owned_fields(w, bodies, b);
+  }
+  return bytes;
+}
+
+void unpack_owned(const std::vector<char>& bytes, Bodies& bodies) {
+  Reader r{bytes.data()};
+  for (std::size_t k = 0; k < bytes.size() / kOwnedBytes; ++k) {
+    std::uint32_t b = 0;
+    r.field(b);
+    owned_fields(r, bodies, b);
+  }
+}
+
+}  // namespace polydem

@@ -1,0 +1,26 @@
+#pragma once
+// Body state as bytes between ranks. A ghost parcel carries what the contact stage reads and
+// changes every step (pose and velocities, 152 bytes a body) in the order of a GhostPlan list
+// both ranks hold; an owned-state record carries all that integration changes (224 bytes
+// and the id), for the gathers that give every rank the whole state (rebuilds, output).
+#include <cstdint>
+#include <vector>
+
+#include "polydem/bodies.hpp"
+
+namespace polydem {
+
+constexpr std::size_t kGhostBytes = 19 * sizeof(double);  // 5 vectors, 1 quaternion
+constexpr std::size_t kOwnedBytes = sizeof(std::uint32_t) + 28 * sizeof(double);  // id, 8 vectors, 1 quaternion
+
+// The ghost state of bodies `ids`, in that order.
+std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
+// Writes a parcel of pack_ghosts(…, ids) into the bodies `ids`.
+void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies);
+
+// The integration state of bodies `ids` with their ids.
+std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
+// Writes each record of a pack_owned parcel into its body.
+void unpack_owned(const std::vector<char>& bytes, Bodies& bodies);
+
+}  // namespace polydem

@@ -1,0 +1,98 @@
+// The ghost exchange's plan and parcels without MPI: over 400 random centres cut in 2, 3 and 4
+// slabs, every body is owned by one rank, each rank's ghosts are exactly the bodies owned
+// elsewhere within the halo of its slab, rank p's send list to q is q's receive list from p
+// (so a parcel is bare state in an order both know), and body state crosses a parcel bit for bit.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+
+#include "sim/body_exchange.hpp"
+#include "sim/ghost_plan.hpp"
+
+using namespace polydem;
+
+namespace {
+
+std::vector<Vec3> random_centres(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec3> x(n);
+  for (Vec3& c : x) c = Vec3(2.0 * u(rng), u(rng), 0.5 * u(rng));  // m: the longest side along x
+  return x;
+}
+
+}  // namespace
+
+TEST_CASE("Ghost plans partition the bodies and pair each send list with its receive list") {
+  const std::vector<Vec3> x = random_centres(400, 7);
+  const double halo = 0.12;  // m
+  for (int ranks : {2, 3, 4}) {
+    INFO(ranks << " ranks");
+    const Slabs slabs = cut_slabs(x, ranks);
+    std::vector<GhostPlan> plans;
+    for (int p = 0; p < ranks; ++p) plans.push_back(plan_ghosts(slabs, p, x, halo));
+    std::vector<int> owners(x.size(), 0);
+    for (int p = 0; p < ranks; ++p) {
+      for (std::uint32_t b : plans[p].owned) ++owners[b];
+      CHECK(plans[p].owned.size() >= x.size() / std::size_t(ranks));  // equal counts, within one body
+      CHECK(plans[p].owned.size() <= x.size() / std::size_t(ranks) + 1);
+      for (std::size_t k = 0; k < plans[p].local.size(); ++k) {
+        const std::uint32_t b = plans[p].local[k];
+        CHECK(bool(plans[p].ghost[k]) == (slabs.owner(x[b]) != p));
+        if (plans[p].ghost[k]) CHECK(slabs.distance(p, x[b]) < halo);
+      }
+      std::size_t ghosts = 0;
+      for (std::uint8_t g : plans[p].ghost) ghosts += g;
+      std::size_t expected = 0;  // every body owned elsewhere within the halo
+      for (const Vec3& c : x) expected += slabs.owner(c) != p && slabs.distance(p, c) < halo;
+      CHECK(ghosts == expected);
+      CHECK(ghosts > 0);
+      CHECK(plans[p].local.size() < x.size());
+      for (int q = 0; q < ranks; ++q) {
+        CHECK(plans[p].send[q] == plans[q].receive[p]);
+        if (q == p) CHECK(plans[p].send[q].empty());
+        if (std::abs(q - p) > 1) CHECK(plans[p].send[q].empty());  // slabs wider than the halo: neighbours only
+      }
+    }
+    for (int n : owners) CHECK(n == 1);
+  }
+}
+
+TEST_CASE("Ghost and owned parcels carry body state bit for bit") {
+  const std::vector<Vec3> x = random_centres(12, 3);
+  Bodies from;
+  from.resize(x.size());
+  for (std::size_t b = 0; b < x.size(); ++b) {
+    from.position[b] = x[b];
+    from.orientation[b] = Quat(0.5, 0.5 + 0.1 * double(b), -0.5, 0.5).normalized();
+    from.velocity[b] = 3.0 * x[b];
+    from.angular_velocity[b] = -x[b] / 7.0;
+    from.velocity_end[b] = x[b] / 3.0;
+    from.angular_velocity_end[b] = x[b] * 1e-9;
+    from.angular_momentum[b] = x[b] * 11.0;
+    from.force[b] = x[b] / 13.0;
+    from.torque[b] = -x[b];
+  }
+  const std::vector<std::uint32_t> ids{1, 4, 5, 11};
+  Bodies to;
+  to.resize(x.size());
+  const std::vector<char> ghosts = pack_ghosts(from, ids);
+  CHECK(ghosts.size() == ids.size() * kGhostBytes);
+  unpack_ghosts(ghosts, ids, to);
+  Bodies owned;
+  owned.resize(x.size());
+  unpack_owned(pack_owned(from, ids), owned);
+  for (std::uint32_t b : ids) {
+    CHECK(std::memcmp(to.position[b].data(), from.position[b].data(), sizeof(Vec3)) == 0);
+    CHECK(to.orientation[b].coeffs() == from.orientation[b].coeffs());
+    CHECK(to.velocity_end[b] == from.velocity_end[b]);
+    CHECK(to.angular_velocity_end[b] == from.angular_velocity_end[b]);
+    CHECK(to.angular_momentum[b] == Vec3::Zero());  // a ghost carries no integration state
+    CHECK(owned.angular_momentum[b] == from.angular_momentum[b]);
+    CHECK(owned.force[b] == from.force[b]);
+    CHECK(owned.torque[b] == from.torque[b]);
+    CHECK(owned.velocity[b] == from.velocity[b]);
+  }
+  CHECK(owned.position[0] == Vec3::Zero());  // bodies not in the parcel are left alone
+}
