@@ -24,6 +24,8 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
   csv << "case,dt_fraction,wall_s,error\n";
   const std::pair<const char*, std::function<double(double)>> cases[] = {
       {"binary impact", [](double f) { return binary_impact(f); }},
+      {"binary impact en 0.1", [](double f) { return binary_impact(f, 0.1); }},
+      {"binary impact en 0.9", [](double f) { return binary_impact(f, 0.9); }},
       {"sphere-sphere 1:2.74", sphere_pair_impact},
       {"oblique impact 45 deg", oblique_impact},
       {"cube corner landing", cube_landing}, {"free top", free_top}};
