@@ -160,7 +160,7 @@ template <class Normal, bool kLone>
   const double f_last = h.fd + Normal::spring(law, k.r_star, weight_last, overlap_last);  // N, fp at n
   if constexpr (!Normal::kCurved) {
     // Undamped, velocity Verlet's spring is exact but where it switches: its ledger stays closed.
-    if ((kLone || k.exact_step) && law.alpha_n > 0.0) return exact_normal_force<Normal>(law, k, h, dt, vn, f_last);
+    if (law.exact_step && (kLone || k.exact_step) && law.alpha_n > 0.0) return exact_normal_force<Normal>(law, k, h, dt, vn, f_last);
   }
   const double nu_pair = k.nu >= 0.0 ? k.nu : Normal::pair_damping(law, k.m_eff, k.r_star);  // N s/m
   const double c = Normal::damping(nu_pair, overlap);  // N s/m, per unit weight

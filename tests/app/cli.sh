@@ -18,9 +18,9 @@ expect_exit 1 "bad.yaml:5" "$polydem" check "$tmp/bad.yaml"
 expect_exit 1 "seed" "$polydem" check "$tmp/bad.yaml"
 
 expect_exit 0 "critical time step" "$polydem" check "$here/drop.yaml"
-# dt: auto is 0.1 x critical, its expected restitution error 4.9e-5 (sim/step_accuracy.cpp);
-# accuracy: 1e-3 chooses 0.135 x critical.
-grep -q "expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical)" "$tmp/out" \
+# dt: auto is 0.1 x critical, its expected restitution error 1.9e-3 (sim/step_accuracy.cpp);
+# accuracy: 1e-3 turns on the exact step and chooses 0.135 x critical.
+grep -q "expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: no expected error at dt: auto"; }
 sed "s|^  dt: auto|  dt: auto\n  accuracy: 1e-3|; s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/accuracy.yaml"
 expect_exit 0 "(0.135 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
@@ -29,7 +29,7 @@ grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.135 x 
 
 # A full run, then the same run in two halves through a checkpoint.
 "$polydem" run "$here/drop.yaml" --out "$tmp/full" --threads 2 2> "$tmp/full.log" || { cat "$tmp/full.log"; fail "run"; }
-grep -q "dt = .* s (expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical))" "$tmp/full.log" \
+grep -q "dt = .* s (expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical))" "$tmp/full.log" \
   || { cat "$tmp/full.log"; fail "run: no expected error on the start-up line"; }
 "$polydem" run "$here/drop.yaml" --out "$tmp/half" --threads 1 --until 0.02 2> /dev/null
 "$polydem" run "$here/drop.yaml" --out "$tmp/half" --threads 2 --resume "$(ls "$tmp"/half/checkpoint_*.bin | sort | tail -1)" 2> /dev/null

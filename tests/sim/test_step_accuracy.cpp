@@ -12,24 +12,33 @@
 using namespace polydem;
 
 TEST_CASE("step accuracy: the model passes through the measured sphere-wall errors", "[step_accuracy]") {
-  // tools/bench/accuracy/results.csv, binary impact, worst of en 0.1, 0.5, 0.9 at 89039a5.
-  CHECK(expected_restitution_error(0.1) == Approx(4.9e-05).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.2) == Approx(2.9e-03).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.3) == Approx(2.99e-03).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.01) == Approx(1.33e-07).epsilon(1e-9));
-  // Between two points, the log-log line: 0.1 -> 0.15 has slope log(2.88e-3/4.9e-5)/log(1.5).
-  const double slope = std::log(2.88e-03 / 4.9e-05) / std::log(0.15 / 0.1);
-  CHECK(expected_restitution_error(0.12) == Approx(4.9e-05 * std::pow(0.12 / 0.1, slope)).epsilon(1e-9));
+  // tools/bench/accuracy/results.csv, binary impact at e9b1677.
+  CHECK(expected_restitution_error(0.1) == Approx(0.00194553).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.2) == Approx(0.0128749).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.3) == Approx(0.0411651).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.01) == Approx(1.04713e-05).epsilon(1e-9));
+  // Between two points, the log-log line: 0.07 -> 0.1 has slope log(1.9455e-3/8.4174e-4)/log(1/0.7).
+  const double slope = std::log(0.00194553 / 0.000841735) / std::log(0.1 / 0.07);
+  CHECK(expected_restitution_error(0.085) == Approx(0.000841735 * std::pow(0.085 / 0.07, slope)).epsilon(1e-9));
   // Below the smallest measured fraction, second order; above the largest, unknown.
-  CHECK(expected_restitution_error(0.001) == Approx(3.0e-10 / 4).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.001) == Approx(3.88329e-07 / 4).epsilon(1e-9));
   CHECK(std::isinf(expected_restitution_error(0.6)));
+}
+
+TEST_CASE("step accuracy: with the exact step, the worst sphere-wall errors of en 0.1, 0.5, 0.9", "[step_accuracy]") {
+  // tools/bench/accuracy/results.csv, exact step: binary impact en 0.1, 0.5, 0.9 at b7f7c1c.
+  CHECK(expected_restitution_error(0.1, true) == Approx(4.9e-05).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.3, true) == Approx(2.99e-03).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.001, true) == Approx(3.0e-10 / 4).epsilon(1e-9));
+  CHECK(impact_error_note(1e-6, 1e-5, true) == "expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical)");
 }
 
 TEST_CASE("step accuracy: error grows with the step and the fraction inverts it", "[step_accuracy]") {
   double previous = 0.0;
   for (double f = 1e-3; f <= 0.5; f *= 1.05) {
-    const double e = expected_restitution_error(f);
+    const double e = expected_restitution_error(f, true);
     CHECK(e > previous);
+    CHECK(expected_restitution_error(f) > 0.0);
     previous = e;
   }
   double previous_fraction = 0.0;
@@ -38,16 +47,16 @@ TEST_CASE("step accuracy: error grows with the step and the fraction inverts it"
     INFO("accuracy " << a << ", fraction " << f);
     CHECK(f >= previous_fraction);
     CHECK(f <= kUnsafeFraction);
-    CHECK(expected_restitution_error(f) <= a * (1 + 1e-12));
-    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f) == Approx(a).epsilon(1e-9));
+    CHECK(expected_restitution_error(f, true) <= a * (1 + 1e-12));
+    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, true) == Approx(a).epsilon(1e-9));
     previous_fraction = f;
   }
-  CHECK(accuracy_fraction(4.9e-05) == Approx(0.1).epsilon(1e-9));
+  CHECK(accuracy_fraction(4.9e-05) == Approx(0.1).epsilon(1e-9));  // accuracy turns on the exact step
   CHECK(accuracy_fraction(0.1) == kUnsafeFraction);  // beyond 0.3 x critical: capped
 }
 
 TEST_CASE("step accuracy: the note names the error and the fraction", "[step_accuracy]") {
-  CHECK(impact_error_note(1e-6, 1e-5) == "expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical)");
-  CHECK(impact_error_note(6e-6, 1e-5).find("above 2.3 (0.6 x critical") != std::string::npos);
+  CHECK(impact_error_note(1e-6, 1e-5) == "expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical)");
+  CHECK(impact_error_note(6e-6, 1e-5).find("above 0.14 (0.6 x critical") != std::string::npos);
   CHECK(impact_error_note(1e-6, INFINITY).empty());
 }

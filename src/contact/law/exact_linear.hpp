@@ -8,15 +8,13 @@
 // Where the overlap starts, the drift has put x(n) on the straight line, deeper than the arc
 // the force follows from the touch: the onset force puts x(n+1) on the arc that passes through
 // x(n) with the approach speed (the exact impact, shifted in time by the lag), so the samples
-// from there on are the arc's and the rebound is the exact one. Derived in
-// tests/contact/test_law_impact.cpp.
+// from there on are the arc's and the rebound is the exact one. Checked against the closed
+// form in tests/contact/test_exact_linear.cpp.
 #include <algorithm>
 #include <cmath>
 
 namespace polydem {
 
-// N/m and N s/m per unit patch weight: k' and c' above for kn (N/m), damping ratio zeta (-),
-// mass m (kg) and step dt (s). Written with expm1 so that k' keeps its digits at small dt.
 // With a load f_rest (N) from the rest of the world pressing the pair together (gravity, other
 // contacts), the exact samples follow x - f_rest/kn: the force is k' x + c' r + (1 - k'/kn)
 // f_rest, r = -vn the overlap rate (m/s), so that a contact at rest holds kn x = f_rest.
@@ -30,6 +28,8 @@ struct LinearStep {
 inline double rest_of_world(double f_last, double m, double dt, double r, double r_end) {
   return f_last + 2.0 * m * (r_end - r) / dt;
 }
+// N/m and N s/m per unit patch weight: k' and c' above for kn (N/m), damping ratio zeta (-),
+// mass m (kg) and step dt (s). Written with expm1 so that k' keeps its digits at small dt.
 inline LinearStep linear_step(double kn, double zeta, double m, double dt) {
   const double h = std::sqrt(kn / m) * dt;  // rad, w dt
   const double q = 1.0 - zeta * zeta;       // (w_d / w)^2, negative when overdamped

@@ -22,6 +22,7 @@ struct LawParams {
   NormalModel normal = NormalModel::linear;
   double e_star = 0.0, g_star = 0.0;  // Pa, Hertz: effective Young and shear moduli of the pair
   bool contact_mass = false;  // damping_mass: contact: the normal dashpot on the contact point's mass (contact_mass.hpp)
+  bool exact_step = false;    // the linear law's damped normal pair stepped exactly where it can (exact_linear.hpp)
 };
 
 // m, the gap of a contact with no previous step (it starts now).
