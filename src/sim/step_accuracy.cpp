@@ -15,8 +15,8 @@ struct Point {
   double fraction, error;  // dt / critical, relative restitution error
 };
 
-// The default step (end-of-step dashpot): tools/bench/accuracy/results.csv, "binary impact" (sphere on a wall, en 0.5, 0.5 m/s),
-// measured at e9b1677; increasing in both columns.
+// The default step (end-of-step dashpot): tools/bench/accuracy/results.csv, "binary impact"
+// (sphere on a wall, en 0.5, 0.5 m/s), measured at e9b1677; increasing in both columns.
 constexpr std::array<Point, 13> kSphereWall = {{{0.002, 3.88329e-07},
                                                 {0.005, 2.48912e-06},
                                                 {0.01, 1.04713e-05},
@@ -32,7 +32,7 @@ constexpr std::array<Point, 13> kSphereWall = {{{0.002, 3.88329e-07},
                                                 {0.5, 0.144879}}};
 
 // With `accuracy` (the exact step): "binary impact" at en 0.1, 0.5 and 0.9 (sphere on a wall,
-// 0.5 m/s, the linear law's exact step: contact/law/exact_linear.hpp), measured at 89039a5: at
+// 0.5 m/s, the linear law's exact step: contact/law/exact_linear.hpp), measured at b7f7c1c: at
 // each step the worst of the three, raised where needed to increase with the step (the error
 // moves with the phase of the contact in the steps: 0.1 and 0.2 take the worst below them, a
 // shade above). Conservative for the spheres' linear law; Hertz and polyhedra, stepped by the
