@@ -186,6 +186,10 @@ template <class Parts, class Partner>
   const Vec3 v_centre_end = bodies.velocity_end[p.i] - mj.at_end(xi);  // m/s
   const double m_eff = partner.m_eff(p.i, p.j);
   const double nu = Normal::pair_damping(law, m_eff, r_star), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
+  const Shape* shape_j = partner.shape(p.j);  // null: a driver, of infinite mass
+  const bool exact_step =
+      law.exact_step &&
+      (law.contact_mass || (bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     ContactSlot& slot = list.slots[scratch.found[c].slot];
@@ -206,7 +210,8 @@ template <class Parts, class Partner>
                           scratch.weight[c],
                           nu_dashpot,
                           nu_t,
-                          r_star};
+                          r_star,
+                          exact_step};
     const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;

@@ -17,6 +17,7 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
   if (op.present) {  // a scene without a contact operator (drag only) has no law to prepare
     s.particle = prepare_law(op.config);
     s.driver = prepare_law(op.config_driver, &op.config);  // the parser made config_driver config when absent
+    s.particle.exact_step = s.driver.exact_step = scene.simulation.exact_step;
     for (std::size_t b = 0; b < bodies.size() && op.config.hertz; ++b)
       if (!(shapes[bodies.shape[b]].radius > 0.0))
         throw InputError(input_message(op.loc.file, op.loc.line, "model",

@@ -19,12 +19,12 @@ expect_exit 1 "seed" "$polydem" check "$tmp/bad.yaml"
 
 expect_exit 0 "critical time step" "$polydem" check "$here/drop.yaml"
 # dt: auto is 0.1 x critical, its expected restitution error 1.9e-3 (sim/step_accuracy.cpp);
-# accuracy: 1e-3 chooses 0.0753 x critical.
+# accuracy: 1e-3 turns on the exact step and chooses 0.135 x critical.
 grep -q "expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: no expected error at dt: auto"; }
 sed "s|^  dt: auto|  dt: auto\n  accuracy: 1e-3|; s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/accuracy.yaml"
-expect_exit 0 "(0.0753 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
-grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0753 x critical)" "$tmp/out" \
+expect_exit 0 "(0.135 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
+grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.135 x critical)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: accuracy 1e-3 not met"; }
 
 # A full run, then the same run in two halves through a checkpoint.

@@ -25,11 +25,20 @@ TEST_CASE("step accuracy: the model passes through the measured sphere-wall erro
   CHECK(std::isinf(expected_restitution_error(0.6)));
 }
 
+TEST_CASE("step accuracy: with the exact step, the worst sphere-wall errors of en 0.1, 0.5, 0.9", "[step_accuracy]") {
+  // tools/bench/accuracy/results.csv, exact step: binary impact en 0.1, 0.5, 0.9 at b7f7c1c.
+  CHECK(expected_restitution_error(0.1, true) == Approx(4.9e-05).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.3, true) == Approx(2.99e-03).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.001, true) == Approx(3.0e-10 / 4).epsilon(1e-9));
+  CHECK(impact_error_note(1e-6, 1e-5, true) == "expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical)");
+}
+
 TEST_CASE("step accuracy: error grows with the step and the fraction inverts it", "[step_accuracy]") {
   double previous = 0.0;
   for (double f = 1e-3; f <= 0.5; f *= 1.05) {
-    const double e = expected_restitution_error(f);
+    const double e = expected_restitution_error(f, true);
     CHECK(e > previous);
+    CHECK(expected_restitution_error(f) > 0.0);
     previous = e;
   }
   double previous_fraction = 0.0;
@@ -38,11 +47,11 @@ TEST_CASE("step accuracy: error grows with the step and the fraction inverts it"
     INFO("accuracy " << a << ", fraction " << f);
     CHECK(f >= previous_fraction);
     CHECK(f <= kUnsafeFraction);
-    CHECK(expected_restitution_error(f) <= a * (1 + 1e-12));
-    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f) == Approx(a).epsilon(1e-9));
+    CHECK(expected_restitution_error(f, true) <= a * (1 + 1e-12));
+    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, true) == Approx(a).epsilon(1e-9));
     previous_fraction = f;
   }
-  CHECK(accuracy_fraction(0.00194553) == Approx(0.1).epsilon(1e-9));
+  CHECK(accuracy_fraction(4.9e-05) == Approx(0.1).epsilon(1e-9));  // accuracy turns on the exact step
   CHECK(accuracy_fraction(0.1) == kUnsafeFraction);  // beyond 0.3 x critical: capped
 }
 

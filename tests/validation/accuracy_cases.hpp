@@ -20,10 +20,12 @@ inline double critical_step(const Scene& scene, const ShapeLibrary& lib, const s
   return Simulation(scene, lib, specs).time_step().critical;
 }
 
-// Sphere on a wall at 0.5 m/s, the step set by `step(scene, lib, specs)`: error of the restitution.
+// Sphere on a wall at 0.5 m/s, the step set by `step(scene, lib, specs)`, with the linear law's
+// exact step (what simulation: accuracy turns on) or not: error of the restitution.
 template <class SetStep>
-double sphere_wall_error(double en, const SetStep& step) {
+double sphere_wall_error(double en, bool exact, const SetStep& step) {
   Scene scene = base_scene(law(kKn, en), true);
+  scene.simulation.exact_step = exact;
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
   const std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -0.5})};
   step(scene, lib, specs);
@@ -35,23 +37,24 @@ double sphere_wall_error(double en, const SetStep& step) {
 }
 
 // The same at dt = fraction x critical.
-inline double binary_impact(double fraction, double en = kEn) {
-  return sphere_wall_error(en, [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+inline double binary_impact(double fraction, double en = kEn, bool exact = false) {
+  return sphere_wall_error(en, exact, [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
     scene.simulation.dt = fraction * critical_step(scene, lib, specs);
   });
 }
 
 // The same at `dt: auto` with `simulation: accuracy` (the step chosen for that error).
 inline double binary_impact_at_accuracy(double accuracy, double en = kEn) {
-  return sphere_wall_error(en, [&](Scene& scene, const ShapeLibrary&, const std::vector<BodySpec>&) {
+  return sphere_wall_error(en, true, [&](Scene& scene, const ShapeLibrary&, const std::vector<BodySpec>&) {
     scene.simulation.dt.reset();
     scene.simulation.accuracy = accuracy;
   });
 }
 
 // Spheres of radius 5 and 7 mm (masses 1 : 2.74) meeting at 0.5 m/s: error of the restitution.
-inline double sphere_pair_impact(double fraction) {
+inline double sphere_pair_impact(double fraction, bool exact = false) {
   Scene scene = base_scene(law(kKn, kEn), false);
+  scene.simulation.exact_step = exact;
   const double big = 1.4 * kRadius;  // m
   const ShapeLibrary lib = library({sphere_shape(kRadius), sphere_shape(big, "big")});
   const std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -0.25}),

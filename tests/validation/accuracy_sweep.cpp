@@ -24,7 +24,11 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
   csv << "case,dt_fraction,wall_s,error\n";
   const std::pair<const char*, std::function<double(double)>> cases[] = {
       {"binary impact", [](double f) { return binary_impact(f); }},
-      {"sphere-sphere 1:2.74", sphere_pair_impact},
+      {"sphere-sphere 1:2.74", [](double f) { return sphere_pair_impact(f); }},
+      {"exact step: binary impact", [](double f) { return binary_impact(f, kEn, true); }},
+      {"exact step: binary impact en 0.1", [](double f) { return binary_impact(f, 0.1, true); }},
+      {"exact step: binary impact en 0.9", [](double f) { return binary_impact(f, 0.9, true); }},
+      {"exact step: sphere-sphere 1:2.74", [](double f) { return sphere_pair_impact(f, true); }},
       {"oblique impact 45 deg", oblique_impact},
       {"cube corner landing", cube_landing}, {"free top", free_top}};
   for (const auto& [name, run] : cases) {

@@ -22,6 +22,7 @@ struct LawParams {
   NormalModel normal = NormalModel::linear;
   double e_star = 0.0, g_star = 0.0;  // Pa, Hertz: effective Young and shear moduli of the pair
   bool contact_mass = false;  // damping_mass: contact: the normal dashpot on the contact point's mass (contact_mass.hpp)
+  bool exact_step = false;    // the linear law's damped normal pair stepped exactly where it can (exact_linear.hpp)
 };
 
 // m, the gap of a contact with no previous step (it starts now).
@@ -49,6 +50,9 @@ struct ContactKinematics {
                      // per pair by the caller (one square root per pair, not per sub-contact); < 0: from m_eff
   double nu_t = -1.0;  // N s/m, the pair's tangential dashpot 2 alpha_t sqrt(kt m_eff), likewise
   double r_star = 0.0;  // m, the contact's curvature radius (normal_hertz.hpp; the linear law ignores it)
+  // m_eff is the contact point's own mass along the normal (spheres, whose levers lie along it,
+  // or damping_mass: contact): the linear law steps its normal pair exactly (exact_linear.hpp).
+  bool exact_step = true;
 };
 
 struct ContactForce {
