@@ -7,8 +7,8 @@ cd "$(dirname "$0")/../.."
 root=$1
 polydem=${2:-build/polydem}
 declare -A plots=([box-fill]="energy" [drum]="angle energy" [hopper]="flow energy" [impact]="driver_impactor energy"
-                  [settling]="fluid" [silo]="flow energy" [crosses-drum]="angle energy")
-declare -A when=([settling]="--time 0.3" [silo]="--time 0.5" [hopper]="" [impact]="" [drum]="" [box-fill]="" [crosses-drum]="")
+                  [settling]="fluid" [silo]="flow energy" [crosses-drum]="angle energy" [rice]="energy")
+declare -A when=([settling]="--time 0.3" [silo]="--time 0.5" [hopper]="" [impact]="" [drum]="" [box-fill]="" [crosses-drum]="" [rice]="")
 for name in "${!plots[@]}"; do
   out=$root/$name
   [ -d "$out" ] || { echo "skip $name: no $out"; continue; }
