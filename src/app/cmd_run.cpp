@@ -185,6 +185,10 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
                link.rank(), link.ranks(), sim.owned_bodies() + sim.ghost_bodies(), sim.bodies.size(),
                sim.owned_bodies(), sim.ghost_bodies(), double(c.parcels) / n, double(c.parcel_bytes) / n,
                double(c.collectives) / n, double(c.collective_bytes) / n);
+  if (const RankContacts* r = sim.rank_contacts())
+    std::fprintf(stderr, "polydem: rank %d of %d: last lists: %zu pairs, %zu candidate feature pairs; %.1f%% of the "
+                 "weight; %zu cuts in %zu rebuilds\n", link.rank(), link.ranks(), r->pairs(), r->candidates(),
+                 100.0 * r->load_share(), r->cuts(), r->rebuilds());
 }
 
 }  // namespace

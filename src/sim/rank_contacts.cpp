@@ -47,7 +47,8 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
     if (!bodies.position[b].allFinite())
       throw RunError("the neighbour search met a non-finite position (body " + std::to_string(b) + ")");
-  plan_ = plan_ghosts(cut_slabs(bodies.position, link_.ranks()), link_.rank(), bodies.position, halo_);
+  recut_if_unbalanced(bodies.position);
+  plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
   local_of_.assign(bodies.size(), -1);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
   owned_rotors_ = RotorGroups{};
@@ -57,6 +58,32 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(whole.body_pairs(), local_of_, false);  // handed over by the rebuild
   engine_->driver_pairs() = localise(whole.driver_pairs(), local_of_, true);
+}
+
+// Each body's weight from the last lists, the same on every rank (their counts were
+// gathered): its own step as one candidate feature pair (2 halves) plus the candidates of its
+// pairs (work: counted on both sides); before any lists, every body alike (equal counts).
+std::vector<double> RankContacts::body_weights() const {
+  std::vector<double> w(n_bodies_, double(kBodyWork));
+  for (const std::vector<PairCounts>& rank : pair_counts_)
+    for (const PairCounts& c : rank) w[c.id] += double(c.work);
+  return w;
+}
+
+// Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
+// bodies change owner); cuts again past it, or at the first rebuild.
+void RankContacts::recut_if_unbalanced(const std::vector<Vec3>& x) {
+  const std::vector<double> w = body_weights();
+  std::vector<double> loads;
+  if (cut_.parts() == link_.ranks()) loads = part_loads(cut_, x, w);
+  if (loads.empty() || imbalance(loads) > kRecutImbalance) {
+    cut_ = cut_domain(x, w, link_.ranks());
+    loads = part_loads(cut_, x, w);
+    ++cuts_;
+  }
+  double total = 0.0;
+  for (double l : loads) total += l;
+  load_share_ = total > 0.0 ? loads[link_.rank()] / total : 0.0;
 }
 
 void RankContacts::gather_table(ContactEngine& whole) const {
@@ -113,8 +140,7 @@ void RankContacts::sync_bodies(Bodies& bodies) const {
 // One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'
 // pair counts at rebuilds only (the lists, so the counts, hold until the next).
 void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
-  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
-  if (!rebuilt) mine.counts.clear();
+  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_, rebuilt);
   std::vector<char> bytes;
   append_section(bytes, reaction_shares());
   append_section(bytes, mine.counts);
@@ -136,6 +162,14 @@ void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
   const RankEnergy total = total_energy(energies, n_bodies_);
   energy_ = total.energy;
   contacts_ = total.contacts;
+}
+
+std::size_t RankContacts::pairs() const {
+  return engine_ ? engine_->body_pairs().size() + engine_->driver_pairs().size() : 0;
+}
+
+std::size_t RankContacts::candidates() const {
+  return engine_ ? engine_->body_pairs().slots.size() + engine_->driver_pairs().slots.size() : 0;
 }
 
 std::vector<ReactionShare> RankContacts::reaction_shares() const {
