@@ -35,7 +35,7 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
 }
 
 bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
-  bool stale = forced_ || !engine_;
+  bool stale = forced_ || rebuild_asked_ || !engine_;
   if (!stale) {
     store_.refresh(bodies);
     stale = engine_->lists_stale(store_.view(), drivers);
@@ -86,13 +86,15 @@ void RankContacts::recut_if_unbalanced(const std::vector<Vec3>& x) {
   load_share_ = total > 0.0 ? loads[link_.rank()] / total : 0.0;
 }
 
-void RankContacts::gather_table(ContactEngine& whole) const {
+void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
   if (!engine_) return;  // no step yet: whole's lists are the table
   std::vector<char> bytes;
   append_section(bytes, active_slots(engine_->body_pairs(), store_, false));
   append_section(bytes, active_slots(engine_->driver_pairs(), store_, true));
+  const std::vector<std::vector<char>> all = to_root ? link_.gather(bytes, 0) : link_.all_gather(bytes);
+  if (all.empty()) return;  // not rank 0 of a gather to it
   std::vector<TableSlot> body, driver;
-  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+  for (const std::vector<char>& from : all) {
     std::size_t at = 0;
     for (const TableSlot& t : read_section<TableSlot>(from, at)) body.push_back(t);
     for (const TableSlot& t : read_section<TableSlot>(from, at)) driver.push_back(t);
@@ -108,7 +110,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     sync_bodies(bodies);  // the new cut and the migration read every body's state
     if (!forced_) gather_table(whole);  // forced: whole's lists hold the table already
     redistribute(bodies, whole);
-    forced_ = false;
+    forced_ = rebuild_asked_ = false;
     ++rebuilds_;
   }
   engine_->compute(store_.view(), drivers, dt, stale);
@@ -131,10 +133,29 @@ void RankContacts::exchange_ghosts(Bodies& bodies) const {
   for (const Parcel& p : in) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
 }
 
-void RankContacts::sync_bodies(Bodies& bodies) const {
-  const std::vector<std::vector<char>> all = link_.all_gather(pack_owned(bodies, plan_.owned));
-  for (int r = 0; r < link_.ranks(); ++r)
+void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
+  const std::vector<char> mine = pack_owned(bodies, plan_.owned);
+  const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);
+  for (int r = 0; r < int(all.size()); ++r)
     if (r != link_.rank()) unpack_owned(all[r], bodies);
+}
+
+long RankContacts::first_non_finite(const Bodies& bodies) const {
+  std::int64_t mine = -1;  // the owned bodies are in increasing id: the first is the smallest
+  for (std::uint32_t b : plan_.owned)
+    if (!bodies.finite(b)) {
+      mine = b;
+      break;
+    }
+  std::vector<char> bytes;
+  append_section(bytes, std::vector<std::int64_t>{mine});
+  long first = -1;
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+    std::size_t at = 0;
+    const std::int64_t b = read_section<std::int64_t>(from, at).at(0);
+    if (b >= 0 && (first < 0 || b < first)) first = long(b);
+  }
+  return first;
 }
 
 // One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'

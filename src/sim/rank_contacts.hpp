@@ -41,13 +41,20 @@ class RankContacts {
   // all bodies, whose lists hold the table of histories (read at a forced rebuild, written by
   // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
-  // Rebuilds at the next step from `whole`'s lists (a checkpoint read or just written).
+  // Rebuilds at the next step from `whole`'s lists (a checkpoint read: the table on every rank).
   void force_rebuild() { forced_ = true; }
-  // Gathers every rank's active slots into `whole`'s lists (global ids): checkpoints, output.
-  void gather_table(ContactEngine& whole) const;
+  // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
+  // (a checkpoint written: the table went to rank 0 only).
+  void rebuild_next_step() { rebuild_asked_ = true; }
+  // Gathers every rank's active slots into `whole`'s lists (global ids), on every rank or on
+  // rank 0 only (`to_root`: checkpoints, output; the other ranks' `whole` is left alone).
+  void gather_table(ContactEngine& whole, bool to_root = false) const;
 
-  // Gives every rank every body's state: each rank's owned bodies, gathered (a collective).
-  void sync_bodies(Bodies& bodies) const;
+  // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
+  // bodies, gathered (a collective).
+  void sync_bodies(Bodies& bodies, bool to_root = false) const;
+  // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
+  long first_non_finite(const Bodies& bodies) const;
   // The bodies this rank integrates, by rotation path (empty before the first compute).
   const RotorGroups& owned_rotors() const { return owned_rotors_; }
   std::size_t owned() const { return plan_.owned.size(); }
@@ -91,6 +98,7 @@ class RankContacts {
   LocalStore store_;
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   bool forced_ = true;
+  bool rebuild_asked_ = false;
   std::size_t rebuilds_ = 0;
   EnergyParts energy_;
   std::size_t contacts_ = 0;

@@ -5,7 +5,7 @@
 # -np 2 checkpoint resumed with -np 3 ends on the same bits; a fast sphere running through a
 # row across the cuts keeps the body count and the momentum; at -np 3 each rank
 # holds fewer than all bodies and a third of the work (POLYDEM_MPI_COUNTS); a bad scene under
-# -np 2 gives one message and exit 1, no hang.
+# -np 2 gives one message and exit 1, no hang; a blow-up at -np 2 stops as the plain run.
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
 command -v mpirun > /dev/null || fail "no mpirun: tools/setup.sh installs openmpi-bin"
@@ -96,6 +96,20 @@ assert last > 5.0, f"the last sphere of the row moves at {last} m/s"
 print(f"13 bodies, sum vx = {px:.15g} m/s, the row's far end at {last:.3g} m/s")
 PY
 echo "ok: the projectile crossed the cuts with 13 bodies and its momentum"
+
+# A blow-up (dt 52 x critical): each rank checks its own bodies, the first over all ranks
+# stops every rank at the plain run's step with its one message, exit 2, and rank 0 writes
+# the same last good state (the gathers for it go to rank 0 only).
+sed -e 's|dt: auto|dt: "2 ms"|' -e 's|duration: "40 ms"|duration: "5 s"|' -e "s|../../shapes|$here/../../shapes|" \
+  "$here/drop.yaml" > "$tmp/blowup.yaml"
+expect_exit 2 "became non-finite" "$polydem" run "$tmp/blowup.yaml" --out "$tmp/blowup" --threads 1
+plain_error=$(grep "became non-finite" "$tmp/err" | sed "s|$tmp/blowup/||")
+expect_exit 2 "became non-finite" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np 2 "$polydem" run \
+  "$tmp/blowup.yaml" --out "$tmp/blowup2" --threads 1
+[ "$(grep -c "became non-finite" "$tmp/err")" -eq 1 ] || fail "-np 2 blow-up: not one message"
+[ "$(grep "became non-finite" "$tmp/err" | sed "s|$tmp/blowup2/||")" = "$plain_error" ] || fail "-np 2 blow-up: another message"
+cmp "$tmp/blowup/bodies_last_good.vtu" "$tmp/blowup2/bodies_last_good.vtu" || fail "-np 2 blow-up: another last good state"
+echo "ok: a blow-up at -np 2 stops as the plain run: $plain_error"
 
 printf 'simulation:\n  duration: "1 s"\n  dtt: 3\n' > "$tmp/broken.yaml"
 expect_exit 1 "broken.yaml" mpirun --oversubscribe -q -np 2 "$polydem" run "$tmp/broken.yaml" --out "$tmp/bad"
