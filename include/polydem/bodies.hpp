@@ -49,6 +49,12 @@ struct Bodies {
     inertia.resize(n, Vec3::Zero());
     group.resize(n, 0);
   }
+
+  // The state integration moves (pose, velocity, angular momentum) of body b is finite.
+  bool finite(std::size_t b) const {
+    return position[b].allFinite() && velocity[b].allFinite() && angular_momentum[b].allFinite() &&
+           orientation[b].coeffs().allFinite();
+  }
 };
 
 }  // namespace polydem

@@ -181,10 +181,15 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
   const LinkCounts c = link.counts();
   const double n = double(std::max<std::int64_t>(1, steps));
   std::fprintf(stderr, "polydem: rank %d of %d: holds %zu of %zu bodies (%zu owned, %zu ghosts); per step: %.3g "
-               "point-to-point messages, %.4g bytes; %.3g collectives, %.4g bytes of its own in them\n",
+               "point-to-point messages, %.4g bytes; %.3g collectives, %.4g bytes of its own in them, %.4g bytes "
+               "received\n",
                link.rank(), link.ranks(), sim.owned_bodies() + sim.ghost_bodies(), sim.bodies.size(),
                sim.owned_bodies(), sim.ghost_bodies(), double(c.parcels) / n, double(c.parcel_bytes) / n,
-               double(c.collectives) / n, double(c.collective_bytes) / n);
+               double(c.collectives) / n, double(c.collective_bytes) / n, double(c.collective_bytes_in) / n);
+  if (const RankContacts* r = sim.rank_contacts())
+    std::fprintf(stderr, "polydem: rank %d of %d: last lists: %zu pairs, %zu candidate feature pairs; %.1f%% of the "
+                 "weight; %zu cuts in %zu rebuilds\n", link.rank(), link.ranks(), r->pairs(), r->candidates(),
+                 100.0 * r->load_share(), r->cuts(), r->rebuilds());
 }
 
 }  // namespace

@@ -33,9 +33,21 @@ class MpiLink final : public RankLink {
     for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
     std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
     MPI_Allgatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
-    std::vector<std::vector<char>> per_rank(ranks_);
-    for (int r = 0; r < ranks_; ++r) per_rank[r].assign(all.begin() + offsets[r], all.begin() + offsets[r + 1]);
-    return per_rank;
+    counts_.collective_bytes_in += std::uint64_t(offsets[ranks_] - n);
+    return split(all, offsets);
+  }
+  std::vector<std::vector<char>> gather(const std::vector<char>& mine, int root) const override {
+    const int n = int(mine.size());
+    ++counts_.collectives;
+    counts_.collective_bytes += mine.size();
+    std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
+    MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, root, MPI_COMM_WORLD);
+    for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
+    std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
+    MPI_Gatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, root, MPI_COMM_WORLD);
+    if (rank_ != root) return {};
+    counts_.collective_bytes_in += std::uint64_t(offsets[ranks_] - n);
+    return split(all, offsets);
   }
   void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
     std::vector<MPI_Request> pending(out.size() + in.size());
@@ -53,6 +65,12 @@ class MpiLink final : public RankLink {
   LinkCounts counts() const override { return counts_; }
 
  private:
+  // Each rank's bytes of a gathered buffer at `offsets`.
+  std::vector<std::vector<char>> split(const std::vector<char>& all, const std::vector<int>& offsets) const {
+    std::vector<std::vector<char>> per_rank(ranks_);
+    for (int r = 0; r < ranks_; ++r) per_rank[r].assign(all.begin() + offsets[r], all.begin() + offsets[r + 1]);
+    return per_rank;
+  }
   static constexpr int kGhostTag = 20;  // the number: one kind of point-to-point message
   int rank_, ranks_;
   mutable LinkCounts counts_;

@@ -1,15 +1,15 @@
 #pragma once
-// Who sends which body to whom between two rebuilds of a distributed run: from the slabs and
+// Who sends which body to whom between two rebuilds of a distributed run: from the cut and
 // every body's centre at the rebuild, each rank's owned bodies, its ghosts (bodies within the
-// halo of its slab, owned elsewhere), and the point-to-point lists that keep them current: the
+// halo of its box, owned elsewhere), and the point-to-point lists that keep them current: the
 // owned bodies each other rank holds as ghosts, and the ghosts each other rank owns. Rank p's
 // send list to q is, entry for entry, q's receive list from p (both in increasing id), so a
-// parcel is bare state in an order both sides know. Slabs today; periodic images can later
-// be ghosts of the same lists.
+// parcel is bare state in an order both sides know. Boxes of a bisection today; periodic
+// images can later be ghosts of the same lists.
 #include <cstdint>
 #include <vector>
 
-#include "sim/slabs.hpp"
+#include "sim/domain_cut.hpp"
 
 namespace polydem {
 
@@ -21,7 +21,7 @@ struct GhostPlan {
   std::vector<std::vector<std::uint32_t>> receive;  // per rank: ghosts it owns
 };
 
-// Rank p's plan for the centres `x` cut by `slabs` (one part per rank), ghosts within `halo`.
-GhostPlan plan_ghosts(const Slabs& slabs, int p, const std::vector<Vec3>& x, double halo);
+// Rank p's plan for the centres `x` cut by `cut` (one part per rank), ghosts within `halo`.
+GhostPlan plan_ghosts(const DomainCut& cut, int p, const std::vector<Vec3>& x, double halo);
 
 }  // namespace polydem

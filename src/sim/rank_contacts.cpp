@@ -35,7 +35,7 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
 }
 
 bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
-  bool stale = forced_ || !engine_;
+  bool stale = forced_ || rebuild_asked_ || !engine_;
   if (!stale) {
     store_.refresh(bodies);
     stale = engine_->lists_stale(store_.view(), drivers);
@@ -47,7 +47,8 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
     if (!bodies.position[b].allFinite())
       throw RunError("the neighbour search met a non-finite position (body " + std::to_string(b) + ")");
-  plan_ = plan_ghosts(cut_slabs(bodies.position, link_.ranks()), link_.rank(), bodies.position, halo_);
+  recut_if_unbalanced(bodies.position);
+  plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
   local_of_.assign(bodies.size(), -1);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
   owned_rotors_ = RotorGroups{};
@@ -59,13 +60,41 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   engine_->driver_pairs() = localise(whole.driver_pairs(), local_of_, true);
 }
 
-void RankContacts::gather_table(ContactEngine& whole) const {
+// Each body's weight from the last lists, the same on every rank (their counts were
+// gathered): its own step as one candidate feature pair (2 halves) plus the candidates of its
+// pairs (work: counted on both sides); before any lists, every body alike (equal counts).
+std::vector<double> RankContacts::body_weights() const {
+  std::vector<double> w(n_bodies_, double(kBodyWork));
+  for (const std::vector<PairCounts>& rank : pair_counts_)
+    for (const PairCounts& c : rank) w[c.id] += double(c.work);
+  return w;
+}
+
+// Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
+// bodies change owner); cuts again past it, or at the first rebuild.
+void RankContacts::recut_if_unbalanced(const std::vector<Vec3>& x) {
+  const std::vector<double> w = body_weights();
+  std::vector<double> loads;
+  if (cut_.parts() == link_.ranks()) loads = part_loads(cut_, x, w);
+  if (loads.empty() || imbalance(loads) > kRecutImbalance) {
+    cut_ = cut_domain(x, w, link_.ranks());
+    loads = part_loads(cut_, x, w);
+    ++cuts_;
+  }
+  double total = 0.0;
+  for (double l : loads) total += l;
+  load_share_ = total > 0.0 ? loads[link_.rank()] / total : 0.0;
+}
+
+void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
   if (!engine_) return;  // no step yet: whole's lists are the table
   std::vector<char> bytes;
   append_section(bytes, active_slots(engine_->body_pairs(), store_, false));
   append_section(bytes, active_slots(engine_->driver_pairs(), store_, true));
+  const std::vector<std::vector<char>> all = to_root ? link_.gather(bytes, 0) : link_.all_gather(bytes);
+  if (all.empty()) return;  // not rank 0 of a gather to it
   std::vector<TableSlot> body, driver;
-  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+  for (const std::vector<char>& from : all) {
     std::size_t at = 0;
     for (const TableSlot& t : read_section<TableSlot>(from, at)) body.push_back(t);
     for (const TableSlot& t : read_section<TableSlot>(from, at)) driver.push_back(t);
@@ -81,7 +110,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     sync_bodies(bodies);  // the new cut and the migration read every body's state
     if (!forced_) gather_table(whole);  // forced: whole's lists hold the table already
     redistribute(bodies, whole);
-    forced_ = false;
+    forced_ = rebuild_asked_ = false;
     ++rebuilds_;
   }
   engine_->compute(store_.view(), drivers, dt, stale);
@@ -104,17 +133,35 @@ void RankContacts::exchange_ghosts(Bodies& bodies) const {
   for (const Parcel& p : in) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
 }
 
-void RankContacts::sync_bodies(Bodies& bodies) const {
-  const std::vector<std::vector<char>> all = link_.all_gather(pack_owned(bodies, plan_.owned));
-  for (int r = 0; r < link_.ranks(); ++r)
+void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
+  const std::vector<char> mine = pack_owned(bodies, plan_.owned);
+  const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);
+  for (int r = 0; r < int(all.size()); ++r)
     if (r != link_.rank()) unpack_owned(all[r], bodies);
+}
+
+long RankContacts::first_non_finite(const Bodies& bodies) const {
+  std::int64_t mine = -1;  // the owned bodies are in increasing id: the first is the smallest
+  for (std::uint32_t b : plan_.owned)
+    if (!bodies.finite(b)) {
+      mine = b;
+      break;
+    }
+  std::vector<char> bytes;
+  append_section(bytes, std::vector<std::int64_t>{mine});
+  long first = -1;
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+    std::size_t at = 0;
+    const std::int64_t b = read_section<std::int64_t>(from, at).at(0);
+    if (b >= 0 && (first < 0 || b < first)) first = long(b);
+  }
+  return first;
 }
 
 // One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'
 // pair counts at rebuilds only (the lists, so the counts, hold until the next).
 void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
-  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_);
-  if (!rebuilt) mine.counts.clear();
+  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_, rebuilt);
   std::vector<char> bytes;
   append_section(bytes, reaction_shares());
   append_section(bytes, mine.counts);
@@ -136,6 +183,14 @@ void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
   const RankEnergy total = total_energy(energies, n_bodies_);
   energy_ = total.energy;
   contacts_ = total.contacts;
+}
+
+std::size_t RankContacts::pairs() const {
+  return engine_ ? engine_->body_pairs().size() + engine_->driver_pairs().size() : 0;
+}
+
+std::size_t RankContacts::candidates() const {
+  return engine_ ? engine_->body_pairs().slots.size() + engine_->driver_pairs().slots.size() : 0;
 }
 
 std::vector<ReactionShare> RankContacts::reaction_shares() const {

@@ -1,13 +1,13 @@
 #pragma once
 // The contact stage of a distributed run (issue 20): each rank integrates the bodies it owns
-// (their centres in its slab, cut at each rebuild at equal body counts along the longest side)
-// and computes their pairs with ghosts within reach, in global id order, so each body's force
+// (their centres in its box of a recursive bisection weighted by each body's measured contact
+// work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
 // to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
 // reactions (summed in the one-process pair order) and the pair energies (summed in the
 // one-process blocks of kPairBlock pairs; where each pair falls follows from the owned
 // bodies' pair counts, sent at rebuilds). At a rebuild every rank gathers every body's state
-// (sync_bodies), cuts the slabs again and takes its bodies and their contact histories from
+// (sync_bodies), cuts again if need be and takes its bodies and their contact histories from
 // the table of active slots in global ids (sim/contact_table.hpp). Every rank keeps arrays for
 // all bodies: only its owned bodies and ghosts are current between gathers.
 #include <memory>
@@ -15,11 +15,11 @@
 
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
+#include "sim/domain_cut.hpp"
 #include "sim/ghost_plan.hpp"
 #include "sim/local_store.hpp"
 #include "sim/rank_energy.hpp"
 #include "sim/rank_link.hpp"
-#include "sim/slabs.hpp"
 
 namespace polydem {
 
@@ -41,13 +41,20 @@ class RankContacts {
   // all bodies, whose lists hold the table of histories (read at a forced rebuild, written by
   // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
-  // Rebuilds at the next step from `whole`'s lists (a checkpoint read or just written).
+  // Rebuilds at the next step from `whole`'s lists (a checkpoint read: the table on every rank).
   void force_rebuild() { forced_ = true; }
-  // Gathers every rank's active slots into `whole`'s lists (global ids): checkpoints, output.
-  void gather_table(ContactEngine& whole) const;
+  // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
+  // (a checkpoint written: the table went to rank 0 only).
+  void rebuild_next_step() { rebuild_asked_ = true; }
+  // Gathers every rank's active slots into `whole`'s lists (global ids), on every rank or on
+  // rank 0 only (`to_root`: checkpoints, output; the other ranks' `whole` is left alone).
+  void gather_table(ContactEngine& whole, bool to_root = false) const;
 
-  // Gives every rank every body's state: each rank's owned bodies, gathered (a collective).
-  void sync_bodies(Bodies& bodies) const;
+  // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
+  // bodies, gathered (a collective).
+  void sync_bodies(Bodies& bodies, bool to_root = false) const;
+  // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
+  long first_non_finite(const Bodies& bodies) const;
   // The bodies this rank integrates, by rotation path (empty before the first compute).
   const RotorGroups& owned_rotors() const { return owned_rotors_; }
   std::size_t owned() const { return plan_.owned.size(); }
@@ -56,10 +63,22 @@ class RankContacts {
   const EnergyParts& energy() const { return energy_; }  // J, this step, every rank's pairs
   std::size_t contacts() const { return contacts_; }    // active sub-contacts, every rank's pairs
   std::size_t rebuilds() const { return rebuilds_; }
+  std::size_t cuts() const { return cuts_; }          // rebuilds that cut the domain again
+  double load_share() const { return load_share_; }   // this rank's share of the weight at the last rebuild
+  // This rank's lists: pairs with an owned body and their candidate feature pairs.
+  std::size_t pairs() const;
+  std::size_t candidates() const;
+
+  // A body's own step in the weight of the cut, in halves of a candidate feature pair.
+  static constexpr std::uint32_t kBodyWork = 2;
+  // The most loaded part over the mean past which a rebuild cuts again: a 5% wait at most.
+  static constexpr double kRecutImbalance = 1.05;
 
  private:
   bool lists_stale(const Bodies& bodies, const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
+  std::vector<double> body_weights() const;
+  void recut_if_unbalanced(const std::vector<Vec3>& x);
   void exchange_ghosts(Bodies& bodies) const;
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
@@ -68,7 +87,10 @@ class RankContacts {
   const std::vector<Shape>& shapes_;
   ContactSettings settings_;
   std::size_t n_bodies_;
-  double halo_;  // m, ghosts: bodies within this distance of the slab
+  double halo_;  // m, ghosts: bodies within this distance of the box
+  DomainCut cut_;  // the ranks' boxes, kept while balanced
+  std::size_t cuts_ = 0;
+  double load_share_ = 0.0;
   GhostPlan plan_;
   std::vector<std::vector<PairCounts>> pair_counts_;  // per rank, sent at the last rebuild
   RotorGroups owned_rotors_;
@@ -76,6 +98,7 @@ class RankContacts {
   LocalStore store_;
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   bool forced_ = true;
+  bool rebuild_asked_ = false;
   std::size_t rebuilds_ = 0;
   EnergyParts energy_;
   std::size_t contacts_ = 0;

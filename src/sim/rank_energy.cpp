@@ -36,16 +36,29 @@ void add_blocks(const std::vector<PairEnergy>& pairs, const std::vector<std::uin
   }
 }
 
+// Adds each pair's candidate feature pairs to both its bodies (twice to a driver pair's body).
+void add_work(const PairList& list, bool driver, std::vector<std::uint32_t>& work) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::uint32_t slots = list.slot_begin[k + 1] - list.slot_begin[k];
+    work[list.pairs[k].i] += slots;
+    work[driver ? list.pairs[k].i : list.pairs[k].j] += slots;
+  }
+}
+
 }  // namespace
 
-EnergyShare energy_share(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store) {
+EnergyShare energy_share(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store,
+                         bool counts) {
   const std::size_t n_local = store.global_id.size();
-  std::vector<std::uint32_t> n_body(n_local, 0), n_driver(n_local, 0);
+  std::vector<std::uint32_t> n_body(n_local, 0), n_driver(n_local, 0), work(n_local, 0);
   EnergyShare share;
   collect(body_pairs, store, false, n_body, share);
   collect(driver_pairs, store, true, n_driver, share);
+  if (!counts) return share;
+  add_work(body_pairs, false, work);
+  add_work(driver_pairs, true, work);
   for (std::size_t k = 0; k < n_local; ++k)
-    if (!store.ghost[k]) share.counts.push_back({store.global_id[k], n_body[k], n_driver[k]});
+    if (!store.ghost[k]) share.counts.push_back({store.global_id[k], n_body[k], n_driver[k], work[k]});
   return share;
 }
 

@@ -12,9 +12,11 @@
 
 namespace polydem {
 
-// An owned body's pairs as body i of the one-process lists.
+// An owned body's pairs as body i of the one-process lists, and its measured contact work:
+// the candidate feature pairs of every pair it is in (either side; a driver pair's twice, as
+// it has one side), the weight of the next cut (sim/domain_cut.hpp).
 struct PairCounts {
-  std::uint32_t id, body, driver;
+  std::uint32_t id, body, driver, work;
 };
 
 // A pair's energy: the `ordinal`-th pair of body i in the body (driver 0) or driver list.
@@ -36,7 +38,9 @@ struct RankEnergy {
   std::size_t contacts = 0;  // active sub-contacts, all ranks' pairs
 };
 
-EnergyShare energy_share(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store);
+// `counts`: with the owned bodies' counts and work (at rebuilds: they hold until the next).
+EnergyShare energy_share(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store,
+                         bool counts);
 
 // The totals from every rank's share, the same on every rank; `n_bodies` in the scene.
 RankEnergy total_energy(const std::vector<EnergyShare>& shares, std::size_t n_bodies);

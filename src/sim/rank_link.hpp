@@ -19,7 +19,8 @@ struct Parcel {
 // What a rank has sent since the start: point-to-point parcels and its share of the collectives.
 struct LinkCounts {
   std::uint64_t parcels = 0, parcel_bytes = 0;          // sent point to point
-  std::uint64_t collectives = 0, collective_bytes = 0;  // all_gather calls, this rank's bytes in them
+  std::uint64_t collectives = 0, collective_bytes = 0;  // all_gather and gather calls, this rank's bytes in them
+  std::uint64_t collective_bytes_in = 0;                // the other ranks' bytes they brought to this rank
 };
 
 class RankLink {
@@ -29,6 +30,13 @@ class RankLink {
   virtual int ranks() const = 0;
   // Every rank's `mine`, in rank order, on every rank (a collective: all ranks call it).
   virtual std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const = 0;
+  // Every rank's `mine`, in rank order, on rank `root` only (none elsewhere; a collective):
+  // what only rank 0 reads (output). By default an all_gather whose copies are dropped.
+  virtual std::vector<std::vector<char>> gather(const std::vector<char>& mine, int root) const {
+    std::vector<std::vector<char>> all = all_gather(mine);
+    if (rank() != root) all.clear();
+    return all;
+  }
   // Sends each parcel of `out` to its rank and fills each parcel of `in` (its bytes sized by
   // the caller) from its rank. Every rank calls it; the pattern is symmetric between ranks.
   virtual void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;

@@ -169,7 +169,7 @@ class OutputWriter {
   }
 
   void frame() {
-    sim_.sync_state();
+    sim_.gather_state();
     if (!io_) return;
     OutputFrame f{sim_.time(), {numbered("bodies", progress_.frame, "vtu")}};
     write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
@@ -193,7 +193,7 @@ class OutputWriter {
 
   void energy_row() {
     if (!sim_.scene().output.csv_every) return;
-    sim_.sync_state();  // the energies and probes read every rank's bodies and contacts
+    sim_.gather_state();  // the energies and probes read every rank's bodies and contacts
     if (!energy_) return;
     const EnergyRow e = sim_.energy();
     if (fluid_) fluid_->row();
@@ -212,9 +212,9 @@ class OutputWriter {
 
   std::string checkpoint(Simulation& sim) {
     const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
-    sim.sync_state();
+    sim.gather_state();
     if (io_) write_checkpoint(path, sim, progress_);
-    sim.force_rebuild();  // the resumed run rebuilds here too: same lists, same bits
+    sim.force_rebuild(false);  // the resumed run rebuilds here too: same lists, same bits
     return path;
   }
 
@@ -344,8 +344,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const ContactOperator& law = sim.scene().forces.contact;
   const double kn = sim.time_step().kn_particle, kn_driver = sim.time_step().kn_driver;  // N/m
   OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
-  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check, after their sync_state
-    if (!law.present) return;
+  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check, after their gather_state
+    if (!law.present || !io) return;
     const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
                                          kn_driver, sim.time());
     if (!w.empty() && io) std::fprintf(stderr, "%s\n", w.c_str());
@@ -368,13 +368,13 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (governor.after_step(stepping) != threads) omp_set_num_threads(threads = governor.threads());
     const std::int64_t s = sim.step_index();
     if (s % kCheckSteps == 0 || s == last_step) {
-      sim.sync_state();  // every rank checks every body: all stop alike
-      const long bad = first_non_finite_body(sim.bodies);
+      sim.gather_state();  // rank 0 keeps the last good state and checks the overlaps
+      const long bad = sim.first_non_finite();  // each rank its own bodies, the first over all: all stop alike
       if (bad >= 0) fail_non_finite(sim, body_name(sim, bad), last_good, good_step, o.out_dir, first_check);
       const std::string ledger = non_finite_ledger(sim.ledger);
       if (!ledger.empty()) fail_non_finite(sim, ledger, last_good, good_step, o.out_dir, first_check);
       first_check = false;
-      last_good = sim.bodies;
+      if (io) last_good = sim.bodies;
       good_step = s;
       check_overlaps();
     }

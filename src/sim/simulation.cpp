@@ -82,15 +82,26 @@ void Simulation::contact_stage() {
     engine_->compute(all_owned(bodies), drivers, dt_);
 }
 
-void Simulation::force_rebuild() {
+void Simulation::force_rebuild(bool table_on_every_rank) {
   engine_->force_rebuild();
-  if (ranks_) ranks_->force_rebuild();
+  if (ranks_ && table_on_every_rank) ranks_->force_rebuild();
+  if (ranks_ && !table_on_every_rank) ranks_->rebuild_next_step();
 }
 
 void Simulation::sync_state() {
   if (!ranks_) return;
   ranks_->sync_bodies(bodies);
   ranks_->gather_table(*engine_);
+}
+
+void Simulation::gather_state() {
+  if (!ranks_) return;
+  ranks_->sync_bodies(bodies, true);
+  ranks_->gather_table(*engine_, true);
+}
+
+long Simulation::first_non_finite() const {
+  return ranks_ ? ranks_->first_non_finite(bodies) : first_non_finite_body(bodies);
 }
 
 void Simulation::external_forces() {
@@ -185,9 +196,7 @@ EnergyRow Simulation::energy() const {
 
 long first_non_finite_body(const Bodies& bodies) {
   for (std::size_t b = 0; b < bodies.size(); ++b)
-    if (!bodies.position[b].allFinite() || !bodies.velocity[b].allFinite() ||
-        !bodies.angular_momentum[b].allFinite() || !bodies.orientation[b].coeffs().allFinite())
-      return long(b);
+    if (!bodies.finite(b)) return long(b);
   return -1;
 }
 

@@ -67,8 +67,10 @@ class Simulation {
   // Checkpoint support: the step counter is part of the state.
   void set_step_index(std::int64_t s) { step_ = s; }
   // Rebuilds the contact lists at the next step from engine()'s lists (a checkpoint read or
-  // written: the same lists, the same bits either way).
-  void force_rebuild();
+  // written: the same lists, the same bits either way). `table_on_every_rank`: false when
+  // engine()'s lists were gathered to rank 0 only (a checkpoint written by a distributed run:
+  // the ranks rebuild from their own lists then).
+  void force_rebuild(bool table_on_every_rank = true);
 
   // Distributed runs: `bodies` holds every body's state and engine() every rank's contacts
   // (global ids) only after sync_state(), a collective, called before output, checkpoints and
@@ -76,9 +78,15 @@ class Simulation {
   bool distributed() const { return bool(ranks_); }
   int rank() const { return link_ ? link_->rank() : 0; }
   void sync_state();
+  // The same onto rank 0 only (a collective): output and checkpoints, which rank 0 writes.
+  void gather_state();
+  // The smallest id of a body whose state is not finite, or -1; distributed runs: each rank
+  // checks the bodies it owns (a collective), the same answer as the whole state's.
+  long first_non_finite() const;
   // Distributed runs: the bodies this rank owns and holds as ghosts since the last rebuild.
   std::size_t owned_bodies() const { return ranks_ ? ranks_->owned() : bodies.size(); }
   std::size_t ghost_bodies() const { return ranks_ ? ranks_->ghosts() : 0; }
+  const RankContacts* rank_contacts() const { return ranks_.get(); }  // null: one process
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
   std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
   std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }

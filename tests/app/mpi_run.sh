@@ -3,9 +3,9 @@
 # energy.csv and the driver CSVs of -np 1, 2 and 3 equal a plain run's byte for byte, on a
 # pour with walls (cubes, octahedra, spheres) and a turning drum (spheres, dodecahedra); a
 # -np 2 checkpoint resumed with -np 3 ends on the same bits; a fast sphere running through a
-# row across the slab boundaries keeps the body count and the momentum; at -np 3 each rank
-# holds fewer than all bodies (POLYDEM_MPI_COUNTS); a bad scene under
-# -np 2 gives one message and exit 1, no hang.
+# row across the cuts keeps the body count and the momentum; at -np 3 each rank
+# holds fewer than all bodies and a third of the work (POLYDEM_MPI_COUNTS); a bad scene under
+# -np 2 gives one message and exit 1, no hang; a blow-up at -np 2 stops as the plain run.
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
 command -v mpirun > /dev/null || fail "no mpirun: tools/setup.sh installs openmpi-bin"
@@ -36,25 +36,33 @@ for scene in pour drum; do
   echo "ok: $scene: -np 1, 2, 3 give the plain run's bits"
 done
 
-# Each of 3 ranks moves a third of the pour and holds fewer than all 100 bodies; the ghosts
-# come point to point from the neighbour slabs (POLYDEM_MPI_COUNTS: one line per rank).
+# Each of 3 ranks moves its share of the pour and holds fewer than all 100 bodies; the ghosts
+# come point to point from the boxes near its own; the cut by measured work keeps each rank's
+# share of the weight near a third, cut again only at some rebuilds (POLYDEM_MPI_COUNTS: two
+# lines per rank).
 POLYDEM_MPI_COUNTS=1 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/counted" --threads 1 > /dev/null 2> "$tmp/counts" ||
   fail "counted pour at -np 3"
 same_outputs "$tmp/pour" "$tmp/counted"
 /usr/bin/python3 - "$tmp/counts" <<'PY'
 import re, sys
-rows = [re.search(r"rank (\d) of 3: holds (\d+) of 100 bodies \((\d+) owned, (\d+) ghosts\); per step: ([\d.]+) point-to-point", l)
-        for l in open(sys.argv[1])]
-rows = sorted((int(m[1]), int(m[2]), int(m[3]), int(m[4]), float(m[5])) for m in rows if m)
-assert [r[0] for r in rows] == [0, 1, 2], rows
+text = open(sys.argv[1]).read()
+rows = sorted((int(m[1]), int(m[2]), int(m[3]), int(m[4]), float(m[5])) for m in re.finditer(
+    r"rank (\d) of 3: holds (\d+) of 100 bodies \((\d+) owned, (\d+) ghosts\); per step: ([\d.]+) point-to-point", text))
+work = sorted((int(m[1]), int(m[2]), float(m[3]), int(m[4]), int(m[5])) for m in re.finditer(
+    r"rank (\d) of 3: last lists: (\d+) pairs, \d+ candidate feature pairs; ([\d.]+)% of the weight; (\d+) cuts in (\d+) rebuilds", text))
+assert [r[0] for r in rows] == [0, 1, 2] and [w[0] for w in work] == [0, 1, 2], (rows, work)
 assert sum(r[2] for r in rows) == 100, f"owned bodies add up to {sum(r[2] for r in rows)}, expected 100"
 for rank, held, owned, ghosts, messages in rows:
-    assert held == owned + ghosts and held < 100, f"rank {rank} holds {held} bodies"
-    assert 33 <= owned <= 34 and ghosts > 0, f"rank {rank}: {owned} owned, {ghosts} ghosts"
-    assert messages <= (2 if rank == 1 else 1), f"rank {rank}: {messages} messages a step (neighbours only)"
-print("; ".join(f"rank {r}: {o} owned + {g} ghosts, {m:g} messages a step" for r, _, o, g, m in rows))
+    assert held == owned + ghosts and held < 100 and ghosts > 0, f"rank {rank} holds {held} bodies"
+    assert messages <= 2, f"rank {rank}: {messages} messages a step"
+assert abs(sum(w[2] for w in work) - 100.0) < 0.2, work
+for rank, pairs, share, cuts, rebuilds in work:
+    assert pairs > 0 and abs(share - 100.0 / 3) < 100.0 / 3 * 0.1, f"rank {rank}: {share}% of the weight"
+    assert 2 <= cuts < rebuilds, f"rank {rank}: {cuts} cuts in {rebuilds} rebuilds"
+print("; ".join(f"rank {r[0]}: {r[2]} owned + {r[3]} ghosts, {r[4]:g} messages a step, {w[2]}% of the weight"
+                for r, w in zip(rows, work)))
 PY
-echo "ok: -np 3: each rank holds fewer than all bodies, ghosts from its neighbours only"
+echo "ok: -np 3: each rank holds fewer than all bodies and a third of the work, within 10%"
 
 # A -np 2 checkpoint at 20 ms resumed with -np 3 ends where the plain run ends.
 first=$(ls "$tmp/pour2"/checkpoint_*.bin | sort | head -1)
@@ -83,11 +91,25 @@ v = vtk_to_numpy(d.GetCellData().GetArray("velocity"))
 assert len(set(ids.tolist())) == 13, f"{len(set(ids.tolist()))} bodies, expected 13"
 px = v[:, 0].sum() if len(v) == 13 else sum(v[ids == b][0, 0] for b in set(ids.tolist()))
 assert abs(px - 20.0) < 1e-9 * 20.0, f"momentum per unit mass {px} m/s, expected 20"
-last = v[ids == 12][0, 0]  # the far end of the row: the push went through every slab
+last = v[ids == 12][0, 0]  # the far end of the row: the push went through every cut
 assert last > 5.0, f"the last sphere of the row moves at {last} m/s"
 print(f"13 bodies, sum vx = {px:.15g} m/s, the row's far end at {last:.3g} m/s")
 PY
-echo "ok: the projectile crossed the slabs with 13 bodies and its momentum"
+echo "ok: the projectile crossed the cuts with 13 bodies and its momentum"
+
+# A blow-up (dt 52 x critical): each rank checks its own bodies, the first over all ranks
+# stops every rank at the plain run's step with its one message, exit 2, and rank 0 writes
+# the same last good state (the gathers for it go to rank 0 only).
+sed -e 's|dt: auto|dt: "2 ms"|' -e 's|duration: "40 ms"|duration: "5 s"|' -e "s|../../shapes|$here/../../shapes|" \
+  "$here/drop.yaml" > "$tmp/blowup.yaml"
+expect_exit 2 "became non-finite" "$polydem" run "$tmp/blowup.yaml" --out "$tmp/blowup" --threads 1
+plain_error=$(grep "became non-finite" "$tmp/err" | sed "s|$tmp/blowup/||")
+expect_exit 2 "became non-finite" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np 2 "$polydem" run \
+  "$tmp/blowup.yaml" --out "$tmp/blowup2" --threads 1
+[ "$(grep -c "became non-finite" "$tmp/err")" -eq 1 ] || fail "-np 2 blow-up: not one message"
+[ "$(grep "became non-finite" "$tmp/err" | sed "s|$tmp/blowup2/||")" = "$plain_error" ] || fail "-np 2 blow-up: another message"
+cmp "$tmp/blowup/bodies_last_good.vtu" "$tmp/blowup2/bodies_last_good.vtu" || fail "-np 2 blow-up: another last good state"
+echo "ok: a blow-up at -np 2 stops as the plain run: $plain_error"
 
 printf 'simulation:\n  duration: "1 s"\n  dtt: 3\n' > "$tmp/broken.yaml"
 expect_exit 1 "broken.yaml" mpirun --oversubscribe -q -np 2 "$polydem" run "$tmp/broken.yaml" --out "$tmp/bad"

@@ -1,5 +1,5 @@
 // The contact stage on a local view (owned bodies plus ghosts, in global id order): cut into
-// slabs, each part computing the pairs of its owned bodies, the pile's forces and torques are
+// boxes, each part computing the pairs of its owned bodies, the pile's forces and torques are
 // the bits of the whole at every step, through rebuilds and contact histories.
 #include <catch2/catch.hpp>
 
@@ -42,7 +42,7 @@ struct SplitRun {
 };
 
 // From the pile once it holds 150 contacts, steps `steps` times with the whole engine and,
-// beside it, `parts` slab parts whose ghost sets (the halo plus `margin`, m; none without
+// beside it, `parts` parts (equal body counts) whose ghost sets (the halo plus `margin`, m; none without
 // `ghosts`) are chosen once; counts the owned bodies whose force or torque differs from the
 // whole's by a bit.
 SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
@@ -55,12 +55,12 @@ SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
   const ContactSettings settings = pile_settings(p.scene);
   const RotorGroups rotors = group_rotors(bodies);
   ContactEngine whole(sim.shapes(), all_owned(bodies), settings);
-  const Slabs slabs = cut_slabs(bodies.position, parts);
+  const DomainCut cut = cut_domain(bodies.position, std::vector<double>(bodies.size(), 1.0), parts);
   const double halo = ghosts ? ghost_halo(max_bounding_radius(bodies, sim.shapes()), settings.skin) + margin : 0.0;
   std::vector<Part> split;
   SplitRun out;
   for (int k = 0; k < parts; ++k) {
-    GhostPlan plan = plan_ghosts(slabs, k, bodies.position, halo);
+    GhostPlan plan = plan_ghosts(cut, k, bodies.position, halo);
     for (std::uint8_t g : plan.ghost) out.ghosts += g;
     Part& part = split.emplace_back(Part{LocalStore{}, drivers, nullptr});
     part.store.select(bodies, std::move(plan.local), std::move(plan.ghost));
@@ -99,7 +99,7 @@ SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
 
 }  // namespace
 
-TEST_CASE("a pile cut into 2 or 3 slabs with ghosts gets the force bits of the whole at every step") {
+TEST_CASE("a pile cut into 2 or 3 boxes with ghosts gets the force bits of the whole at every step") {
   for (int parts : {2, 3}) {
     const SplitRun r = run_split(parts, 600, 0.003);
     INFO(parts << " parts: " << r.rebuilds << " rebuilds, " << r.max_contacts << " contacts, " << r.ghosts << " ghosts");
@@ -115,22 +115,4 @@ TEST_CASE("parts without ghosts miss the pairs across the cut: the comparison se
   const SplitRun r = run_split(2, 50, 0.0, false);
   CHECK(r.ghosts == 0);
   CHECK(r.mismatches > 0);
-}
-
-TEST_CASE("slabs cut the longest side at equal body counts and ghosts lie within the halo") {
-  std::vector<Vec3> x;
-  for (int k = 0; k < 12; ++k) x.push_back(Vec3(0.1 * k, 0.01 * (k % 3), 0.0));
-  const Slabs s = cut_slabs(x, 3);
-  CHECK(s.axis == 0);
-  REQUIRE(s.cuts.size() == 2);
-  CHECK(s.cuts[0] == x[4].x());
-  CHECK(s.cuts[1] == x[8].x());
-  int owned[3] = {0, 0, 0};
-  for (const Vec3& c : x) ++owned[s.owner(c)];
-  CHECK(owned[0] == 4);
-  CHECK(owned[1] == 4);
-  CHECK(owned[2] == 4);
-  const GhostPlan plan = plan_ghosts(s, 1, x, 0.15);  // bodies 4..7 owned; 3, 8 and 9 within 0.15 m of [0.4, 0.8)
-  CHECK(plan.local == std::vector<std::uint32_t>{3, 4, 5, 6, 7, 8, 9});
-  CHECK(plan.ghost == std::vector<std::uint8_t>{1, 0, 0, 0, 0, 1, 1});
 }

@@ -70,11 +70,14 @@ struct Outcome {
   std::vector<Vec3> driver_force, driver_torque;
   std::size_t rebuilds = 0;
   std::size_t owned = 0, ghosts = 0;  // held by the rank at the last rebuild
+  std::size_t cuts = 0;               // rebuilds that cut the domain again
+  double share = 0.0;                 // of the weight, at the last rebuild
 };
 
 Outcome outcome(Simulation& sim) {
   sim.sync_state();
   Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
+  if (const RankContacts* r = sim.rank_contacts()) o.cuts = r->cuts(), o.share = r->load_share();
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     o.driver_force.push_back(sim.drivers[j].force);
     o.driver_torque.push_back(sim.drivers[j].torque);
@@ -133,6 +136,7 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
     for (std::thread& t : ranks) t.join();
     CHECK_FALSE(all.mismatch);
     std::size_t owned = 0, held = 0, fewest = one.bodies.size();
+    double shares = 0.0;
     for (int r = 0; r < n; ++r) {
       INFO(n << " ranks, rank " << r);
       require_same(one, got[r]);
@@ -140,9 +144,14 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
       owned += got[r].owned;
       held += got[r].owned + got[r].ghosts;
       fewest = std::min(fewest, got[r].owned + got[r].ghosts);
+      CHECK(got[r].cuts >= 2);                   // by body counts at the first rebuild, then by the work
+      CHECK(got[r].cuts < got[r].rebuilds);      // a balanced cut is kept
+      CHECK(got[r].share * n < 1.1);             // no rank's share of the work 10% over the mean
+      shares += got[r].share;
     }
     CHECK(owned == one.bodies.size());  // every body moved by exactly one rank
+    CHECK(shares == Approx(1.0).epsilon(1e-12));
     CHECK(held < std::size_t(n) * one.bodies.size());  // 272 of 300 at 2 ranks, 361 of 450 at 3: not replicated
-    CHECK(fewest < one.bodies.size());  // an end slab holds its share and the ghosts near its cut
+    CHECK(fewest < one.bodies.size());  // an end box holds its share and the ghosts near its cut
   }
 }
