@@ -219,6 +219,18 @@ Mat3 principal_axes(const Mat3& inertia, Vec3& moments) {
   return axes;
 }
 
+// The quadrature's lines are too far apart for the swept elements: a mass or inertia off by
+// percents would be simulated as if it were right.
+std::string too_coarse(const Shape& s, double error, int cells) {
+  char text[320];
+  std::snprintf(text, sizeof(text),
+                "its mass properties' quadrature error bound is %.2g (limit %g): elements of radius %.3g m "
+                "are too thin for vertices up to %.3g m apart on %d x %d lines; give volume and inertia "
+                "(preCompDone y)",
+                error, kMassErrorLimit, s.radius, 2.0 * max_vertex_norm(s), cells, cells);
+  return "shape '" + s.name + "': " + text;
+}
+
 }  // namespace
 
 void compute_mass_properties(Shape& s, int quadrature_cells) {
@@ -239,6 +251,7 @@ void compute_mass_properties(Shape& s, int quadrature_cells) {
   }
   if (!(m.volume > 0.0))
     throw InputError("shape '" + s.name + "': zero volume (give a radius > 0 or a solid polyhedron)");
+  if (s.mass_error > kMassErrorLimit) throw InputError(too_coarse(s, s.mass_error, quadrature_cells));
   const Vec3 center = m.first / m.volume;
   const Mat3 spread = m.second / m.volume - center * center.transpose();  // m^2, about the centre
   const Mat3 inertia = spread.trace() * Mat3::Identity() - spread;        // m^2, I / mass

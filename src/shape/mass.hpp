@@ -12,8 +12,10 @@ namespace polydem {
 // Any other shape is the union of its swept elements (union_mass.hpp): spheres apart from
 // each other are closed forms; otherwise a quadrature on `quadrature_cells`^2 lines, its
 // relative error bound in mass_error.
-// Throws InputError "shape 'NAME': ..." for bad indices, degenerate elements or a zero volume.
+// Throws InputError "shape 'NAME': ..." for bad indices, degenerate elements, a zero volume or
+// a quadrature error bound above kMassErrorLimit.
 inline constexpr int kQuadratureCells = 1024;
+inline constexpr double kMassErrorLimit = 1e-2;  // larger quadrature bounds are refused
 void compute_mass_properties(Shape& s, int quadrature_cells = kQuadratureCells);
 
 // For shapes whose mass properties were given (a .shp with preCompDone y): checks the

@@ -186,3 +186,15 @@ TEST_CASE("balls apart: closed form, no quadrature", "[union]") {
   CHECK(s.mass_error == 0.0);
   CHECK(s.volume == Approx(3 * 4.0 / 3.0 * kPi * r * r * r).epsilon(1e-14));
 }
+
+TEST_CASE("a quadrature too coarse for the shape is refused, not simulated", "[union]") {
+  // Arms 10 m long swept by 0.1 mm: the 1024 lines are 2 cm apart, far wider than an arm.
+  const double a = 10.0, r = 1e-4;
+  Shape s = faceless(cross_vertices(a), {{0, 1}, {2, 3}, {4, 5}}, r);
+  double bound = 0.0;
+  union_moments(s, kQuadratureCells, bound);
+  CHECK(bound > kMassErrorLimit);
+  CHECK_THROWS_WITH(compute_mass_properties(s), Catch::Contains("shape 'test'") &&
+                                                    Catch::Contains("quadrature error bound") &&
+                                                    Catch::Contains("preCompDone y"));
+}
