@@ -56,8 +56,13 @@ class ContactEngine {
   void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
   // The pairs' forces added to the bodies (team stage: ends at a barrier), the drivers'
   // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
-  // right after a rebuild (it posed them).
-  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies);
+  // right after a rebuild (it posed them); spheres are posed by measure_motion, which must
+  // come first. `sum_bodies` false: the forces are left in the lists, and the caller calls
+  // add_body_forces for every owned body (Simulation: in the pass of the closing kick).
+  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, bool sum_bodies = true);
+  // Adds the pairs' forces and torques on owned body b to its force and torque, in the fixed
+  // order of its pair index (the same bits for any thread count).
+  void add_body_forces(const LocalBodies& bodies, std::size_t b) const;
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
