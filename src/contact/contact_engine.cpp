@@ -451,24 +451,6 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
   return total;
 }
 
-void ContactEngine::add_body_forces(const LocalBodies& bodies, std::size_t b) const {
-  Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-  for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
-    const std::uint32_t k = body_index_.entries[e] >> 1;
-    if (!body_list_.touching[k]) continue;
-    if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
-    else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
-  }
-  for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
-    const std::uint32_t k = driver_index_.entries[e] >> 1;
-    if (!driver_list_.touching[k]) continue;
-    f += driver_list_.force_i[k];
-    t += driver_list_.torque_i[k];
-  }
-  (*bodies.force)[b] += f;
-  (*bodies.torque)[b] += t;
-}
-
 void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
   // One process has no ghost: its loop is compiled without the test.
   with_flag(bodies.ghost != nullptr, [&](auto has_ghosts) {

@@ -17,7 +17,7 @@ constexpr double kIsotropicTolerance = 1e-12;
 // Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
 // (an isotropic body keeps its w: it turns about L).
 template <bool kIsotropicPath>
-void drift_body(Bodies& b, std::size_t i, double dt) {
+[[gnu::always_inline]] inline void drift_body(Bodies& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
   if constexpr (kIsotropicPath) {
     // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
@@ -31,7 +31,7 @@ void drift_body(Bodies& b, std::size_t i, double dt) {
 }
 
 template <bool kIsotropicPath>
-void predict_body(Bodies& b, std::size_t i, double h) {
+[[gnu::always_inline]] inline void predict_body(Bodies& b, std::size_t i, double h) {
   b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
   if constexpr (kIsotropicPath) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
