@@ -13,8 +13,8 @@ namespace polydem {
 
 // Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
 // and each block's energy and contact count in list.block_energy and block_contacts (sized by
-// resize_results). kNoWait: the threads
-// go on without meeting at the loop's end (the next loop reads none of this list's results).
+// resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
+// loop reads none of this list's results; a later barrier comes before anything that does).
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;

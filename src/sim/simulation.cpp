@@ -114,8 +114,8 @@ void Simulation::driver_work_half() {
 // Two parallel regions a normal step (one more at a rebuild, one with drag or fluid forces):
 // each stage inside is a work-shared loop, so the threads wake twice, not once per stage, and
 // meet at three barriers (spheres): after the opening pass, after the pair loops, after the
-// closing pass (the sums of the contact forces and the kick, body by body). Many ranks: the contact stage runs between the regions, exchanges and
-// all, and each rank moves the bodies it owns.
+// closing pass (each body's contact force sum, then its kick). Many ranks: the contact stage
+// runs between the regions, exchanges and all, and each rank moves the bodies it owns.
 void Simulation::step() {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
