@@ -345,11 +345,19 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
 }
 
 bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers) {
-  in_team(bodies.size() >= kParallelMinItems, [&] { measure_motion(bodies); });
+  in_team(bodies.size() >= kParallelMinItems, [&] {
+    measure_motion(bodies);
+#pragma omp barrier
+  });  // the barrier: for a caller inside a team already
   return stale_after_measure(drivers);
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies) {
+  if (spheres_only_) {  // a sphere's pose is its centre: set in this pass, no loop (and barrier) of its own
+    const std::vector<Vec3>& position = *bodies.position;
+#pragma omp for schedule(static) nowait
+    for (std::size_t b = 0; b < position.size(); ++b) posed_[b].position = world_vertices_[b] = position[b];
+  }
   trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin);
 }
 
@@ -363,8 +371,9 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
   in_team(bodies.size() >= kParallelMinItems, [&] { forces(bodies, drivers, dt, !stale); });
 }
 
-void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies) {
-  if (pose_bodies) pose(bodies);
+void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
+                           bool sum_bodies) {
+  if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: posed by measure_motion
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data()};
@@ -375,6 +384,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       driver_list_.pair_energy.resize(driver_list_.size());
     }
   }
+  // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
+  // it) is the one before the sums read either list.
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
   } else {
@@ -384,7 +395,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                               world_vertices_.data(), vertex_offset_.data()};
     with_law(settings_.particle, [&](auto parts) {
       using Parts = decltype(parts);
-      all_pair_forces(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
+      all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
         return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
       });
     });
@@ -397,8 +408,10 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
         return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
+  } else {
+#pragma omp barrier
   }
-  reduce_bodies(bodies);
+  if (sum_bodies) reduce_bodies(bodies);
 #pragma omp single nowait
   {
     add_totals();
@@ -412,7 +425,7 @@ void ContactEngine::add_totals() {
   stats_.contacts = 0;
   for (const PairList* list : {&body_list_, &driver_list_}) {
     for (const EnergyParts& e : list->block_energy) stats_.energy += e;
-    for (std::uint16_t c : list->touching) stats_.contacts += c;
+    for (std::uint32_t c : list->block_contacts) stats_.contacts += c;  // counted by the blocks: one thread sums few
   }
 }
 
@@ -439,29 +452,12 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
 }
 
 void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
-  const std::size_t n = bodies.size();
-  std::vector<Vec3>& force = *bodies.force;
-  std::vector<Vec3>& torque = *bodies.torque;
   // One process has no ghost: its loop is compiled without the test.
   with_flag(bodies.ghost != nullptr, [&](auto has_ghosts) {
-    parallel_for(n, [&](std::size_t b) {
+    parallel_for(bodies.size(), [&](std::size_t b) {
       if constexpr (decltype(has_ghosts)::value)
         if ((*bodies.ghost)[b]) return;  // a ghost's force is summed by its owner
-      Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-      for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
-        const std::uint32_t k = body_index_.entries[e] >> 1;
-        if (!body_list_.touching[k]) continue;
-        if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
-        else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
-      }
-      for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
-        const std::uint32_t k = driver_index_.entries[e] >> 1;
-        if (!driver_list_.touching[k]) continue;
-        f += driver_list_.force_i[k];
-        t += driver_list_.torque_i[k];
-      }
-      force[b] += f;
-      torque[b] += t;
+      add_body_forces(bodies, b);
     });
   });
 }

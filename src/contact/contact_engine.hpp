@@ -56,8 +56,13 @@ class ContactEngine {
   void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
   // The pairs' forces added to the bodies (team stage: ends at a barrier), the drivers'
   // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
-  // right after a rebuild (it posed them).
-  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies);
+  // right after a rebuild (it posed them); spheres are posed by measure_motion, which must
+  // come first. `sum_bodies` false: the forces are left in the lists, and the caller calls
+  // add_body_forces for every owned body (Simulation: in the pass of the closing kick).
+  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, bool sum_bodies = true);
+  // Adds the pairs' forces and torques on owned body b to its force and torque, in the fixed
+  // order of its pair index (the same bits for any thread count).
+  void add_body_forces(const LocalBodies& bodies, std::size_t b) const;
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
@@ -109,5 +114,24 @@ class ContactEngine {
   BodyPairIndex body_index_, driver_index_;
   ContactStats stats_;
 };
+
+// Inline: called per body from the closing kick's pass (Simulation::step).
+inline void ContactEngine::add_body_forces(const LocalBodies& bodies, std::size_t b) const {
+  Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+  for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
+    const std::uint32_t k = body_index_.entries[e] >> 1;
+    if (!body_list_.touching[k]) continue;
+    if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
+    else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
+  }
+  for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
+    const std::uint32_t k = driver_index_.entries[e] >> 1;
+    if (!driver_list_.touching[k]) continue;
+    f += driver_list_.force_i[k];
+    t += driver_list_.torque_i[k];
+  }
+  (*bodies.force)[b] += f;
+  (*bodies.torque)[b] += t;
+}
 
 }  // namespace polydem

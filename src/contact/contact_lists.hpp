@@ -30,6 +30,10 @@ inline std::uint64_t feature_key(FeaturePair f) {
   return (std::uint64_t(f.type) << 48) | (std::uint64_t(f.a) << 32) | std::uint64_t(f.b);
 }
 
+// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
+// the blocks in order after, so the sums are the same bits for any thread count.
+constexpr std::size_t kPairBlock = 256;
+
 struct PairList {
   std::vector<BodyPair> pairs;             // sorted by (i, j)
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
@@ -41,7 +45,8 @@ struct PairList {
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
-  std::vector<EnergyParts> block_energy;   // J, per block of pairs, this step (energy ledger)
+  std::vector<EnergyParts> block_energy;   // J, per block of kPairBlock pairs, this step (energy ledger)
+  std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
   std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
 
   std::size_t size() const { return pairs.size(); }
@@ -50,7 +55,9 @@ struct PairList {
     torque_i.assign(pairs.size(), Vec3::Zero());
     torque_j.assign(pairs.size(), Vec3::Zero());
     touching.assign(pairs.size(), 0);
-    block_energy.clear();
+    // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
+    block_energy.assign((pairs.size() + kPairBlock - 1) / kPairBlock, EnergyParts{});
+    block_contacts.assign(block_energy.size(), 0);
   }
 };
 

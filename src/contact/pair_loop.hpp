@@ -3,6 +3,7 @@
 // path (sphere_loop.cpp: its own translation unit, so GCC's unit growth limit leaves every call
 // in the sphere kernel inlined).
 #include <algorithm>
+#include <cassert>
 #include <type_traits>
 
 #include "contact/pair_kernel.hpp"
@@ -10,18 +11,18 @@
 
 namespace polydem {
 
-// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
-// the blocks in order after, so the sums are the same bits for any thread count.
-constexpr std::size_t kPairBlock = 256;
-
 // Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
-// and each block's energy in list.block_energy.
-template <class Kernel>
+// and each block's energy and contact count in list.block_energy and block_contacts (sized by
+// resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
+// loop reads none of this list's results; a later barrier comes before anything that does).
+template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
+  assert(list.block_energy.size() == blocks && list.block_contacts.size() == blocks);
   const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
   auto one_block = [&](std::size_t b, PairScratch& scratch) {
     EnergyParts energy;  // J
+    std::uint32_t contacts = 0;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
       const PairTotals t = kernel(std::uint32_t(k), scratch);
       list.force_i[k] = t.force_i;
@@ -29,17 +30,22 @@ void all_pair_forces(PairList& list, const Kernel& kernel) {
       list.torque_j[k] = t.torque_j;
       list.touching[k] = std::uint16_t(t.contacts);
       energy += t.energy;
+      contacts += std::uint32_t(t.contacts);
       if (per_pair) list.pair_energy[k] = t.energy;
     }
     list.block_energy[b] = energy;
+    list.block_contacts[b] = contacts;
   };
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
   in_team(blocks >= 2, [&] {
-#pragma omp single
-    list.block_energy.resize(blocks);
     PairScratch scratch;
+    if constexpr (kNoWait) {
+#pragma omp for schedule(dynamic, 1) nowait
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+    } else {
 #pragma omp for schedule(dynamic, 1)
-    for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+    }
   });
 }
 

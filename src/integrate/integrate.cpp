@@ -17,7 +17,7 @@ constexpr double kIsotropicTolerance = 1e-12;
 // Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
 // (an isotropic body keeps its w: it turns about L).
 template <bool kIsotropicPath>
-void drift_body(Bodies& b, std::size_t i, double dt) {
+[[gnu::always_inline]] inline void drift_body(Bodies& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
   if constexpr (kIsotropicPath) {
     // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
@@ -30,22 +30,8 @@ void drift_body(Bodies& b, std::size_t i, double dt) {
   }
 }
 
-// v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame).
 template <bool kIsotropicPath>
-void kick_body(Bodies& b, std::size_t i, double h) {
-  b.velocity[i] += b.force[i] * (h / b.mass[i]);
-  if constexpr (kIsotropicPath) {
-    const Vec3 dl = b.torque[i] * h;  // N m s, world frame
-    b.angular_momentum[i] += b.orientation[i].conjugate() * dl;
-    b.angular_velocity[i] += dl / b.inertia[i].x();
-  } else {
-    b.angular_momentum[i] += b.orientation[i].conjugate() * (b.torque[i] * h);
-    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
-  }
-}
-
-template <bool kIsotropicPath>
-void predict_body(Bodies& b, std::size_t i, double h) {
+[[gnu::always_inline]] inline void predict_body(Bodies& b, std::size_t i, double h) {
   b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
   if constexpr (kIsotropicPath) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
@@ -88,7 +74,7 @@ void kick(Bodies& b, double h) {
 }
 
 void kick(Bodies& b, double h, const RotorGroups& groups) {
-  over_groups(groups, [&](std::size_t i, auto iso) { kick_body<decltype(iso)::value>(b, i, h); });
+  kick_after(b, h, groups, [](std::size_t) {});
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
@@ -111,7 +97,7 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
   over_groups(groups, [&](std::size_t i, auto iso) {
-    kick_body<decltype(iso)::value>(b, i, h);
+    integrate_detail::kick_body<decltype(iso)::value>(b, i, h);
     drift_body<decltype(iso)::value>(b, i, dt);
     predict_body<decltype(iso)::value>(b, i, h);  // the last step's force: before it is cleared
     b.force[i] = b.mass[i] * gravity;

@@ -42,7 +42,10 @@ bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector
   if (q.size() != n || bounding_radius.size() != n) {
     throw std::invalid_argument("needs_rebuild: sizes of positions, orientations and radii differ");
   }
-  in_team(n >= kMinParallel, [&] { measure(x, q, bounding_radius, skin); });
+  in_team(n >= kMinParallel, [&] {
+    measure(x, q, bounding_radius, skin);
+#pragma omp barrier
+  });  // the barrier: for a caller inside a team already
   return take_exceeded();
 }
 
@@ -62,8 +65,9 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
     // Written as !(d <= limit) so a NaN state also asks for a rebuild.
     if (!(d <= limit)) exceeded = true;
   }
-  if (exceeded) exceeded_.store(true, std::memory_order_relaxed);  // only ever set: any order gives the same
-#pragma omp barrier
+  // Only ever set: any order gives the same. No barrier here: take_exceeded comes after the
+  // region's end (needs_rebuild, ContactEngine::lists_stale, Simulation::step), its barrier.
+  if (exceeded) exceeded_.store(true, std::memory_order_relaxed);
 }
 
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }

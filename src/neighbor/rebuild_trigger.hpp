@@ -27,7 +27,8 @@ class RebuildTrigger {
                      const std::vector<double>& bounding_radius, double skin);
   // needs_rebuild in two halves, so the measure can be a stage of a team's region (parallel.hpp):
   // `measure` keeps each body's bound (every thread of the team calls it), then, after the
-  // region, `take_exceeded` answers as needs_rebuild would and clears the answer.
+  // region, `take_exceeded` answers as needs_rebuild would and clears the answer. Inside a team
+  // the threads leave `measure` without meeting: the region's end is the barrier before the answer.
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
                double skin);
   bool take_exceeded();

@@ -123,9 +123,10 @@ void Simulation::driver_work_half() {
 }
 
 // Two parallel regions a normal step (one more at a rebuild, one with drag or fluid forces):
-// each stage inside is a work-shared loop that ends at a barrier, so the threads wake twice,
-// not once per stage. Many ranks: the contact stage runs between the regions, exchanges and
-// all, and each rank moves the bodies it owns.
+// each stage inside is a work-shared loop, so the threads wake twice, not once per stage, and
+// meet at three barriers (spheres): after the opening pass, after the pair loops, after the
+// closing pass (each body's contact force sum, then its kick). Many ranks: the contact stage
+// runs between the regions, exchanges and all, and each rank moves the bodies it owns.
 void Simulation::step() {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
@@ -156,8 +157,13 @@ void Simulation::step() {
     }
   }
   in_team(team, [&] {
-    if (contacts && one_process) engine_->forces(all_owned(bodies), drivers, dt_, !stale);
-    kick(bodies, 0.5 * dt_, moved);
+    if (contacts && one_process) {
+      const LocalBodies local = all_owned(bodies);
+      engine_->forces(local, drivers, dt_, !stale, false);
+      kick_after(bodies, 0.5 * dt_, moved, [&](std::size_t b) { engine_->add_body_forces(local, b); });
+    } else {
+      kick(bodies, 0.5 * dt_, moved);
+    }
   });
   if (contacts) {
     const EnergyParts& step = one_process ? engine_->stats().energy : ranks_->energy();
