@@ -43,6 +43,7 @@ struct PairList {
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
   std::vector<EnergyParts> block_energy;   // J, per block of pairs, this step (energy ledger)
   std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
+  std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
   void resize_results() {
@@ -50,6 +51,7 @@ struct PairList {
     torque_i.assign(pairs.size(), Vec3::Zero());
     torque_j.assign(pairs.size(), Vec3::Zero());
     touching.assign(pairs.size(), 0);
+    linear_steps.assign(pairs.size(), LinearStep{});
     block_energy.clear();
   }
 };
