@@ -48,6 +48,7 @@ struct PairList {
   std::vector<EnergyParts> block_energy;   // J, per block of kPairBlock pairs, this step (energy ledger)
   std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
   std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
+  std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
   void resize_results() {
@@ -55,6 +56,7 @@ struct PairList {
     torque_i.assign(pairs.size(), Vec3::Zero());
     torque_j.assign(pairs.size(), Vec3::Zero());
     touching.assign(pairs.size(), 0);
+    linear_steps.assign(pairs.size(), LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
     block_energy.assign((pairs.size() + kPairBlock - 1) / kPairBlock, EnergyParts{});
     block_contacts.assign(block_energy.size(), 0);

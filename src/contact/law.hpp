@@ -132,21 +132,22 @@ struct NormalForce {
   double fp = 0.0, push = 0.0;  // N
 };
 // The linear law's normal pair of a contact whose m_eff is its point's mass (exact_linear.hpp).
-template <class Normal>
+template <bool kLone>
 [[gnu::always_inline]] inline NormalForce exact_normal_force(const LawParams& law, const ContactKinematics& k,
                                                              const ContactHistory& h, double dt, double vn,
                                                              double f_last) {
   const double overlap = std::max(-k.dn, 0.0);  // m
-  const LinearStep step = linear_step(law.kn, law.alpha_n, k.m_eff, dt);
-  const double f_last_unit = h.weight > 0.0 ? f_last / h.weight : 0.0;  // N, per unit weight
+  const LinearStep step = k.linear_step ? cached_linear_step(*k.linear_step, law.kn, law.alpha_n, k.m_eff, dt)
+                                        : linear_step(law.kn, law.alpha_n, k.m_eff, dt);
+  const double f_last_unit = kLone ? f_last : (h.weight > 0.0 ? f_last / h.weight : 0.0);  // N, per unit weight
   const double f_rest = rest_of_world(f_last_unit, k.m_eff, dt, -vn, -k.v_end.dot(k.normal));  // N
-  const double u = k.weight * step.force(-k.dn, -vn, law.kn, f_rest);  // N, unclamped, signed: -dn inside the overlap
+  const double u = k.weight * step.force(-k.dn, -vn, f_rest);  // N, unclamped, signed: -dn inside the overlap
   NormalForce out;
   if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
     out.fp = k.weight * exact_onset_force(law.kn, law.alpha_n, k.m_eff, dt, overlap, -vn);
   } else if (overlap > 0.0 && u > 0.0) {
     out.fp = u;
-    out.push = k.weight * release_ahead(step, law.kn, k.m_eff, dt, overlap, -vn, u / k.weight, f_rest);
+    out.push = k.weight * release_ahead(step, k.m_eff, dt, overlap, -vn, u / k.weight, f_rest);
   }
   if (f_last > 0.0 && u <= 0.0) out.push = release_behind(f_last, u, dt);
   return out;
@@ -160,7 +161,7 @@ template <class Normal, bool kLone>
   const double f_last = h.fd + Normal::spring(law, k.r_star, weight_last, overlap_last);  // N, fp at n
   if constexpr (!Normal::kCurved) {
     // Undamped, velocity Verlet's spring is exact but where it switches: its ledger stays closed.
-    if (law.exact_step && (kLone || k.exact_step) && law.alpha_n > 0.0) return exact_normal_force<Normal>(law, k, h, dt, vn, f_last);
+    if (law.exact_step && (kLone || k.exact_step) && law.alpha_n > 0.0) return exact_normal_force<kLone>(law, k, h, dt, vn, f_last);
   }
   const double nu_pair = k.nu >= 0.0 ? k.nu : Normal::pair_damping(law, k.m_eff, k.r_star);  // N s/m
   const double c = Normal::damping(nu_pair, overlap);  // N s/m, per unit weight

@@ -211,7 +211,8 @@ template <class Parts, class Partner>
                           nu_dashpot,
                           nu_t,
                           r_star,
-                          exact_step};
+                          exact_step,
+                          law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
     const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
     slot.point = g.point;
     slot.force = f.force;

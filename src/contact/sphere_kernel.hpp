@@ -52,6 +52,7 @@ template <class Parts>
   ContactKinematics kin{n, gap, v_rel, v_end, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
                         mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
   if constexpr (Parts::Normal::kCurved) kin.r_star = ri * rj / (ri + rj);
+  kin.linear_step = &list.linear_steps[k];  // the pair's mass is fixed: k', c' once per list
   if (!list.active[s]) slot.history = ContactHistory{};
   const ContactForce f = contact_force<Parts, true>(law, kin, slot.history, dt);
   list.active[s] = 1;

@@ -104,7 +104,6 @@ SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   if (m.has("dt") && m.scalar("dt") != "auto")
     s.dt = check_positive(m, "dt", m.quantity("dt", Dimension::time));
   s.accuracy = read_accuracy(m, s.dt.has_value());
-  s.exact_step = s.accuracy.has_value();  // the exact step costs 22.5% of a sphere run's instructions (README)
   const long long threads = m.integer("threads", 0, 0);
   if (threads > kMaxThreads)
     m.fail("threads", "at most " + std::to_string(kMaxThreads) + ", got " + m.scalar("threads"));

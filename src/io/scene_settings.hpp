@@ -26,7 +26,7 @@ struct SimulationSettings {
   double duration = 1.0;          // s of simulated time
   std::optional<double> dt;       // s; empty means `auto` (a safe fraction of the critical step)
   std::optional<double> accuracy; // relative restitution error of one impact `auto` aims at (sim/step_accuracy.hpp)
-  bool exact_step = false;  // the linear law's exact step (contact/law/exact_linear.hpp): on with `accuracy`
+  bool exact_step = true;   // the linear law's exact step where it applies (contact/law/exact_linear.hpp); tests switch it
   int threads = 0;                // 0: all cores
   std::optional<double> skin;     // m, Verlet skin; empty: 0.1 x smallest body bounding radius
   std::uint64_t seed = 0;         // every random choice derives from it

@@ -1,8 +1,8 @@
 #pragma once
 // The restitution error of a single impact against the time step, and the step for a target
 // error (simulation: accuracy). The model: the sphere-wall columns of tools/bench/accuracy,
-// interpolated in log-log: for the default step at e9b1677 (en 0.5); with `accuracy`, which
-// turns on the linear law's exact step, the worst of en 0.1, 0.5, 0.9 at b7f7c1c (README).
+// interpolated in log-log: for the end-of-step dashpot at e9b1677 (en 0.5); for the linear
+// law's exact step (spheres; `accuracy` reads it), the worst of en 0.1, 0.5, 0.9 at b7f7c1c (README).
 
 #include <string>
 
@@ -13,7 +13,7 @@ namespace polydem {
 double expected_restitution_error(double fraction, bool exact = false);
 
 // The largest fraction of the critical step (at most kUnsafeFraction) whose expected error is
-// within `accuracy`, with the exact step `accuracy` turns on.
+// within `accuracy`, by the exact step's model.
 double accuracy_fraction(double accuracy);
 
 // "expected restitution error of an impact at this step: 2e-03 (0.1 x critical)" for a step

@@ -27,6 +27,11 @@ expect_exit 0 "(0.135 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/acc
 grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.135 x critical)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: accuracy 1e-3 not met"; }
 
+# Spheres under the linear law take its exact step: that model's error at dt: auto.
+expect_exit 0 "critical time step" "$polydem" check "$here/../../tools/bench/spheres.yaml"
+grep -q "expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical)" "$tmp/out" \
+  || { cat "$tmp/out"; fail "check: spheres not on the exact step's model"; }
+
 # A full run, then the same run in two halves through a checkpoint.
 "$polydem" run "$here/drop.yaml" --out "$tmp/full" --threads 2 2> "$tmp/full.log" || { cat "$tmp/full.log"; fail "run"; }
 grep -q "dt = .* s (expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical))" "$tmp/full.log" \

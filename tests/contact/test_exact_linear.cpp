@@ -27,15 +27,18 @@ LawParams damped_law(double en) {
 
 // A body pressed on a wall by `press` (N) from overlap x0 at rate v0 (m/s, > 0 closing), stepped
 // n times at dt: the overlaps after each step.
-std::vector<double> pressed_contact(const LawParams& law, double press, double x0, double v0, double dt, int n) {
+// With `cache`, the kernel keeps k' and c' there as a pair list does (PairList::linear_steps).
+std::vector<double> pressed_contact(const LawParams& law, double press, double x0, double v0, double dt, int n,
+                                    LinearStep* cache = nullptr) {
   std::vector<double> out;
   double x = x0, v = v0, a = 0.0;
   ContactHistory h;
   for (int step = 0; step < n; ++step) {
     v += 0.5 * dt * a;
     x += dt * v;
-    const ContactKinematics k{Vec3::UnitZ(), -x, Vec3(0, 0, -v), Vec3(0, 0, -v - 0.5 * dt * a), Vec3::Zero(),
-                              kMass, kRadius, 1.0};
+    ContactKinematics k{Vec3::UnitZ(), -x, Vec3(0, 0, -v), Vec3(0, 0, -v - 0.5 * dt * a), Vec3::Zero(),
+                        kMass, kRadius, 1.0};
+    k.linear_step = cache;
     const ContactForce f = contact_force(law, k, h, dt);
     a = (press - f.fn) / kMass;
     v += 0.5 * dt * a;
@@ -85,4 +88,17 @@ TEST_CASE("exact step: a damped impact on a wall rebounds at en up to 0.3 x crit
       INFO("en = " << en << ", dt = " << fraction << " x critical");
       CHECK(rebound / 0.5 == Approx(en).epsilon(3e-3));
     }
+}
+
+TEST_CASE("exact step: k' and c' kept per pair give the same bits as computed per step", "[law][exact_step]") {
+  const LawParams law = damped_law(0.5);
+  const double dt = 0.1 * critical_time_step(law.kn, kMass, law.alpha_n);  // s
+  LinearStep cache;  // k = 0: not set, as PairList::resize_results leaves it
+  const std::vector<double> fresh = pressed_contact(law, 0.0, -1e-7, 0.5, dt, 400);
+  const std::vector<double> cached = pressed_contact(law, 0.0, -1e-7, 0.5, dt, 400, &cache);
+  CHECK(cached == fresh);
+  const LinearStep step = linear_step(law.kn, law.alpha_n, kMass, dt);
+  CHECK(cache.k == step.k);
+  CHECK(cache.c == step.c);
+  CHECK(cache.rest == 1.0 - step.k / law.kn);
 }

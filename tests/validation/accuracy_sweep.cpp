@@ -29,7 +29,8 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
       {"exact step: binary impact en 0.1", [](double f) { return binary_impact(f, 0.1, true); }},
       {"exact step: binary impact en 0.9", [](double f) { return binary_impact(f, 0.9, true); }},
       {"exact step: sphere-sphere 1:2.74", [](double f) { return sphere_pair_impact(f, true); }},
-      {"oblique impact 45 deg", oblique_impact},
+      {"oblique impact 45 deg", [](double f) { return oblique_impact(f, false); }},
+      {"exact step: oblique impact 45 deg", [](double f) { return oblique_impact(f, true); }},
       {"cube corner landing", cube_landing}, {"free top", free_top}};
   for (const auto& [name, run] : cases) {
     for (double fraction : {0.5, 0.4, 0.3, 0.2, 0.15, 0.1, 0.07, 0.05, 0.03, 0.02, 0.01, 0.005, 0.002}) {

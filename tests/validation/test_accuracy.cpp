@@ -60,6 +60,8 @@ TEST_CASE("accuracy: sphere-sphere restitution, masses 1 : 2.74, at 0.1 and 0.3 
 TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical", "[validation][second_order]") {
   const double at_auto = oblique_impact(0.1), at_03 = oblique_impact(0.3);
   std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
+  // The sphere takes the exact normal step (the default): its Coulomb cap reads the sampled
+  // force, measured 1.56e-3 and 9.2e-3 (9e-4 and 1.6e-3 with the end-of-step dashpot).
   CHECK(at_auto <= 2e-3);
   CHECK(at_03 <= 0.01);
 }
@@ -69,8 +71,10 @@ TEST_CASE("accuracy: damping_mass: contact, a cube landing on a corner rebounds 
   // it rebounds at 0.40 there for en 0.5 (issue 16); this one at en, within the cube row's goals.
   const double at_auto = cube_corner_error(0.1, true), at_03 = cube_corner_error(0.3, true);
   std::printf("cube corner, damping_mass contact: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
-  CHECK(at_auto <= 1e-3);  // measured 2.6e-4
-  CHECK(at_03 <= 0.015);
+  // Stepped exactly (the default with damping_mass: contact): measured 3.4e-4 and 5.0e-4 (the
+  // end-of-step dashpot: 2.6e-4 and 1.1e-2).
+  CHECK(at_auto <= 1e-3);
+  CHECK(at_03 <= 2e-3);
 }
 
 TEST_CASE("accuracy: cube corner landing against the rigid-body impulse at 0.1 and 0.3 x critical", "[validation][second_order]") {

@@ -18,9 +18,13 @@ namespace polydem {
 // With a load f_rest (N) from the rest of the world pressing the pair together (gravity, other
 // contacts), the exact samples follow x - f_rest/kn: the force is k' x + c' r + (1 - k'/kn)
 // f_rest, r = -vn the overlap rate (m/s), so that a contact at rest holds kn x = f_rest.
+// k' and c' depend on the pair's mass alone (with the law and dt): a pair list keeps them per pair
+// (PairList::linear_steps), set at the pair's first exact step after the list is built. k = 0:
+// not set yet (k' > 0 for any damping and step).
 struct LinearStep {
-  double k, c;  // N/m, N s/m
-  double force(double x, double r, double kn, double f_rest) const { return k * x + c * r + (1.0 - k / kn) * f_rest; }
+  double k = 0.0, c = 0.0;  // N/m, N s/m
+  double rest = 0.0;        // -, 1 - k'/kn: the share of the load the samples leave to the spring
+  double force(double x, double r, double f_rest) const { return k * x + c * r + rest * f_rest; }
 };
 // N, that load, from the last force f_last (N) and the overlap rates at the half step r and
 // predicted for the step's end r_end (m/s, the bodies' last forces: integrate.hpp): m_eff
@@ -30,7 +34,8 @@ inline double rest_of_world(double f_last, double m, double dt, double r, double
 }
 // N/m and N s/m per unit patch weight: k' and c' above for kn (N/m), damping ratio zeta (-),
 // mass m (kg) and step dt (s). Written with expm1 so that k' keeps its digits at small dt.
-inline LinearStep linear_step(double kn, double zeta, double m, double dt) {
+// Out of line: kept out of the kernels' hot code (most calls hit the pair's cache below).
+[[gnu::noinline]] inline LinearStep linear_step(double kn, double zeta, double m, double dt) {
   const double h = std::sqrt(kn / m) * dt;  // rad, w dt
   const double q = 1.0 - zeta * zeta;       // (w_d / w)^2, negative when overdamped
   const double half = 0.5 * h * std::sqrt(std::abs(q));  // rad, w_d dt / 2
@@ -39,7 +44,14 @@ inline LinearStep linear_step(double kn, double zeta, double m, double dt) {
   const double e = 1.0 - one_less_e;
   // 1 + E^2 - 2 E cos = (1 - E)^2 + 4 E sin^2(w_d dt/2) (sinh: minus).
   const double k_term = one_less_e * one_less_e + (q >= 0.0 ? 4.0 : -4.0) * e * s * s;
-  return {m / (dt * dt) * k_term, m / dt * -std::expm1(-2.0 * zeta * h)};
+  const double k = m / (dt * dt) * k_term;  // N/m
+  return {k, m / dt * -std::expm1(-2.0 * zeta * h), 1.0 - k / kn};
+}
+// The pair's k' and c' from `cache`, computed there at first use: libm's expm1 and sin cost
+// ~120 instructions, a quarter of a sphere contact's step.
+inline const LinearStep& cached_linear_step(LinearStep& cache, double kn, double zeta, double m, double dt) {
+  if (cache.k == 0.0) [[unlikely]] cache = linear_step(kn, zeta, m, dt);
+  return cache;
 }
 
 namespace exact_detail {
@@ -85,10 +97,9 @@ inline double exact_onset_force(double kn, double zeta, double m, double dt, dou
 // release_ahead: at a, when the glued arc's next force u_next (from x(a+1) it predicts, with
 // overlap x (m), rate r = -vn (m/s) and load f_rest now) is <= 0; u > 0 the force now (N per
 // unit weight).
-inline double release_ahead(const LinearStep& step, double kn, double m, double dt, double x, double r, double u,
-                            double f_rest) {
+inline double release_ahead(const LinearStep& step, double m, double dt, double x, double r, double u, double f_rest) {
   const double r_next = r + (f_rest - u) * dt / m;  // m/s
-  const double u_next = step.force(x + r_next * dt, r_next, kn, f_rest);  // N
+  const double u_next = step.force(x + r_next * dt, r_next, f_rest);  // N
   if (u_next > 0.0) return 0.0;
   const double later = dt * -u_next / (u - u_next);  // s, dt - theta
   return (u - u_next) / dt * later * later * later / (6.0 * dt * dt);

@@ -7,6 +7,8 @@
 
 namespace polydem {
 
+struct LinearStep;
+
 // Prepared once per parameter set (config or config_driver) by prepare_law. One flat struct
 // for every part (each part's header names its fields) rather than one struct per part: the
 // parts are stateless, and tests and the step policy read kn, alpha_n directly. Chosen: flat.
@@ -53,6 +55,9 @@ struct ContactKinematics {
   // m_eff is the contact point's own mass along the normal (spheres, whose levers lie along it,
   // or damping_mass: contact): the linear law steps its normal pair exactly (exact_linear.hpp).
   bool exact_step = true;
+  // The pair's cached k' and c' (exact_linear.hpp) where m_eff stays the pair's for the list's
+  // life; null: computed for this contact (damping_mass: contact, callers of one contact).
+  LinearStep* linear_step = nullptr;
 };
 
 struct ContactForce {
