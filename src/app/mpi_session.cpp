@@ -25,29 +25,10 @@ class MpiLink final : public RankLink {
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
-    const int n = int(mine.size());
-    ++counts_.collectives;
-    counts_.collective_bytes += mine.size();
-    std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
-    MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
-    std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
-    MPI_Allgatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
-    counts_.collective_bytes_in += std::uint64_t(offsets[ranks_] - n);
-    return split(all, offsets);
+    return collect(mine, kEveryRank);
   }
   std::vector<std::vector<char>> gather(const std::vector<char>& mine, int root) const override {
-    const int n = int(mine.size());
-    ++counts_.collectives;
-    counts_.collective_bytes += mine.size();
-    std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
-    MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, root, MPI_COMM_WORLD);
-    for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
-    std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
-    MPI_Gatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, root, MPI_COMM_WORLD);
-    if (rank_ != root) return {};
-    counts_.collective_bytes_in += std::uint64_t(offsets[ranks_] - n);
-    return split(all, offsets);
+    return collect(mine, root);
   }
   void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
     std::vector<MPI_Request> pending(out.size() + in.size());
@@ -65,6 +46,25 @@ class MpiLink final : public RankLink {
   LinkCounts counts() const override { return counts_; }
 
  private:
+  static constexpr int kEveryRank = -1;
+  // Every rank's `mine` onto `root`, or onto every rank (kEveryRank): sizes first, then bytes.
+  std::vector<std::vector<char>> collect(const std::vector<char>& mine, int root) const {
+    const int n = int(mine.size());
+    ++counts_.collectives;
+    counts_.collective_bytes += mine.size();
+    std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
+    if (root == kEveryRank) MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    else MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, root, MPI_COMM_WORLD);
+    for (int r = 0; r < ranks_; ++r) offsets[r + 1] = offsets[r] + sizes[r];
+    std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
+    if (root == kEveryRank)
+      MPI_Allgatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
+    else
+      MPI_Gatherv(mine.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, root, MPI_COMM_WORLD);
+    if (root != kEveryRank && rank_ != root) return {};
+    counts_.collective_bytes_in += std::uint64_t(offsets[ranks_] - n);
+    return split(all, offsets);
+  }
   // Each rank's bytes of a gathered buffer at `offsets`.
   std::vector<std::vector<char>> split(const std::vector<char>& all, const std::vector<int>& offsets) const {
     std::vector<std::vector<char>> per_rank(ranks_);

@@ -48,6 +48,11 @@ void over_groups(const RotorGroups& groups, const Body& body) {
   parallel_for(groups.asymmetric.size(), [&](std::size_t k) { body(groups.asymmetric[k], std::false_type{}); });
 }
 
+// Body i into the group of its rotation path.
+void add_rotor(const Bodies& b, std::size_t i, RotorGroups& groups) {
+  (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
+}
+
 }  // namespace
 
 bool is_isotropic(const Vec3& inertia) {
@@ -57,9 +62,13 @@ bool is_isotropic(const Vec3& inertia) {
 
 RotorGroups group_rotors(const Bodies& b) {
   RotorGroups groups;
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
-  }
+  for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, groups);
+  return groups;
+}
+
+RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids) {
+  RotorGroups groups;
+  for (std::uint32_t i : ids) add_rotor(b, i, groups);
   return groups;
 }
 

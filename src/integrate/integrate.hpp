@@ -4,6 +4,7 @@
 // One engine step: kick(dt/2); drift(dt); compute forces; kick(dt/2).
 // Preconditions: mass > 0 and every principal moment > 0 (massless bodies are drivers).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "polydem/bodies.hpp"
@@ -22,6 +23,8 @@ bool is_isotropic(const Vec3& inertia);
 
 // Recompute whenever inertia changes (bodies added or removed).
 RotorGroups group_rotors(const Bodies& b);
+// The same for the bodies `ids` alone (a rank's owned bodies), in their order.
+RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids);
 
 // v += F/m h; L_body += R^T torque h (a half kick with h = dt/2 in velocity Verlet).
 void kick(Bodies& b, double h);

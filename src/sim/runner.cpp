@@ -348,7 +348,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (!law.present || !io) return;
     const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
                                          kn_driver, sim.time());
-    if (!w.empty() && io) std::fprintf(stderr, "%s\n", w.c_str());
+    if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
   };
   const int max_threads = omp_get_max_threads();
   ThreadGovernor governor(max_threads, o.adapt_threads);

@@ -84,20 +84,15 @@ void Simulation::contact_stage() {
 
 void Simulation::force_rebuild(bool table_on_every_rank) {
   engine_->force_rebuild();
-  if (ranks_ && table_on_every_rank) ranks_->force_rebuild();
-  if (ranks_ && !table_on_every_rank) ranks_->rebuild_next_step();
+  if (!ranks_) return;
+  if (table_on_every_rank) ranks_->force_rebuild();
+  else ranks_->rebuild_next_step();
 }
 
-void Simulation::sync_state() {
+void Simulation::gather_state(bool onto_every_rank) {
   if (!ranks_) return;
-  ranks_->sync_bodies(bodies);
-  ranks_->gather_table(*engine_);
-}
-
-void Simulation::gather_state() {
-  if (!ranks_) return;
-  ranks_->sync_bodies(bodies, true);
-  ranks_->gather_table(*engine_, true);
+  ranks_->sync_bodies(bodies, !onto_every_rank);
+  ranks_->gather_table(*engine_, !onto_every_rank);
 }
 
 long Simulation::first_non_finite() const {

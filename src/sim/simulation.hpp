@@ -73,13 +73,12 @@ class Simulation {
   void force_rebuild(bool table_on_every_rank = true);
 
   // Distributed runs: `bodies` holds every body's state and engine() every rank's contacts
-  // (global ids) only after sync_state(), a collective, called before output, checkpoints and
-  // checks read them; between, a rank's owned bodies and ghosts are current.
+  // (global ids) only after gather_state(), a collective, called before output, checkpoints and
+  // checks read them; between, a rank's owned bodies and ghosts are current. Onto rank 0 only
+  // (it writes the files), or onto every rank (`onto_every_rank`: tests comparing the ranks).
   bool distributed() const { return bool(ranks_); }
   int rank() const { return link_ ? link_->rank() : 0; }
-  void sync_state();
-  // The same onto rank 0 only (a collective): output and checkpoints, which rank 0 writes.
-  void gather_state();
+  void gather_state(bool onto_every_rank = false);
   // The smallest id of a body whose state is not finite, or -1; distributed runs: each rank
   // checks the bodies it owns (a collective), the same answer as the whole state's.
   long first_non_finite() const;

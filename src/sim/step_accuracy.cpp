@@ -57,10 +57,13 @@ double log_line(double ax, double ay, double bx, double by, double x) {
   return ay * std::pow(by / ay, t);
 }
 
+// The model of the exact step or of the default step.
+const std::array<Point, 13>& sphere_wall(bool exact) { return exact ? kExactSphereWall : kSphereWall; }
+
 }  // namespace
 
 double expected_restitution_error(double fraction, bool exact) {
-  const auto& table = exact ? kExactSphereWall : kSphereWall;
+  const auto& table = sphere_wall(exact);
   const Point& first = table.front();
   if (fraction <= first.fraction) return first.error * (fraction / first.fraction) * (fraction / first.fraction);
   for (std::size_t k = 1; k < table.size(); ++k) {
@@ -90,8 +93,8 @@ std::string impact_error_note(double dt, double critical, bool exact) {
                   error, fraction);
   else
     std::snprintf(line, sizeof(line), "expected restitution error of an impact at this step: above %.2g (%.3g x "
-                  "critical, beyond the largest measured %.2g)", (exact ? kExactSphereWall : kSphereWall).back().error,
-                  fraction, kSphereWall.back().fraction);
+                  "critical, beyond the largest measured %.2g)", sphere_wall(exact).back().error, fraction,
+                  sphere_wall(exact).back().fraction);
   return line;
 }
 

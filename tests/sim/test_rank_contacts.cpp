@@ -75,7 +75,7 @@ struct Outcome {
 };
 
 Outcome outcome(Simulation& sim) {
-  sim.sync_state();
+  sim.gather_state(true);
   Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
   if (const RankContacts* r = sim.rank_contacts()) o.cuts = r->cuts(), o.share = r->load_share();
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
