@@ -20,6 +20,14 @@ namespace polydem {
 // down for `polydem render`.
 void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes,
                       bool rounded = false, const std::optional<Vec3>& gravity = std::nullopt);
+// The same file for the bodies `ids` only (a distributed run's rank: its owned bodies, in
+// increasing id), one piece of a bodies_NNNNNN.pvtu.
+void write_bodies_piece(const std::string& path, const Bodies& bodies, const std::vector<std::uint32_t>& ids,
+                        const std::vector<Shape>& shapes, bool rounded = false,
+                        const std::optional<Vec3>& gravity = std::nullopt);
+// bodies_NNNNNN.pvtu: the pieces (paths relative to its folder, in rank order) as one data set
+// for ParaView, declaring the arrays write_bodies_vtu writes.
+void write_bodies_pvtu(const std::string& path, const std::vector<std::string>& pieces);
 
 // A driver surface as polygons, in world coordinates.
 struct DriverMesh {

@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 
 #include "output/appended.hpp"
@@ -142,9 +143,9 @@ struct BodyArrays {
   std::vector<double> radius;
 
   // Sized up front: a frame of 10^5 bodies is 10^6 cells, and regrowth doubles its memory traffic.
-  void reserve(const Bodies& bodies, const std::vector<UnitMesh>& meshes) {
+  void reserve(const Bodies& bodies, const std::vector<std::uint32_t>& ids, const std::vector<UnitMesh>& meshes) {
     std::size_t n_points = 0, n_cells = 0, n_corners = 0;
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
+    for (std::uint32_t b : ids) {
       const UnitMesh& m = meshes[checked_shape(bodies, b, meshes.size())];
       n_points += m.points.size();
       n_cells += m.faces.size();
@@ -197,10 +198,17 @@ struct BodyArrays {
 
 void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes, bool rounded,
                       const std::optional<Vec3>& gravity) {
+  std::vector<std::uint32_t> every(bodies.size());
+  std::iota(every.begin(), every.end(), 0u);
+  write_bodies_piece(path, bodies, every, shapes, rounded, gravity);
+}
+
+void write_bodies_piece(const std::string& path, const Bodies& bodies, const std::vector<std::uint32_t>& ids,
+                        const std::vector<Shape>& shapes, bool rounded, const std::optional<Vec3>& gravity) {
   const std::vector<UnitMesh> meshes = shape_meshes(shapes, rounded);
   BodyArrays arrays;
-  arrays.reserve(bodies, meshes);
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  arrays.reserve(bodies, ids, meshes);
+  for (std::uint32_t b : ids) {
     const int s = bodies.shape[b];
     arrays.add(bodies, b, meshes[s], shapes[s].radius);
   }

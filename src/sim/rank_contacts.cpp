@@ -1,6 +1,7 @@
 #include "sim/rank_contacts.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "polydem/error.hpp"
 #include "sim/body_exchange.hpp"
@@ -136,6 +137,13 @@ void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
   const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);
   for (int r = 0; r < int(all.size()); ++r)
     if (r != link_.rank()) unpack_owned(all[r], bodies);
+}
+
+std::vector<std::uint32_t> RankContacts::output_bodies() const {
+  if (engine_) return plan_.owned;
+  std::vector<std::uint32_t> every(link_.rank() == 0 ? n_bodies_ : 0);
+  std::iota(every.begin(), every.end(), 0u);
+  return every;
 }
 
 long RankContacts::first_non_finite(const Bodies& bodies) const {

@@ -53,6 +53,9 @@ class RankContacts {
   // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
   // bodies, gathered (a collective).
   void sync_bodies(Bodies& bodies, bool to_root = false) const;
+  // What this rank writes of the state (VTK pieces): the bodies it owns in increasing id;
+  // before its first step (no cut yet), rank 0 every body, the other ranks none.
+  std::vector<std::uint32_t> output_bodies() const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
   long first_non_finite(const Bodies& bodies) const;
   // The bodies this rank integrates, by rotation path (empty before the first compute).

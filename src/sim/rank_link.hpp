@@ -5,8 +5,12 @@
 // so the library and its tests build without MPI; one process has no link at all.
 #include <cstdint>
 #include <cstring>
+#include <exception>
+#include <string>
 #include <type_traits>
 #include <vector>
+
+#include "polydem/error.hpp"
 
 namespace polydem {
 
@@ -49,6 +53,22 @@ class RankLink {
     return false;
   }
 };
+
+// Runs `task` on this rank, then, if it threw on some rank, throws RunError on every rank
+// with the lowest failing rank's message: no rank waits in a later collective for one that
+// stopped (a collective: a file a rank could not write stops the run as one process's would).
+template <class Task>
+void on_every_rank(const RankLink& link, Task&& task) {
+  std::string error;
+  try {
+    task();
+  } catch (const std::exception& e) {
+    error = e.what();
+    if (error.empty()) error = "rank " + std::to_string(link.rank()) + " failed";
+  }
+  for (const std::vector<char>& from : link.all_gather(std::vector<char>(error.begin(), error.end())))
+    if (!from.empty()) throw RunError(std::string(from.begin(), from.end()));
+}
 
 // A record as bytes, for all_gather: plain data with no pointer (Eigen's fixed-size
 // vectors and quaternions copy bit for bit, though C++ does not call them trivially copyable).

@@ -169,26 +169,30 @@ class OutputWriter {
   }
 
   void frame() {
-    sim_.gather_state();
+    const bool pieces = sim_.distributed();  // each rank writes its own bodies
+    const bool whole = sim_.scene().output.contacts || (sim_.external() && sim_.external()->grid());
+    if (whole) sim_.gather_state();  // contacts and the fluid's void fraction read every body
+    const std::int64_t n = progress_.frame++;  // on every rank: the pieces carry it
+    OutputFrame f{sim_.time(), {numbered("bodies", n, pieces ? "pvtu" : "vtu")}};
+    if (pieces) write_body_pieces(f.files[0]);
     if (!io_) return;
-    OutputFrame f{sim_.time(), {numbered("bodies", progress_.frame, "vtu")}};
-    write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
-                     sim_.scene().forces.gravity);
+    if (!pieces)
+      write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
+                       sim_.scene().forces.gravity);
     if (!sim_.drivers.empty()) {
-      f.files.push_back(numbered("drivers", progress_.frame, "vtp"));
+      f.files.push_back(numbered("drivers", n, "vtp"));
       write_drivers_vtp(dir_ + "/" + f.files.back(), sim_.drivers.meshes(view_frame(sim_.drivers, view_box_)));
     }
     if (sim_.scene().output.contacts) {
-      f.files.push_back(numbered("contacts", progress_.frame, "vtp"));
+      f.files.push_back(numbered("contacts", n, "vtp"));
       write_contacts_vtp(dir_ + "/" + f.files.back(), contact_lines(sim_));
     }
     if (sim_.external() && sim_.external()->grid()) {
-      f.files.push_back(numbered("fluid", progress_.frame, "vti"));
+      f.files.push_back(numbered("fluid", n, "vti"));
       write_fluid_vti(dir_ + "/" + f.files.back(), sim_);
     }
     pvd_->add(f.time, f.files);
     progress_.frames.push_back(f);
-    ++progress_.frame;
   }
 
   void energy_row() {
@@ -219,6 +223,20 @@ class OutputWriter {
   }
 
  private:
+  // bodies_NNNNNN_pK.vtu: each rank's owned bodies; rank 0 adds the .pvtu naming every piece.
+  void write_body_pieces(const std::string& pvtu) {
+    const std::string stem = pvtu.substr(0, pvtu.size() - 5);
+    auto piece = [&](int r) { return stem + "_p" + std::to_string(r) + ".vtu"; };
+    on_every_rank(*sim_.link(), [&] {
+      write_bodies_piece(dir_ + "/" + piece(sim_.rank()), sim_.bodies, sim_.rank_contacts()->output_bodies(),
+                         sim_.shapes(), sim_.scene().output.rounded, sim_.scene().forces.gravity);
+      if (!io_) return;
+      std::vector<std::string> pieces;
+      for (int r = 0; r < sim_.link()->ranks(); ++r) pieces.push_back(piece(r));
+      write_bodies_pvtu(dir_ + "/" + pvtu, pieces);
+    });
+  }
+
   Simulation& sim_;
   std::string dir_;
   bool io_;  // writes the files

@@ -86,6 +86,7 @@ class Simulation {
   std::size_t owned_bodies() const { return ranks_ ? ranks_->owned() : bodies.size(); }
   std::size_t ghost_bodies() const { return ranks_ ? ranks_->ghosts() : 0; }
   const RankContacts* rank_contacts() const { return ranks_.get(); }  // null: one process
+  const RankLink* link() const { return ranks_ ? link_ : nullptr; }  // null: one process
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
   std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
   std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }

@@ -15,10 +15,21 @@ mpi() {  # ranks, then polydem's arguments; ranks that wait yield the cores (2 i
   local np=$1; shift
   timeout "$expect_timeout" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np "$np" "$polydem" "$@"
 }
-last_checkpoint() { ls "$1"/checkpoint_*.bin | sort | tail -1; }
-same_outputs() {  # reference folder, other folder
+last_checkpoint() { ls "$1"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | tail -1; }
+# A distributed run's checkpoint is a manifest and one piece per rank (sim/checkpoint_pieces.hpp):
+# resumed at its own time by one process, it gives back the one-file checkpoint of that state.
+joined() {  # scene, checkpoint: prints the one-file checkpoint of the same state
+  local dir="$(dirname "$2")/joined"
+  if [ "$(head -c 8 "$2")" = PDCKMA01 ]; then
+    "$polydem" run "$1" --out "$dir" --resume "$2" --threads 1 > /dev/null 2>&1 || fail "$2: cannot join the pieces"
+    echo "$dir/$(basename "$2")"
+  else echo "$2"
+  fi
+}
+same_outputs() {  # reference folder, other folder, scene: the same final state and CSV files
   local f
-  cmp "$(last_checkpoint "$1")" "$2/$(basename "$(last_checkpoint "$1")")" || fail "$2: final checkpoint differs"
+  local final=$(joined "$3" "$2/$(basename "$(last_checkpoint "$1")")")
+  /usr/bin/python3 "$here/same_state.py" "$(last_checkpoint "$1")" "$final" > /dev/null || fail "$2: final state differs"
   for f in "$1"/energy.csv "$1"/driver_*.csv; do
     [ -e "$f" ] || continue
     cmp "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs"
@@ -31,7 +42,7 @@ for scene in pour drum; do
     threads=$((np == 1 ? 2 : 1))
     mpi "$np" run "$here/mpi_$scene.yaml" --out "$tmp/$scene$np" --threads "$threads" > /dev/null 2>&1 ||
       fail "$scene at -np $np"
-    same_outputs "$tmp/$scene" "$tmp/$scene$np"
+    same_outputs "$tmp/$scene" "$tmp/$scene$np" "$here/mpi_$scene.yaml"
   done
   echo "ok: $scene: -np 1, 2, 3 give the plain run's bits"
 done
@@ -42,7 +53,7 @@ done
 # lines per rank).
 POLYDEM_MPI_COUNTS=1 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/counted" --threads 1 > /dev/null 2> "$tmp/counts" ||
   fail "counted pour at -np 3"
-same_outputs "$tmp/pour" "$tmp/counted"
+same_outputs "$tmp/pour" "$tmp/counted" "$here/mpi_pour.yaml"
 /usr/bin/python3 - "$tmp/counts" <<'PY'
 import re, sys
 text = open(sys.argv[1]).read()
@@ -65,25 +76,26 @@ PY
 echo "ok: -np 3: each rank holds fewer than all bodies and a third of the work, within 10%"
 
 # A -np 2 checkpoint at 20 ms resumed with -np 3 ends where the plain run ends.
-first=$(ls "$tmp/pour2"/checkpoint_*.bin | sort | head -1)
+first=$(ls "$tmp/pour2"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | head -1)
 [ "$first" != "$(last_checkpoint "$tmp/pour2")" ] || fail "no checkpoint half way"
 cp -r "$tmp/pour2" "$tmp/resumed"
-rm "$(last_checkpoint "$tmp/resumed")"
+last=$(last_checkpoint "$tmp/resumed")
+rm -f "$last" "${last%.bin}"_p*.bin  # the resumed run writes its own manifest and pieces
 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/resumed" --resume "$tmp/resumed/$(basename "$first")" --threads 1 \
   > /dev/null 2>&1 || fail "resume with -np 3"
-same_outputs "$tmp/pour" "$tmp/resumed"
+same_outputs "$tmp/pour" "$tmp/resumed" "$here/mpi_pour.yaml"
 echo "ok: a -np 2 checkpoint resumed with -np 3 gives the plain run's bits"
 
 # The projectile: 13 bodies at the end, momentum 20 m/s x m along x (equal masses).
 "$polydem" run "$here/mpi_projectile.yaml" --out "$tmp/shot" --threads 1 > /dev/null 2>&1 || fail "plain projectile"
 mpi 3 run "$here/mpi_projectile.yaml" --out "$tmp/shot3" --threads 1 > /dev/null 2>&1 || fail "projectile at -np 3"
-same_outputs "$tmp/shot" "$tmp/shot3"
+same_outputs "$tmp/shot" "$tmp/shot3" "$here/mpi_projectile.yaml"
 /usr/bin/python3 - "$tmp/shot3" <<'PY'
 import glob, sys
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
-r = vtk.vtkXMLUnstructuredGridReader()
-r.SetFileName(sorted(glob.glob(sys.argv[1] + "/bodies_*.vtu"))[-1])
+r = vtk.vtkXMLPUnstructuredGridReader()  # the ranks' pieces as one data set
+r.SetFileName(sorted(glob.glob(sys.argv[1] + "/bodies_*.pvtu"))[-1])
 r.Update()
 d = r.GetOutput()
 ids = vtk_to_numpy(d.GetCellData().GetArray("id"))

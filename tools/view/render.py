@@ -29,7 +29,8 @@ try:
     from vtkmodules.vtkCommonCore import vtkLookupTable
     from vtkmodules.vtkFiltersCore import vtkThreshold
     from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
+    from vtkmodules.vtkIOXML import (vtkXMLPolyDataReader, vtkXMLPUnstructuredGridReader,
+                                     vtkXMLUnstructuredGridReader)
     from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
     from vtkmodules.vtkRenderingCore import (vtkActor, vtkDataSetMapper, vtkRenderer, vtkRenderWindow, vtkTextActor,
                                              vtkWindowToImageFilter)
@@ -62,7 +63,8 @@ def series(out, stem):
 
 
 def read(path):
-    reader = vtkXMLUnstructuredGridReader() if path.endswith(".vtu") else vtkXMLPolyDataReader()
+    readers = {".vtu": vtkXMLUnstructuredGridReader, ".pvtu": vtkXMLPUnstructuredGridReader}  # .pvtu: a run's ranks
+    reader = readers.get(os.path.splitext(path)[1], vtkXMLPolyDataReader)()
     reader.SetFileName(path)
     reader.Update()
     if reader.GetErrorCode():
