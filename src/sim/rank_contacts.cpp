@@ -146,6 +146,17 @@ std::vector<std::uint32_t> RankContacts::output_bodies() const {
   return every;
 }
 
+std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bool driver) const {
+  if (engine_) return active_slots(driver ? engine_->driver_pairs() : engine_->body_pairs(), store_, driver);
+  std::vector<TableSlot> slots;
+  if (link_.rank() != 0) return slots;
+  const PairList& list = driver ? whole.driver_pairs() : whole.body_pairs();
+  for (std::size_t k = 0; k < list.size(); ++k)
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+      if (list.active[s]) slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s]});
+  return slots;
+}
+
 long RankContacts::first_non_finite(const Bodies& bodies) const {
   std::int64_t mine = -1;  // the owned bodies are in increasing id: the first is the smallest
   for (std::uint32_t b : plan_.owned)

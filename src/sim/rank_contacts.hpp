@@ -15,6 +15,7 @@
 
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
+#include "sim/contact_table.hpp"
 #include "sim/domain_cut.hpp"
 #include "sim/ghost_plan.hpp"
 #include "sim/local_store.hpp"
@@ -53,9 +54,12 @@ class RankContacts {
   // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
   // bodies, gathered (a collective).
   void sync_bodies(Bodies& bodies, bool to_root = false) const;
-  // What this rank writes of the state (VTK pieces): the bodies it owns in increasing id;
-  // before its first step (no cut yet), rank 0 every body, the other ranks none.
+  // What this rank writes of the state (VTK pieces, checkpoint pieces): the bodies it owns in
+  // increasing id and the active slots it answers for (its body pairs whose lower body it owns,
+  // its driver pairs); before its first step (no cut yet), rank 0 every body and `whole`'s
+  // lists (read from a checkpoint, or none), the other ranks nothing.
   std::vector<std::uint32_t> output_bodies() const;
+  std::vector<TableSlot> output_slots(const ContactEngine& whole, bool driver) const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
   long first_non_finite(const Bodies& bodies) const;
   // The bodies this rank integrates, by rotation path (empty before the first compute).

@@ -17,6 +17,7 @@
 #include "output/vtk_image.hpp"
 #include "polydem/error.hpp"
 #include "sim/checkpoint.hpp"
+#include "sim/checkpoint_pieces.hpp"
 #include "sim/probes.hpp"
 #include "sim/run_limits.hpp"
 #include "sim/thread_governor.hpp"
@@ -216,8 +217,8 @@ class OutputWriter {
 
   std::string checkpoint(Simulation& sim) {
     const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
-    sim.gather_state();
-    if (io_) write_checkpoint(path, sim, progress_);
+    if (sim.distributed()) write_checkpoint_pieces(path, sim, progress_);  // a collective
+    else write_checkpoint(path, sim, progress_);
     sim.force_rebuild(false);  // the resumed run rebuilds here too: same lists, same bits
     return path;
   }

@@ -1,0 +1,27 @@
+#pragma once
+// Checkpoints of a distributed run (issue 20), written in parallel: each rank writes its piece,
+// checkpoint_NNNNNN_pK.bin (its owned bodies' state and the active contacts it answers for, in
+// global ids), then rank 0 the manifest under the checkpoint's own name, checkpoint_NNNNNN.bin
+// (header, step, ledger, drivers, output progress, and each piece's name, size and checksum),
+// last: a run that stops before it keeps its previous checkpoint whole. `--resume` of a manifest
+// reads every piece on every rank and lays the state out as one process's checkpoint holds it,
+// so a run continues on any rank count, or one process, bit for bit.
+#include <string>
+
+#include "sim/checkpoint.hpp"
+
+namespace polydem {
+
+// A collective of every rank of `sim`'s link; when one rank cannot write, every rank throws
+// RunError with its message.
+void write_checkpoint_pieces(const std::string& path, const Simulation& sim, const OutputProgress& progress);
+
+// Whether a checkpoint file's bytes are a manifest.
+bool is_checkpoint_manifest(const std::string& bytes);
+
+// Restores the state of the manifest `path` (its `bytes`) and its pieces; throws InputError
+// naming the file and the piece when one is missing, damaged or of another checkpoint.
+void read_checkpoint_pieces(const std::string& path, const std::string& bytes, Simulation& sim,
+                            OutputProgress& progress, bool force);
+
+}  // namespace polydem
