@@ -2,7 +2,8 @@
 # A distributed run writes in parallel (issue 20): each rank its bodies' VTK piece, with a
 # .pvtu that scene.pvd names, so ParaView opens the run as one data set equal to one
 # process's bodies files (tests/app/check_pieces.py); each rank its checkpoint piece, with a
-# manifest, resumed on another rank count or in one process on the plain run's bits.
+# manifest, resumed on another rank count or in one process on the plain run's bits, also after
+# SIGTERM on mpirun.
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
 command -v mpirun > /dev/null || fail "no mpirun: tools/setup.sh installs openmpi-bin"
@@ -63,3 +64,37 @@ broken "printf x | dd of=checkpoint_001656_p0.bin bs=1 seek=100 conv=notrunc sta
   "piece 0 of 2 .* is damaged: .*checksum mismatch" 0
 broken "cp checkpoint_003313_p0.bin checkpoint_001656_p0.bin" "piece 0 of 2 .* is not the piece the manifest names" 0
 echo "ok: a missing, damaged or foreign checkpoint piece: one message naming it, exit 1"
+
+# SIGTERM on mpirun (it passes it to the ranks, as a batch scheduler's stop or Ctrl-C does):
+# every rank stops at the same step (the signal is ORed over the ranks each step) and one
+# checkpoint is written, a manifest and its pieces; resumed with -np 3 it ends on the plain
+# run's state and energy.csv. The signal goes once the 10 ms frame is written (the ranks see it
+# some 0.3 s later, at 40-80 ms here), well before the 200 ms the runs are compared at.
+last_checkpoint() { ls "$1"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | tail -1; }
+"$polydem" run "$tmp/pour.yaml" --out "$tmp/plain200" --until 0.2 --threads 1 > /dev/null 2>&1 || fail "plain to 0.2 s"
+timeout "$expect_timeout" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np 2 "$polydem" run \
+  "$tmp/pour.yaml" --out "$tmp/stopped" --until 5 --threads 1 > /dev/null 2> "$tmp/stopped.err" &
+runner=$!
+until [ -e "$tmp/stopped/bodies_000001.pvtu" ]; do
+  kill -0 "$runner" 2> /dev/null || { cat "$tmp/stopped.err"; fail "the -np 2 run ended before the signal"; }
+  sleep 0.01
+done
+kill -TERM "$runner"  # timeout passes it to mpirun
+wait "$runner" || true
+stopped=$(sed -n 's/^interrupted at t = .* --resume \(.*\)$/\1/p' "$tmp/stopped.err")
+[ "$(grep -c "^interrupted at t" "$tmp/stopped.err")" -eq 1 ] && [ -n "$stopped" ] ||
+  { cat "$tmp/stopped.err"; fail "SIGTERM at -np 2: not one interruption message"; }
+[ "$(head -c 8 "$stopped")" = PDCKMA01 ] && [ -s "${stopped%.bin}_p0.bin" ] && [ -s "${stopped%.bin}_p1.bin" ] ||
+  fail "SIGTERM at -np 2: no manifest and pieces at $stopped"
+end=$(last_checkpoint "$tmp/plain200")
+step=$(basename "$stopped" .bin); step=$((10#${step#checkpoint_}))
+[ "$step" -lt "$((10#$(basename "$end" .bin | sed 's/checkpoint_//')))" ] ||
+  fail "SIGTERM at -np 2 came at step $step, past 0.2 s: a very slow machine?"
+mpi 3 run "$tmp/pour.yaml" --out "$tmp/stopped" --resume "$stopped" --until 0.2 --threads 1 > /dev/null 2>&1 ||
+  fail "-np 3 resuming the SIGTERM checkpoint"
+"$polydem" run "$tmp/pour.yaml" --out "$tmp/stopped/joined" --resume "$tmp/stopped/$(basename "$end")" \
+  --until 0.2 --threads 1 > /dev/null 2>&1 || fail "joining the resumed run's final pieces"
+/usr/bin/python3 "$here/same_state.py" "$end" "$tmp/stopped/joined/$(basename "$end")" > /dev/null ||
+  fail "SIGTERM then -np 3: another final state"
+cmp "$tmp/plain200/energy.csv" "$tmp/stopped/energy.csv" || fail "SIGTERM then -np 3: energy.csv differs"
+echo "ok: SIGTERM on mpirun -np 2 stopped both ranks at step $step with one checkpoint; -np 3 resumed it to the plain run's bits"
