@@ -1,14 +1,10 @@
 #include "sim/checkpoint.hpp"
 
-#include <cmath>
-#include <cstdio>
 #include <cstring>
-#include <fstream>
 
 #include "polydem/error.hpp"
 #include "sim/checkpoint_io.hpp"
 #include "sim/checkpoint_pieces.hpp"
-#include "sim/run_limits.hpp"
 #include "sim/scene_fingerprint.hpp"
 
 namespace polydem {
@@ -30,7 +26,6 @@ constexpr char kMagic03[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '3'};
 // Bytes of EnergyLedger up to its format-05 shares: what formats 03 and 04 hold.
 constexpr std::size_t kLedgerBytes04 = 3 * sizeof(double) + sizeof(Vec3);
 static_assert(sizeof(EnergyLedger) == kLedgerBytes04 + 3 * sizeof(double), "EnergyLedger: shares after the format-04 fields");
-
 
 void write_active(Writer& w, const PairList& list) {
   std::uint64_t n = 0;

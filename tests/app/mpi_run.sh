@@ -8,24 +8,7 @@
 # -np 2 gives one message and exit 1, no hang; a blow-up at -np 2 stops as the plain run.
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
-command -v mpirun > /dev/null || fail "no mpirun: tools/setup.sh installs openmpi-bin"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI runs as root
-expect_timeout=240
-mpi() {  # ranks, then polydem's arguments; ranks that wait yield the cores (2 in CI)
-  local np=$1; shift
-  timeout "$expect_timeout" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np "$np" "$polydem" "$@"
-}
-last_checkpoint() { ls "$1"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | tail -1; }
-# A distributed run's checkpoint is a manifest and one piece per rank (sim/checkpoint_pieces.hpp):
-# resumed at its own time by one process, it gives back the one-file checkpoint of that state.
-joined() {  # scene, checkpoint: prints the one-file checkpoint of the same state
-  local dir="$(dirname "$2")/joined"
-  if [ "$(head -c 8 "$2")" = PDCKMA01 ]; then
-    "$polydem" run "$1" --out "$dir" --resume "$2" --threads 1 > /dev/null 2>&1 || fail "$2: cannot join the pieces"
-    echo "$dir/$(basename "$2")"
-  else echo "$2"
-  fi
-}
+source "$here/mpi_lib.bash"
 same_outputs() {  # reference folder, other folder, scene: the same final state and CSV files
   local f
   local final=$(joined "$3" "$2/$(basename "$(last_checkpoint "$1")")")

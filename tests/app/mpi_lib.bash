@@ -1,0 +1,29 @@
+# Shared by the MPI script tests (mpi_run.sh, mpi_pieces.sh), after script_lib.bash:
+# `source "$here/mpi_lib.bash"`. Not a test itself: CMake registers *.sh only.
+command -v mpirun > /dev/null || fail "no mpirun: tools/setup.sh installs openmpi-bin"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI runs as root
+expect_timeout=240
+mpi() {  # ranks, then polydem's arguments; ranks that wait yield the cores (2 in CI)
+  local np=$1; shift
+  timeout "$expect_timeout" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np "$np" "$polydem" "$@"
+}
+# The newest checkpoint of a folder: a one-file checkpoint or a manifest, not a piece.
+last_checkpoint() { ls "$1"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | tail -1; }
+# s, the time of a format-06 checkpoint or manifest (its step x its dt), or `later` steps on;
+# exact for --until.
+checkpoint_time() {  # checkpoint [later]
+  /usr/bin/python3 -c "import struct, sys; step, dt = struct.unpack_from('<qd', open(sys.argv[1], 'rb').read(), 40)
+print(repr((step + int(sys.argv[2])) * dt))" "$1" "${2:-0}"
+}
+# A distributed run's checkpoint is a manifest and one piece per rank (sim/checkpoint_pieces.hpp):
+# resumed at its own time by one process, it gives back the one-file checkpoint of that state.
+joined() {  # scene, checkpoint: prints the one-file checkpoint of the same state
+  local dir="$(dirname "$2")/joined"
+  if [ "$(head -c 8 "$2")" = PDCKMA01 ]; then
+    rm -rf "$dir"
+    "$polydem" run "$1" --out "$dir" --resume "$2" --until "$(checkpoint_time "$2")" --threads 1 > /dev/null 2>&1 ||
+      fail "$2: cannot join the pieces" >&2
+    echo "$dir/$(basename "$2")"
+  else echo "$2"
+  fi
+}
