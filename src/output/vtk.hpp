@@ -57,6 +57,8 @@ struct ContactOut {
 // contacts_NNNNNN.vtp: one line per contact with cell data force, point (3 x Float64), fn, ft,
 // overlap (Float64), i, j (Int64), type (Int32).
 void write_contacts_vtp(const std::string& path, const std::vector<ContactOut>& contacts);
+// contacts_NNNNNN.pvtp: the ranks' contacts_NNNNNN_pK.vtp pieces as one data set, as above.
+void write_contacts_pvtp(const std::string& path, const std::vector<std::string>& pieces);
 
 // scene.pvd: the time series, rewritten (atomically) each time a frame is added so a crashed
 // run still has a valid .pvd. Files sharing a stem ("bodies" in bodies_000012.vtu) share a part.

@@ -18,6 +18,7 @@
 #include "polydem/error.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim/checkpoint_pieces.hpp"
+#include "sim/contact_table.hpp"
 #include "sim/probes.hpp"
 #include "sim/run_limits.hpp"
 #include "sim/thread_governor.hpp"
@@ -64,9 +65,9 @@ std::string numbered(const char* stem, std::int64_t n, const char* ext) {
 // One line per touching pair (force chains): body-body from centre to centre, body-driver
 // from the centre to the contact point; forces summed over the pair's sub-contacts (ft: the
 // sum of their tangential magnitudes).
-std::vector<ContactOut> contact_lines(const Simulation& sim) {
+// `body` and `driver`: pair lists in global ids, as one process's engine holds them.
+std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driver, const Bodies& b) {
   std::vector<ContactOut> out;
-  const Bodies& b = sim.bodies;
   auto add = [&](const PairList& list, bool driver) {
     for (std::size_t k = 0; k < list.size(); ++k) {
       if (!list.touching[k]) continue;
@@ -93,9 +94,17 @@ std::vector<ContactOut> contact_lines(const Simulation& sim) {
       out.push_back(c);
     }
   };
-  add(sim.engine().body_pairs(), false);
-  add(sim.engine().driver_pairs(), true);
+  add(body, false);
+  add(driver, true);
   return out;
+}
+
+// A distributed run's rank: the lines of the pairs it answers for (sim/rank_contacts.hpp), from
+// its owned bodies and ghosts, which are current after a step.
+std::vector<ContactOut> rank_contact_lines(const Simulation& sim) {
+  const RankContacts& r = *sim.rank_contacts();
+  return contact_lines(table_of(r.output_slots(sim.engine(), false)), table_of(r.output_slots(sim.engine(), true)),
+                       sim.bodies);
 }
 
 // s: rows of a resumed run's CSV files later than this were written after its checkpoint.
@@ -170,25 +179,30 @@ class OutputWriter {
   }
 
   void frame() {
-    const bool pieces = sim_.distributed();  // each rank writes its own bodies
-    const bool whole = sim_.scene().output.contacts || (sim_.external() && sim_.external()->grid());
-    if (whole) sim_.gather_state();  // contacts and the fluid's void fraction read every body
+    const bool pieces = sim_.distributed();  // each rank writes its own bodies and contacts
+    const bool contacts = sim_.scene().output.contacts;
+    const bool fluid = sim_.external() && sim_.external()->grid();
+    if (fluid) sim_.gather_state();  // the void fraction reads every body
     const std::int64_t n = progress_.frame++;  // on every rank: the pieces carry it
-    OutputFrame f{sim_.time(), {numbered("bodies", n, pieces ? "pvtu" : "vtu")}};
-    if (pieces) write_body_pieces(f.files[0]);
+    const std::string bodies = numbered("bodies", n, pieces ? "pvtu" : "vtu");
+    const std::string lines = numbered("contacts", n, pieces ? "pvtp" : "vtp");
+    if (pieces) write_rank_pieces(bodies, contacts ? lines : "");
     if (!io_) return;
+    OutputFrame f{sim_.time(), {bodies}};
     if (!pieces)
-      write_bodies_vtu(dir_ + "/" + f.files[0], sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
+      write_bodies_vtu(dir_ + "/" + bodies, sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
                        sim_.scene().forces.gravity);
     if (!sim_.drivers.empty()) {
       f.files.push_back(numbered("drivers", n, "vtp"));
       write_drivers_vtp(dir_ + "/" + f.files.back(), sim_.drivers.meshes(view_frame(sim_.drivers, view_box_)));
     }
-    if (sim_.scene().output.contacts) {
-      f.files.push_back(numbered("contacts", n, "vtp"));
-      write_contacts_vtp(dir_ + "/" + f.files.back(), contact_lines(sim_));
+    if (contacts) {
+      f.files.push_back(lines);
+      if (!pieces)
+        write_contacts_vtp(dir_ + "/" + lines,
+                           contact_lines(sim_.engine().body_pairs(), sim_.engine().driver_pairs(), sim_.bodies));
     }
-    if (sim_.external() && sim_.external()->grid()) {
+    if (fluid) {
       f.files.push_back(numbered("fluid", n, "vti"));
       write_fluid_vti(dir_ + "/" + f.files.back(), sim_);
     }
@@ -224,17 +238,25 @@ class OutputWriter {
   }
 
  private:
-  // bodies_NNNNNN_pK.vtu: each rank's owned bodies; rank 0 adds the .pvtu naming every piece.
-  void write_body_pieces(const std::string& pvtu) {
-    const std::string stem = pvtu.substr(0, pvtu.size() - 5);
-    auto piece = [&](int r) { return stem + "_p" + std::to_string(r) + ".vtu"; };
+  // STEM_NNNNNN_pK.vtu and .vtp: each rank's owned bodies and the contacts it answers for;
+  // rank 0 adds the .pvtu and .pvtp (`contacts`: none when empty) naming every piece.
+  void write_rank_pieces(const std::string& bodies, const std::string& contacts) {
+    auto piece = [&](const std::string& file, int r) {  // bodies_000012.pvtu -> bodies_000012_p3.vtu
+      const std::size_t dot = file.rfind('.');
+      return file.substr(0, dot) + "_p" + std::to_string(r) + "." + file.substr(dot + 2);
+    };
+    auto all = [&](const std::string& file) {
+      std::vector<std::string> names;
+      for (int r = 0; r < sim_.link()->ranks(); ++r) names.push_back(piece(file, r));
+      return names;
+    };
     on_every_rank(*sim_.link(), [&] {
-      write_bodies_piece(dir_ + "/" + piece(sim_.rank()), sim_.bodies, sim_.rank_contacts()->output_bodies(),
+      write_bodies_piece(dir_ + "/" + piece(bodies, sim_.rank()), sim_.bodies, sim_.rank_contacts()->output_bodies(),
                          sim_.shapes(), sim_.scene().output.rounded, sim_.scene().forces.gravity);
+      if (!contacts.empty()) write_contacts_vtp(dir_ + "/" + piece(contacts, sim_.rank()), rank_contact_lines(sim_));
       if (!io_) return;
-      std::vector<std::string> pieces;
-      for (int r = 0; r < sim_.link()->ranks(); ++r) pieces.push_back(piece(r));
-      write_bodies_pvtu(dir_ + "/" + pvtu, pieces);
+      write_bodies_pvtu(dir_ + "/" + bodies, all(bodies));
+      if (!contacts.empty()) write_contacts_pvtp(dir_ + "/" + contacts, all(contacts));
     });
   }
 

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# A distributed run writes in parallel (issue 20): each rank its bodies' VTK piece, with a
-# .pvtu that scene.pvd names, so ParaView opens the run as one data set equal to one
-# process's bodies files (tests/app/check_pieces.py); each rank its checkpoint piece, with a
-# manifest, resumed on another rank count or in one process on the plain run's bits, also after
-# SIGTERM on mpirun.
+# A distributed run writes in parallel (issue 20): each rank its bodies' and contacts' VTK
+# pieces, with a .pvtu and a .pvtp that scene.pvd names, so ParaView opens the run as one data
+# set equal to one process's files (tests/app/check_pieces.py); each rank its checkpoint piece,
+# with a manifest, resumed on another rank count or in one process on the plain run's bits,
+# also after SIGTERM on mpirun.
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
 source "$here/mpi_lib.bash"
@@ -13,9 +13,9 @@ sed -e 's|vtk_every: "20 ms"|vtk_every: "10 ms"|' -e "s|../../shapes|$here/../..
 "$polydem" run "$tmp/pour.yaml" --out "$tmp/plain" --threads 1 > /dev/null 2>&1 || fail "plain pour"
 for np in 2 3; do
   mpi "$np" run "$tmp/pour.yaml" --out "$tmp/np$np" --threads 1 > /dev/null 2>&1 || fail "pour at -np $np"
-  /usr/bin/python3 "$here/check_pieces.py" "$tmp/plain" "$tmp/np$np" "$np" || fail "-np $np: body pieces"
+  /usr/bin/python3 "$here/check_pieces.py" "$tmp/plain" "$tmp/np$np" "$np" || fail "-np $np: VTK pieces"
 done
-echo "ok: -np 2, 3: bodies_NNNNNN.pvtu and a piece per rank, together the one-process bodies files"
+echo "ok: -np 2, 3: .pvtu, .pvtp and a piece per rank, together the one-process bodies and contacts files"
 "$polydem" render "$tmp/np2" -o "$tmp/np2.png" > /dev/null 2>&1 || fail "polydem render of the -np 2 pieces"
 [ -s "$tmp/np2.png" ] || fail "polydem render wrote no picture of the -np 2 pieces"
 echo "ok: polydem render draws the -np 2 run from its .pvtu files"
