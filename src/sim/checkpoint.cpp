@@ -107,11 +107,11 @@ struct Reader {
 
 // Active slots with their pair, so the next rebuild hands their history over by key. Field by
 // field: no padding bytes in the file, so equal states give equal files.
-template <class IO, class Key, class Slot>
-void slot_fields(IO& io, Key& f, Slot& s, bool last_step_fields = true) {
+template <class IO, class Key, class Slot, class Record>
+void slot_fields(IO& io, Key& f, Slot& s, Record& r, bool last_step_fields = true) {
   bool active = true;  // only active slots are stored: a constant byte, kept from format 03
   io.pod(f.type); io.pod(f.a); io.pod(f.b); io.flag(active);
-  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn);
+  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(r.point); io.pod(r.force); io.pod(r.fn);
   io.pod(s.history.gap);  // the last gap, stored twice: format 03 has it here and not below
   if (!last_step_fields) return;
   io.pod(s.history.fd); io.pod(s.history.gap); io.pod(s.history.weight);
@@ -134,7 +134,7 @@ void write_active(Writer& w, const PairList& list) {
       if (list.active[s]) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
-        slot_fields(w, list.features[s], list.slots[s]);
+        slot_fields(w, list.features[s], list.slots[s], list.records.at(s));  // at: a list must record
       }
 }
 
@@ -149,12 +149,13 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
     BodyPair pair;
     FeaturePair key;
     ContactSlot slot;
+    SlotRecord record;
     r.pod(pair.i);
     r.pod(pair.j);
     if (pair.i >= bodies || pair.j >= partners || (!driver && pair.i >= pair.j))
       r.fail("contact " + std::to_string(e) + " names the pair (" + std::to_string(pair.i) + ", " +
              std::to_string(pair.j) + "), out of range");
-    slot_fields(r, key, slot, r.last_step_fields);
+    slot_fields(r, key, slot, record, r.last_step_fields);
     if (std::uint8_t(key.type) >= kPairTypeCount) r.fail("contact " + std::to_string(e) + " has an unknown type");
     if (!r.last_step_fields) slot.history.gap = kNoGap;  // format 03: no last step for the energy ledger
     if (list.pairs.empty() || list.pairs.back().i != pair.i || list.pairs.back().j != pair.j) {
@@ -163,6 +164,7 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
     }
     list.features.push_back(key);
     list.slots.push_back(slot);
+    list.records.push_back(record);
     list.active.push_back(1);
     ++list.slot_begin.back();
   }

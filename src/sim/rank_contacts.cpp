@@ -111,6 +111,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     forced_ = rebuild_asked_ = false;
     ++rebuilds_;
   }
+  engine_->record_contacts(whole.records_contacts());  // the run loop tells the whole engine
   engine_->compute(store_.view(), drivers, dt, stale);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) {  // force += the contact sum: one process's arithmetic
     if (plan_.ghost[k]) continue;
