@@ -296,7 +296,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
-  trigger_.mark_built(*bodies.position, *bodies.orientation);
+  trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
   mark_drivers(bodies, drivers);
   must_rebuild_ = false;
   ++stats_.rebuilds;

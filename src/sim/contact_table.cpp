@@ -53,7 +53,7 @@ PairList localise(const PairList& table, const std::vector<std::int32_t>& local_
     for (std::uint32_t s = table.slot_begin[k]; s < table.slot_begin[k + 1]; ++s) {
       mine.features.push_back(table.features[s]);
       mine.slots.push_back(table.slots[s]);
-      mine.records.push_back(table.records[s]);
+      mine.records.push_back(table.recording ? table.records[s] : SlotRecord{});  // a sphere table between outputs
       mine.active.push_back(1);
     }
     mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "sim/checkpoint.hpp"
+#include "sim/contact_table.hpp"
 #include "sim_fixtures.hpp"
 
 using namespace polydem;
@@ -64,4 +65,24 @@ TEST_CASE("a sphere list records its contacts only for the steps whose state is 
   const std::string recorded_always = checkpoint_bytes(always, path);
   CHECK(checkpoint_bytes(at_end, path) == recorded_always);
   std::filesystem::remove(path);
+}
+
+TEST_CASE("a contact table without records still hands its histories to a rank", "[checkpoint][memory]") {
+  // A distributed sphere run between outputs: the table read from a checkpoint had its records
+  // freed by record_contacts(false) before the forced rebuild localises it.
+  PairList table;
+  table.pairs = {{0, 2}, {1, 2}};
+  table.slot_begin = {0, 1, 2};
+  table.features = {{PairType::vertex_vertex, 0, 0}, {PairType::vertex_vertex, 0, 0}};
+  table.slots.resize(2);
+  table.slots[0].history.ft = Vec3(1, 0, 0);  // N
+  table.slots[1].history.ft = Vec3(0, 2, 0);
+  table.active = {1, 1};
+  table.resize_results();
+  table.set_recording(false);
+  const PairList mine = localise(table, {-1, 0, 1}, false);  // body 0 elsewhere: one pair is local
+  REQUIRE(mine.size() == 1);
+  CHECK((mine.pairs[0].i == 0 && mine.pairs[0].j == 1));
+  CHECK(mine.slots[0].history.ft == Vec3(0, 2, 0));
+  CHECK(mine.records.size() == mine.slots.size());
 }
