@@ -159,6 +159,7 @@ void fill_slots(const std::vector<std::vector<FeaturePair>>& per_pair, const std
   for (std::size_t k = 0; k < per_pair.size(); ++k)
     list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
   list.slots.assign(list.slot_begin.back(), ContactSlot{});
+  list.records.assign(list.recording ? list.slot_begin.back() : 0, SlotRecord{});
   list.active.assign(list.slot_begin.back(), 0);
   list.features.resize(list.slot_begin.back());
   list.slot_gap.assign(list.slot_begin.back(), -std::numeric_limits<float>::infinity());
@@ -257,10 +258,13 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
-  const PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
+  PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
   body_list_ = PairList{};  // freed before the new lists are built
   driver_list_ = PairList{};
   PairList fresh, fresh_d;
+  // A sphere list's records are written by the step's kernel, not carried: sized only once the
+  // old lists are freed, so a rebuild at an output step holds no more than another.
+  fresh.recording = !spheres_only_;
   {  // the broad phase's pairs and the candidates are freed once the slots are laid out
     std::vector<BodyPair> near;
     cells_.build_pairs(*bodies.position, bounding_, range_p, near);
@@ -277,7 +281,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     fill_slots(found.features, &found.gaps, fresh);
   }
   carry_history(old_body, fresh);
+  old_body = PairList{};
   body_list_ = std::move(fresh);
+  if (spheres_only_) body_list_.set_recording(record_contacts_);
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
@@ -290,7 +296,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
-  trigger_.mark_built(*bodies.position, *bodies.orientation);
+  trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
   mark_drivers(bodies, drivers);
   must_rebuild_ = false;
   ++stats_.rebuilds;

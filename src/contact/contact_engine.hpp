@@ -66,6 +66,15 @@ class ContactEngine {
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
+  // Whether the coming steps keep each active contact's point and forces (PairList::records),
+  // which contact output and checkpoints read: on by default; the run loop turns it off for
+  // steps after which nothing is written. Only a sphere list obeys (56 bytes a slot saved
+  // between output steps); lists of polyhedra and drivers always record for their hand-over.
+  void record_contacts(bool on) {
+    record_contacts_ = on;
+    if (spheres_only_) body_list_.set_recording(on);
+  }
+  bool records_contacts() const { return record_contacts_; }
 
   const ContactStats& stats() const { return stats_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps
@@ -102,6 +111,7 @@ class ContactEngine {
   RebuildTrigger trigger_;
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
+  bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
   PairList body_list_, driver_list_;
   // Each driver's placement and whether it was active when the lists were built: all the
   // rebuild trigger compares (no names, shapes or meshes copied at a rebuild).

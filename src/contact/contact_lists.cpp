@@ -26,6 +26,17 @@ bool pair_less(const BodyPair& a, const BodyPair& b) {
 
 PairList active_part(const PairList& list) {
   PairList kept;
+  std::size_t n_slots = 0, n_pairs = 0;  // sized exactly: this copy is held at a rebuild's peak
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::size_t before = n_slots;
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) n_slots += list.active[s];
+    n_pairs += n_slots > before;
+  }
+  kept.pairs.reserve(n_pairs);
+  kept.slot_begin.reserve(n_pairs + 1);
+  kept.features.reserve(n_slots);
+  kept.slots.reserve(n_slots);
+  if (list.recording) kept.records.reserve(n_slots);
   kept.slot_begin.push_back(0);
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::size_t before = kept.slots.size();
@@ -33,12 +44,14 @@ PairList active_part(const PairList& list) {
       if (!list.active[s]) continue;
       kept.features.push_back(list.features[s]);
       kept.slots.push_back(list.slots[s]);
+      if (list.recording) kept.records.push_back(list.records[s]);
     }
     if (kept.slots.size() == before) continue;
     kept.pairs.push_back(list.pairs[k]);
     kept.slot_begin.push_back(std::uint32_t(kept.slots.size()));
   }
   kept.active.assign(kept.slots.size(), 1);
+  kept.recording = list.recording;
   return kept;
 }
 
@@ -58,6 +71,7 @@ void carry_history(const PairList& old_list, PairList& fresh) {
       while (s_new < s_new_end && feature_key(fresh.features[s_new]) < key) ++s_new;
       if (s_new < s_new_end && feature_key(fresh.features[s_new]) == key) {
         fresh.slots[s_new] = old_slot;
+        if (fresh.recording) fresh.records[s_new] = old_list.recording ? old_list.records[s] : SlotRecord{};
         fresh.active[s_new] = 1;
         ++fresh.touching[k_new];
       }

@@ -14,16 +14,22 @@
 
 namespace polydem {
 
-// The state of one slot, touched only where a contact is (or was) active; the slot's key
-// lives apart in PairList::features, the array every step scans. 128 bytes on a 64-byte
-// boundary: a contact's state is two cache lines, not three. Its last gap is history.gap.
-struct alignas(64) ContactSlot {
+// The state of one slot that lives while its key does, touched only where a contact is (or
+// was) active; the slot's key lives apart in PairList::features, the array every step scans.
+// Its last gap is history.gap.
+struct ContactSlot {
   ContactHistory history;     // N, N m: springs carried while the key lives
-  Vec3 point = Vec3::Zero();  // m, last contact point: history hand-over, output
-  Vec3 force = Vec3::Zero();  // N on i at the last step: output
-  double fn = 0.0;            // N, last normal force
 };
-static_assert(sizeof(ContactSlot) == 128, "ContactSlot: two cache lines");
+static_assert(sizeof(ContactSlot) == 72, "ContactSlot: the history alone");
+
+// What an active slot's contact was at the last step: contact output and checkpoints read it,
+// and a polyhedron pair hands an ended contact's history to the nearest new one by its point.
+// Apart from ContactSlot so a sphere list keeps it only for the steps something reads it.
+struct SlotRecord {
+  Vec3 point = Vec3::Zero();  // m, contact point
+  Vec3 force = Vec3::Zero();  // N on i
+  double fn = 0.0;            // N, normal force
+};
 
 // Packs a contact key of one pair into an integer that orders slots deterministically.
 inline std::uint64_t feature_key(FeaturePair f) {
@@ -39,6 +45,11 @@ struct PairList {
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
   std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
   std::vector<ContactSlot> slots;          // per slot: contact state
+  // Per slot when `recording` (else empty): written for each active slot at every step. Lists
+  // of polyhedra and drivers always record (their hand-over reads the points); the sphere
+  // fast path only at the steps whose state is written (ContactEngine::record_contacts).
+  std::vector<SlotRecord> records;
+  bool recording = true;
   std::vector<std::uint8_t> active;        // per slot: in contact at the last step (compact: scanned)
   std::vector<float> slot_gap;             // m, per slot: gap when the list was built (lower bound)
   std::vector<double> gap_at_build;        // m, per pair: smallest feature gap when the list was built
@@ -51,6 +62,11 @@ struct PairList {
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
+  void set_recording(bool on) {
+    recording = on;
+    if (on) records.resize(slots.size());
+    else records = {};  // freed: a sphere's 56 bytes a slot between output steps
+  }
   void resize_results() {
     force_i.assign(pairs.size(), Vec3::Zero());
     torque_i.assign(pairs.size(), Vec3::Zero());

@@ -24,7 +24,7 @@ EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uin
     double best = std::numeric_limits<double>::infinity();
     for (int f = 0; f < n_fresh; ++f)
       for (int e = 0; e < n_ended; ++e) {
-        const double d2 = (list.slots[ended[e]].point - found[fresh[f]].geometry.point).squaredNorm();
+        const double d2 = (list.records[ended[e]].point - found[fresh[f]].geometry.point).squaredNorm();
         if (d2 < best) { best = d2; best_f = f; best_e = e; }
       }
     list.slots[found[fresh[best_f]].slot].history = list.slots[ended[best_e]].history;
@@ -38,9 +38,7 @@ EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uin
     if (list.active[s] && !on) {
       ContactSlot& slot = list.slots[s];
       if (law) released += released_energy(*law, slot.history, r_star);
-      slot.history = ContactHistory{};
-      slot.fn = 0.0;
-      slot.force = Vec3::Zero();
+      slot.history = ContactHistory{};  // its record is read no more: only active slots' are
     }
     list.active[s] = on;
   }

@@ -163,7 +163,7 @@ template <class Partner>
     // The slot's state is read and written by the law, after the pair's other candidates: fetch it now.
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
-    __builtin_prefetch(state + 64, 1);  // 128 bytes, aligned: two lines
+    __builtin_prefetch(state + 64, 1);  // 72 bytes: two lines at most
   }
   if (shadowing && shadowable)  // rare: nothing to drop otherwise
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
@@ -192,7 +192,7 @@ template <class Parts, class Partner>
       (law.contact_mass || (bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
-    ContactSlot& slot = list.slots[scratch.found[c].slot];
+    const std::uint32_t s = scratch.found[c].slot;
     const Vec3 lever = g.point - xi;  // m, from i's centre
     double m_dashpot = m_eff, nu_dashpot = nu;  // kg, N s/m: the normal dashpot's mass and coefficient
     if (law.contact_mass) {  // damping_mass: contact
@@ -213,10 +213,8 @@ template <class Parts, class Partner>
                           r_star,
                           exact_step,
                           law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
-    const ContactForce f = contact_force<Parts>(law, kin, slot.history, dt);
-    slot.point = g.point;
-    slot.force = f.force;
-    slot.fn = f.fn;
+    const ContactForce f = contact_force<Parts>(law, kin, list.slots[s].history, dt);
+    list.records[s] = {g.point, f.force, f.fn};  // always recording: the hand-over reads the point
     totals.force_i += f.force;
     totals.torque_i += lever.cross(f.force) + f.moment;
     totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)

@@ -30,8 +30,6 @@ template <class Parts>
       totals.energy = released_energy<Parts>(law, slot.history, Parts::Normal::kCurved ? ri * rj / (ri + rj) : 0.0);
       list.active[s] = 0;
       slot.history = ContactHistory{};
-      slot.fn = 0.0;
-      slot.force = Vec3::Zero();
     }
     return totals;
   }
@@ -56,9 +54,7 @@ template <class Parts>
   if (!list.active[s]) slot.history = ContactHistory{};
   const ContactForce f = contact_force<Parts, true>(law, kin, slot.history, dt);
   list.active[s] = 1;
-  slot.point = point;
-  slot.force = f.force;
-  slot.fn = f.fn;
+  if (list.recording) list.records[s] = {point, f.force, f.fn};
   totals.force_i = f.force;
   totals.torque_i = arm_i.cross(f.force) + f.moment;
   totals.torque_j = -(arm_j.cross(f.force) + f.moment);

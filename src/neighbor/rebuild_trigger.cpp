@@ -24,13 +24,14 @@ double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built
   return dx.norm() + 2.0 * bounding_radius * sin_half;
 }
 
-void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q) {
+void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q, bool points) {
   if (x.size() != q.size()) {
     throw std::invalid_argument("mark_built: " + std::to_string(x.size()) + " positions but " +
                                 std::to_string(q.size()) + " orientations");
   }
   x_built = x;
-  q_built = q;
+  if (points) q_built = {};
+  else q_built = q;
   displacement_.assign(x.size(), 0.0);
   exceeded_.store(false, std::memory_order_relaxed);
   ++rebuild_count;
@@ -58,9 +59,10 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   }
   const double limit = 0.5 * skin;  // m, each body may use half the skin
   bool exceeded = false;            // by this thread's bodies
+  const std::vector<Quat>& q_then = q_built.empty() ? q : q_built;  // points: radius 0, q unread
 #pragma omp for schedule(static) nowait
   for (std::size_t i = 0; i < n; ++i) {
-    const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
+    const double d = displacement_bound(x[i] - x_built[i], q[i], q_then[i], bounding_radius[i]);
     displacement_[i] = d;
     // Written as !(d <= limit) so a NaN state also asks for a rebuild.
     if (!(d <= limit)) exceeded = true;

@@ -18,8 +18,10 @@ double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built
 
 class RebuildTrigger {
  public:
-  // Remembers the state the lists were built at; counts one rebuild.
-  void mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q);
+  // Remembers the state the lists were built at; counts one rebuild. `points`: every body's
+  // bounding radius given to measure is 0 (spheres' cores), so no orientation is kept (32
+  // bytes a body): turning moves no point.
+  void mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q, bool points = false);
   // True when some body's displacement_bound exceeds skin/2 (or is not finite), or when no build
   // was marked for this many bodies. Parallel reduction, cheap enough for every step. Keeps
   // each body's bound in displacement().
@@ -40,7 +42,7 @@ class RebuildTrigger {
 
  private:
   std::vector<Vec3> x_built;  // m
-  std::vector<Quat> q_built;
+  std::vector<Quat> q_built;  // empty when mark_built was told the bodies are points
   std::vector<double> displacement_;  // m
   std::size_t rebuild_count = 0;
   std::atomic<bool> exceeded_{false};  // some body moved past skin/2 since the last take_exceeded

@@ -36,7 +36,7 @@ void write_active(Writer& w, const PairList& list) {
       if (list.active[s]) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
-        slot_fields(w, list.features[s], list.slots[s]);
+        slot_fields(w, list.features[s], list.slots[s], list.records.at(s));  // at: a list must record
       }
 }
 
@@ -51,12 +51,13 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
     BodyPair pair;
     FeaturePair key;
     ContactSlot slot;
+    SlotRecord record;
     r.pod(pair.i);
     r.pod(pair.j);
     if (pair.i >= bodies || pair.j >= partners || (!driver && pair.i >= pair.j))
       r.fail("contact " + std::to_string(e) + " names the pair (" + std::to_string(pair.i) + ", " +
              std::to_string(pair.j) + "), out of range");
-    slot_fields(r, key, slot, r.last_step_fields);
+    slot_fields(r, key, slot, record, r.last_step_fields);
     if (std::uint8_t(key.type) >= kPairTypeCount) r.fail("contact " + std::to_string(e) + " has an unknown type");
     if (!r.last_step_fields) slot.history.gap = kNoGap;  // format 03: no last step for the energy ledger
     if (list.pairs.empty() || list.pairs.back().i != pair.i || list.pairs.back().j != pair.j) {
@@ -65,6 +66,7 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
     }
     list.features.push_back(key);
     list.slots.push_back(slot);
+    list.records.push_back(record);
     list.active.push_back(1);
     ++list.slot_begin.back();
   }

@@ -96,11 +96,11 @@ struct Reader {
 
 // Active slots with their pair, so the next rebuild hands their history over by key. Field by
 // field: no padding bytes in the file, so equal states give equal files.
-template <class IO, class Key, class Slot>
-void slot_fields(IO& io, Key& f, Slot& s, bool last_step_fields = true) {
+template <class IO, class Key, class Slot, class Record>
+void slot_fields(IO& io, Key& f, Slot& s, Record& r, bool last_step_fields = true) {
   bool active = true;  // only active slots are stored: a constant byte, kept from format 03
   io.pod(f.type); io.pod(f.a); io.pod(f.b); io.flag(active);
-  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(s.point); io.pod(s.force); io.pod(s.fn);
+  io.pod(s.history.ft); io.pod(s.history.mr); io.pod(r.point); io.pod(r.force); io.pod(r.fn);
   io.pod(s.history.gap);  // the last gap, stored twice: format 03 has it here and not below
   if (!last_step_fields) return;
   io.pod(s.history.fd); io.pod(s.history.gap); io.pod(s.history.weight);

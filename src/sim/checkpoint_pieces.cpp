@@ -44,7 +44,7 @@ void write_slots(Writer& w, const std::vector<TableSlot>& slots) {
   for (const TableSlot& t : slots) {
     w.pod(t.i);
     w.pod(t.j);
-    slot_fields(w, t.key, t.slot);
+    slot_fields(w, t.key, t.slot, t.record);
   }
 }
 
@@ -107,7 +107,7 @@ void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std:
     if (t.i >= bodies || t.j >= partners || (!driver && t.i >= t.j))
       r.fail("contact " + std::to_string(e) + " names the pair (" + std::to_string(t.i) + ", " + std::to_string(t.j) +
              "), out of range");
-    slot_fields(r, t.key, t.slot);
+    slot_fields(r, t.key, t.slot, t.record);
     if (std::uint8_t(t.key.type) >= kPairTypeCount) r.fail("contact " + std::to_string(e) + " has an unknown type");
     out.push_back(t);
   }

@@ -12,7 +12,8 @@ std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& stor
     if (store.ghost[p.i]) continue;  // the owner of i answers for the pair
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s], list.slots[s]});
+        out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s], list.slots[s],
+                       list.recording ? list.records[s] : SlotRecord{}});
   }
   return out;
 }
@@ -31,6 +32,7 @@ PairList table_of(std::vector<TableSlot> slots) {
     }
     table.features.push_back(t.key);
     table.slots.push_back(t.slot);
+    table.records.push_back(t.record);
     table.active.push_back(1);
     ++table.slot_begin.back();
   }
@@ -51,6 +53,7 @@ PairList localise(const PairList& table, const std::vector<std::int32_t>& local_
     for (std::uint32_t s = table.slot_begin[k]; s < table.slot_begin[k + 1]; ++s) {
       mine.features.push_back(table.features[s]);
       mine.slots.push_back(table.slots[s]);
+      mine.records.push_back(table.recording ? table.records[s] : SlotRecord{});  // a sphere table between outputs
       mine.active.push_back(1);
     }
     mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));

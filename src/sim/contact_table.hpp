@@ -17,6 +17,7 @@ struct TableSlot {
   std::uint32_t i, j;
   FeaturePair key;
   ContactSlot slot;
+  SlotRecord record;
 };
 
 // The active slots of `list` (local indices of `store`) this rank answers for.

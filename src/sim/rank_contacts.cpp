@@ -112,6 +112,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     forced_ = rebuild_asked_ = false;
     ++rebuilds_;
   }
+  engine_->record_contacts(whole.records_contacts());  // the run loop tells the whole engine
   engine_->compute(store_.view(), drivers, dt, stale);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) {  // force += the contact sum: one process's arithmetic
     if (plan_.ghost[k]) continue;
@@ -153,7 +154,8 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
   const PairList& list = driver ? whole.driver_pairs() : whole.body_pairs();
   for (std::size_t k = 0; k < list.size(); ++k)
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.active[s]) slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s]});
+      if (list.active[s])
+        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s], list.records.at(s)});
   return slots;
 }
 

@@ -39,8 +39,10 @@ class Schedule {
   Schedule(std::optional<double> every, double now) : every_(every ? *every : 0.0) {
     if (every_ > 0) next_ = std::ceil(now / every_ - 1e-9) * every_;
   }
+  // True when due(t, dt) would be, without moving on.
+  bool due_at(double t, double dt) const { return every_ > 0 && t >= next_ - 0.5 * dt; }
   bool due(double t, double dt) {
-    if (every_ <= 0 || t < next_ - 0.5 * dt) return false;
+    if (!due_at(t, dt)) return false;
     while (next_ <= t + 0.5 * dt) {
       const double next = next_ + every_;
       if (next == next_)  // check_run_limits keeps intervals above this; a guard, not a hang
@@ -75,14 +77,14 @@ std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driv
       double weight = 0.0;
       for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
         if (!list.active[s]) continue;
-        const ContactSlot& slot = list.slots[s];
-        c.fn += slot.fn;
-        c.force += slot.force;
+        const SlotRecord& r = list.records.at(s);  // at: recorded at the step just made
+        c.fn += r.fn;
+        c.force += r.force;
         // force = fn n + ft with ft normal to n, so |ft| follows without storing n
-        c.ft += std::sqrt(std::max(slot.force.squaredNorm() - slot.fn * slot.fn, 0.0));
-        c.overlap = std::max(c.overlap, -slot.history.gap);
-        c.point += slot.point * std::max(slot.fn, 1e-300);
-        weight += std::max(slot.fn, 1e-300);
+        c.ft += std::sqrt(std::max(r.force.squaredNorm() - r.fn * r.fn, 0.0));
+        c.overlap = std::max(c.overlap, -list.slots[s].history.gap);
+        c.point += r.point * std::max(r.fn, 1e-300);
+        weight += std::max(r.fn, 1e-300);
         c.type = int(list.features[s].type);
       }
       c.point /= weight;
@@ -313,10 +315,32 @@ std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
   return buf;
 }
 
-[[noreturn]] void fail_non_finite(const Simulation& sim, const std::string& what, const Bodies& last_good,
+// The moving state of the last finiteness check, all a blow-up report writes: 104 bytes a body
+// where a copy of Bodies is 272 (shape, scale and group are constant: the run's own are read).
+struct LastGood {
+  std::vector<Vec3> position, velocity, angular_velocity;  // m, m/s, rad/s
+  std::vector<Quat> orientation;
+  void keep(const Bodies& b) {
+    position = b.position;
+    velocity = b.velocity;
+    angular_velocity = b.angular_velocity;
+    orientation = b.orientation;
+  }
+  // The bodies as they were: the constant fields from `now`, the moving ones kept.
+  Bodies with_constants_of(const Bodies& now) const {
+    Bodies then = now;
+    then.position = position;
+    then.velocity = velocity;
+    then.angular_velocity = angular_velocity;
+    then.orientation = orientation;
+    return then;
+  }
+};
+
+[[noreturn]] void fail_non_finite(const Simulation& sim, const std::string& what, const LastGood& last_good,
                                   std::int64_t good_step, const std::string& dir, bool first_check_after_resume) {
   const std::string good = dir + "/bodies_last_good.vtu";
-  if (sim.rank() == 0) write_bodies_vtu(good, last_good, sim.shapes());
+  if (sim.rank() == 0) write_bodies_vtu(good, last_good.with_constants_of(sim.bodies), sim.shapes());
   char msg[256];
   std::snprintf(msg, sizeof(msg), " became non-finite by step %lld (t = %.6g s). Likely cause: ",
                 static_cast<long long>(sim.step_index()), sim.time());
@@ -375,7 +399,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
   auto previous_term = std::signal(SIGTERM, on_interrupt);  // batch schedulers send it before killing
-  Bodies last_good = sim.bodies;
+  LastGood last_good;
+  last_good.keep(sim.bodies);
   std::int64_t good_step = sim.step_index();
   bool first_check = !o.resume.empty();  // a blow-up before the first check after a resume blames the checkpoint
   const auto start = Clock::now();
@@ -396,7 +421,15 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   int threads = governor.threads();
   omp_set_num_threads(threads);
   double stepping = 0.0;  // s of wall time inside the steps: what the governor compares, output apart
+  bool stopping = false;  // interrupted after a step that kept no contact records: one more step, then stop
   while (sim.step_index() < last_step) {
+    // Contact points and forces are kept only for a step whose state is written after it (the
+    // same decision on every rank: an interrupt is seen by all after the step, see below).
+    const std::int64_t next = sim.step_index() + 1;
+    const double t_next = double(next) * dt;  // s, as sim.time() will be
+    const bool recorded = (out.contacts && vtk.due_at(t_next, dt)) || ckpt.due_at(t_next, dt) || next == last_step ||
+                          stopping;
+    sim.engine().record_contacts(recorded);
     try {
       const auto step_start = Clock::now();
       sim.step();
@@ -415,7 +448,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       const std::string ledger = non_finite_ledger(sim.ledger);
       if (!ledger.empty()) fail_non_finite(sim, ledger, last_good, good_step, o.out_dir, first_check);
       first_check = false;
-      if (io) last_good = sim.bodies;
+      if (io) last_good.keep(sim.bodies);
       good_step = s;
       check_overlaps();
     }
@@ -425,7 +458,12 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       check_overlaps();
     }
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
-    if (sim.any_rank(g_interrupted)) {  // every rank stops at the same step
+    const bool interrupted = sim.any_rank(g_interrupted);  // a collective: every rank stops at the same step
+    if (interrupted && !recorded) {  // the checkpoint needs the contacts' records: one more step
+      g_interrupted = stopping = true;
+      continue;
+    }
+    if (interrupted) {
       g_interrupted = true;
       const std::string path = writer.checkpoint(sim);
       if (io) std::fprintf(stderr, "\ninterrupted at t = %.6g s; continue with: polydem run %s --out %s --resume %s\n",

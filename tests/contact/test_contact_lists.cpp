@@ -21,6 +21,7 @@ PairList make_list(const std::vector<BodyPair>& pairs, const std::vector<std::ve
       ContactSlot slot;
       slot.history.fd = double(list.slots.size()) + 1.0;  // N, a tag
       list.slots.push_back(slot);
+      list.records.push_back(SlotRecord{Vec3::Zero(), Vec3::Zero(), slot.history.fd});  // N, the same tag
       list.active.push_back(on ? 1 : 0);
     }
     list.slot_begin.push_back(std::uint32_t(list.slots.size()));
@@ -43,6 +44,7 @@ TEST_CASE("active_part keeps the active slots with their pairs, keys and state, 
   CHECK(kept.features[2].b == 6);
   CHECK(kept.slots[0].history.fd == 1.0);  // old slot 0
   CHECK(kept.slots[2].history.fd == 6.0);  // old slot 5
+  CHECK(kept.records[2].fn == 6.0);  // its record with it
   CHECK(kept.active == std::vector<std::uint8_t>{1, 1, 1});
 }
 
@@ -56,8 +58,10 @@ TEST_CASE("carry_history from the active part gives the new list the whole old l
   carry_history(active_part(old), from_part);
   CHECK(from_part.active == from_whole.active);
   CHECK(from_part.touching == from_whole.touching);
-  for (std::size_t s = 0; s < fresh.slots.size(); ++s)
+  for (std::size_t s = 0; s < fresh.slots.size(); ++s) {
     CHECK(from_part.slots[s].history.fd == from_whole.slots[s].history.fd);
+    CHECK(from_part.records[s].fn == from_whole.records[s].fn);
+  }
   CHECK(from_whole.active == std::vector<std::uint8_t>{1, 0, 0, 1, 0, 0, 0});  // keys 1 and 6 carried
   CHECK(from_whole.touching == std::vector<std::uint16_t>{1, 1, 0, 0});
 }

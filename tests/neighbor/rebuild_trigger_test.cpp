@@ -58,6 +58,28 @@ TEST_CASE("one moving body among many is seen by the parallel check", "[rebuild]
   }
 }
 
+TEST_CASE("points (radius 0) need no orientation kept: the same bounds, turning or not", "[rebuild]") {
+  const double skin = 0.1;
+  const test::Scene s = test::uniform_scene(2000, 10.0, 0.2, 0.5, 5);
+  const std::vector<double> points(s.centers.size(), 0.0);
+  std::vector<Quat> q0(s.centers.size()), q(s.centers.size());
+  std::vector<Vec3> x = s.centers;
+  for (std::size_t b = 0; b < x.size(); ++b) {
+    q0[b] = rotation(0.1 * double(b), Vec3(1, 2, 3));
+    q[b] = rotation(0.3 * double(b), Vec3(-1, 0, 2)) * q0[b];  // turned, which a point ignores
+    x[b].x() += 0.049 * skin * double(b % 11);  // m: the last of each 11 near skin/2
+  }
+  RebuildTrigger kept, points_only;
+  kept.mark_built(s.centers, q0);
+  points_only.mark_built(s.centers, q0, true);
+  REQUIRE_FALSE(kept.needs_rebuild(x, q, points, skin));
+  REQUIRE_FALSE(points_only.needs_rebuild(x, q, points, skin));
+  CHECK(points_only.displacement() == kept.displacement());
+  x[7].y() += 0.5 * skin;
+  CHECK(kept.needs_rebuild(x, q, points, skin));
+  CHECK(points_only.needs_rebuild(x, q, points, skin));
+}
+
 TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]") {
   // A point at distance R turned by theta moves along the chord 2 R sin(theta/2).
   const double skin = 0.2;

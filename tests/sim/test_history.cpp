@@ -15,6 +15,7 @@ PairList one_pair_list(std::vector<FeaturePair> keys) {
   list.slot_begin = {0, std::uint32_t(keys.size())};
   list.features = keys;
   list.slots.resize(keys.size());
+  list.records.resize(keys.size());
   list.active.assign(keys.size(), 0);
   list.resize_results();
   return list;
@@ -30,7 +31,7 @@ TEST_CASE("a vertex sliding from a face onto an edge keeps its tangential spring
   PairList list = one_pair_list({{PairType::vertex_edge, 0, 3}, {PairType::vertex_face, 0, 1}});
   ContactSlot& face = list.slots[1];
   list.active[1] = 1;
-  face.point = {0.01, 0, 0};
+  list.records[1].point = {0.01, 0, 0};
   face.history.ft = {0.2, -0.1, 0};
   face.history.mr = {0, 0, 1e-4};
   std::vector<std::uint8_t> scratch;
@@ -59,7 +60,7 @@ TEST_CASE("each ended contact hands its history over once, to the nearest new on
   PairList list = one_pair_list({{PairType::vertex_face, 0, 1}, {PairType::vertex_edge, 0, 2},
                                  {PairType::vertex_edge, 1, 2}});
   list.active[0] = 1;
-  list.slots[0].point = {0, 0, 0};
+  list.records[0].point = {0, 0, 0};
   list.slots[0].history.ft = {1, 0, 0};
   std::vector<std::uint8_t> scratch;
   hand_over_history(list, 0, 3, 1, {found(1, {0.05, 0, 0}), found(2, {0.001, 0, 0})}, scratch);

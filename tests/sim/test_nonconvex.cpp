@@ -50,7 +50,7 @@ std::vector<std::pair<int, double>> floor_contacts(const Simulation& sim) {
   std::vector<std::pair<int, double>> out;
   const PairList& list = sim.engine().driver_pairs();
   for (std::size_t s = 0; s < list.slots.size(); ++s)
-    if (list.active[s]) out.emplace_back(list.features[s].a, list.slots[s].fn);
+    if (list.active[s]) out.emplace_back(list.features[s].a, list.records[s].fn);
   return out;
 }
 

@@ -6,6 +6,7 @@
 # "bodies peak_kB kB_per_body"; the per-body figure is peak / bodies, and the marginal cost
 # between two sizes is the slope.
 # usage: tools/bench/memory/run_memory.sh [POLYDEM] [N ...]   (N per side; default 15 30 45)
+# Rows measured so far: tools/bench/memory/results.csv (README, Benchmarks).
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 bin=$(realpath "${1:-build/polydem}")

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Cost per particle-step and peak memory per body from 3,375 to 10^6 spheres: a simple cubic
+# lattice of N = n^3 touching spheres (r = 5 mm, the bed's material) resting on a floor between
+# four walls (3 contacts a sphere, a settled bed's count), STEPS steps at 1 thread under
+# /usr/bin/time -v. The cost is CPU time (user + system: a machine shared with other jobs
+# lends its cores, not its wall clock) of STEPS more steps, a run of 2 STEPS less one of STEPS:
+# set-up and the first list build cancel. Each size is measured right after 3,375 spheres
+# (ROUNDS pairs, alternated: the machine's speed drifts) and stated as the ratio of the pair's
+# costs. Peak memory is the longer run's. Prints and appends to tools/bench/scale/results.csv:
+# "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body".
+# usage: [COMMIT=label] tools/bench/scale/run_scale.sh [POLYDEM] [STEPS] [ROUNDS] [N_SIDE ...]
+#        (defaults: build/polydem 200 3 30 60 100; 15 is the reference size)
+set -euo pipefail
+cd "$(dirname "$0")/../../.."
+bin=$(realpath "${1:-build/polydem}")
+steps=${2:-200}
+rounds=${3:-3}
+shift 3 || shift $#
+sides=("${@:-30 60 100}")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+csv=tools/bench/scale/results.csv
+[ -s "$csv" ] || echo "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body" > "$csv"
+commit=${COMMIT:-$(git rev-parse --short HEAD)}  # COMMIT: the label of another build
+
+cpu_seconds() {  # n steps -> user + system CPU seconds of one run of n^3 spheres, and its peak RSS (kB)
+  local n=$1 steps=$2
+  rm -rf "$work/out"
+  /usr/bin/time -v "$bin" run "$work/scene_$n.yaml" --out "$work/out" --threads 1 --fixed-threads \
+      --until "$(python3 -c "print($steps * 5e-6)")" > /dev/null 2> "$work/log" || { cat "$work/log"; exit 1; }
+  local user sys peak
+  user=$(grep 'User time' "$work/log" | awk '{print $NF}')
+  sys=$(grep 'System time' "$work/log" | awk '{print $NF}')
+  peak=$(grep 'Maximum resident' "$work/log" | awk '{print $NF}')
+  echo "$(python3 -c "print($user + $sys)") $peak"
+}
+
+run_side() {  # n steps -> "us_per_particle_step peak_kB": the CPU time of `steps` more steps, per body-step
+  local n=$1 steps=$2 short long peak
+  python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" > "$work/scene_$n.yaml"
+  read -r short _ <<< "$(cpu_seconds "$n" "$steps")"
+  read -r long peak <<< "$(cpu_seconds "$n" $((2 * steps)))"
+  echo "$(python3 -c "print(round(1e6 * ($long - $short) / ($steps * $n ** 3), 4))") $peak"
+}
+
+for n in ${sides[@]}; do
+  for r in $(seq 1 "$rounds"); do
+    read -r us_ref _ <<< "$(run_side 15 $((10 * steps)))"  # 10 times the steps: CPU times of ~1 s, not 0.1 s
+    read -r us peak <<< "$(run_side "$n" "$steps")"
+    bodies=$((n * n * n))
+    row="$commit,$bodies,$steps,$r,$us,$us_ref,$(python3 -c "print(round($us / $us_ref, 3))"),$peak,$(python3 -c "print(round($peak / $bodies, 3))")"
+    echo "$row" | tee -a "$csv"
+  done
+done
