@@ -8,6 +8,7 @@
 #include "polydem/parallel.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
+#include "contact/sphere_wall.hpp"
 
 namespace polydem {
 
@@ -405,6 +406,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       using Parts = decltype(parts);
       const DriverPartner partner{&drivers, view.mass};
       all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
+        if (spheres_only_ && drivers.is_wall(driver_list_.pairs[k].j))  // one slot, the centre: sphere_wall.hpp
+          return sphere_wall_forces<Parts>(settings_.driver, band_driver_, dt, view, drivers, driver_list_, k, scratch);
         return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
