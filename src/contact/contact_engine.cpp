@@ -289,6 +289,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   carry_history(old_driver, fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
+  spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
+                                         [&](BodyPair p) { return !drivers.is_wall(p.j); });
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation);
@@ -354,7 +356,7 @@ bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& driver
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies) {
-  if (spheres_only_) {  // a sphere's pose is its centre: set in this pass, no loop (and barrier) of its own
+  if (spheres_only_ && spheres_posed_each_step_) {  // a sphere's pose is its centre: set in this pass, no loop (and barrier) of its own
     const std::vector<Vec3>& position = *bodies.position;
 #pragma omp for schedule(static) nowait
     for (std::size_t b = 0; b < position.size(); ++b) posed_[b].position = world_vertices_[b] = position[b];
@@ -374,7 +376,7 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
 
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
                            bool sum_bodies) {
-  if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: posed by measure_motion
+  if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data()};

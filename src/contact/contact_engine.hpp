@@ -102,6 +102,9 @@ class ContactEngine {
   RebuildTrigger trigger_;
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
+  // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
+  // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves).
+  bool spheres_posed_each_step_ = true;
   PairList body_list_, driver_list_;
   // Each driver's placement and whether it was active when the lists were built: all the
   // rebuild trigger compares (no names, shapes or meshes copied at a rebuild).
