@@ -110,7 +110,7 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+  over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
     integrate_detail::kick_body<decltype(iso)::value>(a, i, h);
     drift_body<decltype(iso)::value>(a, i, dt);
     predict_body<decltype(iso)::value>(a, i, h);  // the last step's force: before it is cleared

@@ -63,9 +63,10 @@ void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   in_team(n >= kParallelMinItems, [&] {
     const BodyArrays a = arrays_of(b);
+    const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) body(a, id[k], std::bool_constant<kIsotropicPath>{});
+    for (std::size_t k = 0; k < n; ++k) each(a, id[k], std::bool_constant<kIsotropicPath>{});
   });
 }
 
@@ -90,7 +91,7 @@ template <bool kIsotropicPath>
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
 template <class Before>
 void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before) {
-  auto one = [&](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+  auto one = [h, before](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(iso)::value>(a, i, h);
   };
