@@ -32,11 +32,11 @@ template <class Parts>
   if (!touches) return totals;
   const Vec3 point = xi - wall.normal * (ri + 0.5 * gap);  // m, middle of the overlap
   // apply_law's arithmetic for one contact of weight 1 on a driver of infinite mass (m_eff = m_i).
-  const Vec3 w_rel = bodies.angular_velocity[p.i] - wall.omega;                          // rad/s
-  const Vec3 wall_at_xi = wall.velocity + wall.omega.cross(xi - wall.pivot);             // m/s, the wall's point at i's centre
-  const Vec3 v_centre = bodies.velocity[p.i] - wall_at_xi;                              // m/s
-  const Vec3 w_rel_end = bodies.angular_velocity_end[p.i] - wall.omega;                  // rad/s
-  const Vec3 v_centre_end = bodies.velocity_end[p.i] - wall_at_xi;                      // m/s
+  const Vec3 w_rel = bodies.angular_velocity[p.i] - wall.omega;                  // rad/s
+  const Vec3 wall_at_xi = wall.velocity + wall.omega.cross(xi - wall.pivot);  // m/s, the wall's point at i's centre
+  const Vec3 v_centre = bodies.velocity[p.i] - wall_at_xi;                      // m/s
+  const Vec3 w_rel_end = bodies.angular_velocity_end[p.i] - wall.omega;          // rad/s
+  const Vec3 v_centre_end = bodies.velocity_end[p.i] - wall_at_xi;              // m/s
   const double m_eff = bodies.mass[p.i];  // kg
   const double r_star = Parts::Normal::kCurved ? ri : 0.0;  // m
   const Vec3 lever = point - xi;  // m, from the centre
