@@ -356,7 +356,8 @@ bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& driver
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies) {
-  if (spheres_only_ && spheres_posed_each_step_) {  // a sphere's pose is its centre: set in this pass, no loop (and barrier) of its own
+  // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
+  if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
 #pragma omp for schedule(static) nowait
     for (std::size_t b = 0; b < position.size(); ++b) posed_[b].position = world_vertices_[b] = position[b];
@@ -458,11 +459,12 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
 
 void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
   // One process has no ghost: its loop is compiled without the test.
+  const ForceSums sums = force_sums(bodies);
   with_flag(bodies.ghost != nullptr, [&](auto has_ghosts) {
     parallel_for(bodies.size(), [&](std::size_t b) {
       if constexpr (decltype(has_ghosts)::value)
         if ((*bodies.ghost)[b]) return;  // a ghost's force is summed by its owner
-      add_body_forces(bodies, b);
+      sums(b);
     });
   });
 }

@@ -91,13 +91,11 @@ class ContactEngine {
   // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
   // right after a rebuild (it posed them); spheres are posed by measure_motion, which must
   // come first. `sum_bodies` false: the forces are left in the lists, and the caller calls
-  // add_body_forces for every owned body (Simulation: in the pass of the closing kick).
+  // force_sums(bodies)(b) for every owned body (Simulation: in the pass of the closing kick).
   void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, bool sum_bodies = true);
-  // Adds the pairs' forces and torques on owned body b to its force and torque, in the fixed
-  // order of its pair index (the same bits for any thread count).
-  void add_body_forces(const LocalBodies& bodies, std::size_t b) const { force_sums(bodies)(b); }
-  // The same as a callable holding the lists' addresses, for a loop over the bodies that keeps
-  // them in registers (copied into the loop: integrate.hpp's kick_after).
+  // sums(b) adds the pairs' forces and torques on owned body b to its force and torque, in the
+  // fixed order of its pair index (the same bits for any thread count); `sums` holds the lists'
+  // addresses, for a loop over the bodies that keeps them in registers (integrate.hpp's kick_after).
   ForceSums force_sums(const LocalBodies& bodies) const;
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
