@@ -8,6 +8,7 @@
 #include "polydem/parallel.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
+#include "contact/sphere_wall.hpp"
 
 namespace polydem {
 
@@ -294,6 +295,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   carry_history(old_driver, fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
+  spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
+                                         [&](BodyPair p) { return !drivers.is_wall(p.j); });
   mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
@@ -359,7 +362,8 @@ bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& driver
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies) {
-  if (spheres_only_) {  // a sphere's pose is its centre: set in this pass, no loop (and barrier) of its own
+  // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
+  if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
 #pragma omp for schedule(static) nowait
     for (std::size_t b = 0; b < position.size(); ++b) posed_[b].position = world_vertices_[b] = position[b];
@@ -379,7 +383,7 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
 
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
                            bool sum_bodies) {
-  if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: posed by measure_motion
+  if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data()};
@@ -411,6 +415,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       using Parts = decltype(parts);
       const DriverPartner partner{&drivers, view.mass};
       all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
+        if (spheres_only_ && drivers.is_wall(driver_list_.pairs[k].j))  // one slot, the centre: sphere_wall.hpp
+          return sphere_wall_forces<Parts>(settings_.driver, band_driver_, dt, view, drivers, driver_list_, k, scratch);
         return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
@@ -459,11 +465,12 @@ StoredParts ContactEngine::elastic(const Drivers& drivers) const {
 
 void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
   // One process has no ghost: its loop is compiled without the test.
+  const ForceSums sums = force_sums(bodies);
   with_flag(bodies.ghost != nullptr, [&](auto has_ghosts) {
     parallel_for(bodies.size(), [&](std::size_t b) {
       if constexpr (decltype(has_ghosts)::value)
         if ((*bodies.ghost)[b]) return;  // a ghost's force is summed by its owner
-      add_body_forces(bodies, b);
+      sums(b);
     });
   });
 }

@@ -35,6 +35,39 @@ struct ContactStats {
   EnergyParts energy;                             // J, dissipated this step, by mechanism
 };
 
+// Sums the pairs' forces and torques on a body into its force and torque (N, N m): its body
+// pairs in the fixed order of its pair index, then its driver pairs (the same bits for any
+// thread count). Called per body from the closing kick's pass (Simulation::step), which
+// copies it into each thread's loop: the lists' addresses then stay in registers.
+struct ForceSums {
+  struct Side {  // one list and its body index
+    const std::uint32_t* begin;    // per body, its entries [begin[b], begin[b + 1])
+    const std::uint32_t* entries;  // pair index << 1 | (1 when the body is j)
+    const std::uint16_t* touching;
+    const Vec3 *force_i, *torque_i, *torque_j;
+  };
+  Side body, driver;
+  Vec3* force;
+  Vec3* torque;
+  [[gnu::always_inline]] void operator()(std::size_t b) const {
+    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+    for (std::uint32_t e = body.begin[b]; e < body.begin[b + 1]; ++e) {
+      const std::uint32_t k = body.entries[e] >> 1;
+      if (!body.touching[k]) continue;
+      if (body.entries[e] & 1u) { f -= body.force_i[k]; t += body.torque_j[k]; }
+      else { f += body.force_i[k]; t += body.torque_i[k]; }
+    }
+    for (std::uint32_t e = driver.begin[b]; e < driver.begin[b + 1]; ++e) {
+      const std::uint32_t k = driver.entries[e] >> 1;
+      if (!driver.touching[k]) continue;
+      f += driver.force_i[k];
+      t += driver.torque_i[k];
+    }
+    force[b] += f;
+    torque[b] += t;
+  }
+};
+
 class ContactEngine {
  public:
   ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies, ContactSettings settings);
@@ -58,11 +91,12 @@ class ContactEngine {
   // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
   // right after a rebuild (it posed them); spheres are posed by measure_motion, which must
   // come first. `sum_bodies` false: the forces are left in the lists, and the caller calls
-  // add_body_forces for every owned body (Simulation: in the pass of the closing kick).
+  // force_sums(bodies)(b) for every owned body (Simulation: in the pass of the closing kick).
   void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, bool sum_bodies = true);
-  // Adds the pairs' forces and torques on owned body b to its force and torque, in the fixed
-  // order of its pair index (the same bits for any thread count).
-  void add_body_forces(const LocalBodies& bodies, std::size_t b) const;
+  // sums(b) adds the pairs' forces and torques on owned body b to its force and torque, in the
+  // fixed order of its pair index (the same bits for any thread count); `sums` holds the lists'
+  // addresses, for a loop over the bodies that keeps them in registers (integrate.hpp's kick_after).
+  ForceSums force_sums(const LocalBodies& bodies) const;
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
@@ -112,6 +146,9 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
+  // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
+  // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves).
+  bool spheres_posed_each_step_ = true;
   PairList body_list_, driver_list_;
   // Each driver's placement and whether it was active when the lists were built: all the
   // rebuild trigger compares (no names, shapes or meshes copied at a rebuild).
@@ -125,23 +162,13 @@ class ContactEngine {
   ContactStats stats_;
 };
 
-// Inline: called per body from the closing kick's pass (Simulation::step).
-inline void ContactEngine::add_body_forces(const LocalBodies& bodies, std::size_t b) const {
-  Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-  for (std::uint32_t e = body_index_.begin[b]; e < body_index_.begin[b + 1]; ++e) {
-    const std::uint32_t k = body_index_.entries[e] >> 1;
-    if (!body_list_.touching[k]) continue;
-    if (body_index_.entries[e] & 1u) { f -= body_list_.force_i[k]; t += body_list_.torque_j[k]; }
-    else { f += body_list_.force_i[k]; t += body_list_.torque_i[k]; }
-  }
-  for (std::uint32_t e = driver_index_.begin[b]; e < driver_index_.begin[b + 1]; ++e) {
-    const std::uint32_t k = driver_index_.entries[e] >> 1;
-    if (!driver_list_.touching[k]) continue;
-    f += driver_list_.force_i[k];
-    t += driver_list_.torque_i[k];
-  }
-  (*bodies.force)[b] += f;
-  (*bodies.torque)[b] += t;
+inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) const {
+  return {{body_index_.begin.data(), body_index_.entries.data(), body_list_.touching.data(), body_list_.force_i.data(),
+           body_list_.torque_i.data(), body_list_.torque_j.data()},
+          {driver_index_.begin.data(), driver_index_.entries.data(), driver_list_.touching.data(),
+           driver_list_.force_i.data(), driver_list_.torque_i.data(), driver_list_.torque_j.data()},
+          bodies.force->data(),
+          bodies.torque->data()};
 }
 
 }  // namespace polydem

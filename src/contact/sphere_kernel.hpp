@@ -36,19 +36,22 @@ template <class Parts>
   const double dist = std::sqrt(dist2);
   const Vec3 n = d / dist;
   const double gap = dist - ri - rj;
-  const Vec3 point = xi - n * (ri + 0.5 * gap);  // middle of the overlap
-  const Vec3 arm_i = point - xi, arm_j = point - xj;
-  const Vec3 v_rel = bodies.velocity[p.i] + bodies.angular_velocity[p.i].cross(arm_i) - bodies.velocity[p.j] -
-                     bodies.angular_velocity[p.j].cross(arm_j);
+  // m, the arms from the centres to the middle of the overlap lie along n: -lever_i n and +lever_j n,
+  // so w_i x arm_i - w_j x arm_j = -(lever_i w_i + lever_j w_j) x n, one cross product, not two.
+  const double lever_i = ri + 0.5 * gap, lever_j = rj + 0.5 * gap;
+  const Vec3 point = xi - n * lever_i;
+  const Vec3 v_rel = bodies.velocity[p.i] - bodies.velocity[p.j] -
+                     (lever_i * bodies.angular_velocity[p.i] + lever_j * bodies.angular_velocity[p.j]).cross(n);
   // m/s, for the dashpots. The arms lie along n, so spin moves the contact point along the
   // tangent only: without a tangential dashpot the centres' velocities are all the normal one reads.
   const Vec3 v_end = Parts::tangential_dashpot
-                         ? Vec3(bodies.velocity_end[p.i] + bodies.angular_velocity_end[p.i].cross(arm_i) -
-                                bodies.velocity_end[p.j] - bodies.angular_velocity_end[p.j].cross(arm_j))
+                         ? Vec3(bodies.velocity_end[p.i] - bodies.velocity_end[p.j] -
+                                (lever_i * bodies.angular_velocity_end[p.i] +
+                                 lever_j * bodies.angular_velocity_end[p.j]).cross(n))
                          : Vec3(bodies.velocity_end[p.i] - bodies.velocity_end[p.j]);
   const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
   ContactKinematics kin{n, gap, v_rel, v_end, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
-                        mi * mj / (mi + mj), ri + 0.5 * gap, 1.0};
+                        mi * mj / (mi + mj), lever_i, 1.0};
   if constexpr (Parts::Normal::kCurved) kin.r_star = ri * rj / (ri + rj);
   kin.linear_step = &list.linear_steps[k];  // the pair's mass is fixed: k', c' once per list
   if (!list.active[s]) slot.history = ContactHistory{};
@@ -56,8 +59,9 @@ template <class Parts>
   list.active[s] = 1;
   if (list.recording) list.records[s] = {point, f.force, f.fn};
   totals.force_i = f.force;
-  totals.torque_i = arm_i.cross(f.force) + f.moment;
-  totals.torque_j = -(arm_j.cross(f.force) + f.moment);
+  const Vec3 n_cross_f = n.cross(f.force);  // N, arm x F = -lever_i n x F on i, +lever_j n x F on j
+  totals.torque_i = f.moment - lever_i * n_cross_f;
+  totals.torque_j = -(lever_j * n_cross_f + f.moment);
   // Weight 1: no patch work for the linear law; Hertz's tangential stiffness changes with the overlap.
   totals.energy = Parts::Normal::kCurved ? energy_parts(f) : EnergyParts{f.dissipated, f.sliding, f.rolling, 0.0};
   totals.contacts = 1;

@@ -17,7 +17,7 @@ constexpr double kIsotropicTolerance = 1e-12;
 // Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
 // (an isotropic body keeps its w: it turns about L).
 template <bool kIsotropicPath>
-[[gnu::always_inline]] inline void drift_body(Bodies& b, std::size_t i, double dt) {
+[[gnu::always_inline]] inline void drift_body(const BodyArrays& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
   if constexpr (kIsotropicPath) {
     // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
@@ -31,7 +31,7 @@ template <bool kIsotropicPath>
 }
 
 template <bool kIsotropicPath>
-[[gnu::always_inline]] inline void predict_body(Bodies& b, std::size_t i, double h) {
+[[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
   b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
   if constexpr (kIsotropicPath) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
@@ -41,11 +41,11 @@ template <bool kIsotropicPath>
   }
 }
 
-// Runs body(i, isotropic path) over the bodies of both groups.
+// Runs body(arrays, i, isotropic path) over the bodies of both groups.
 template <class Body>
-void over_groups(const RotorGroups& groups, const Body& body) {
-  parallel_for(groups.isotropic.size(), [&](std::size_t k) { body(groups.isotropic[k], std::true_type{}); });
-  parallel_for(groups.asymmetric.size(), [&](std::size_t k) { body(groups.asymmetric[k], std::false_type{}); });
+void over_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
+  over_group<true>(b, groups.isotropic, body);
+  over_group<false>(b, groups.asymmetric, body);
 }
 
 // Body i into the group of its rotation path.
@@ -87,30 +87,35 @@ void kick(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  over_groups(groups, [&](std::size_t i, auto iso) { drift_body<decltype(iso)::value>(b, i, dt); });
+  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+    drift_body<decltype(iso)::value>(a, i, dt);
+  });
 }
 
 void drift(Bodies& b, double dt) {
-  parallel_for(b.size(), [&b, dt](std::size_t i) {
-    if (is_isotropic(b.inertia[i])) {
-      drift_body<true>(b, i, dt);
+  const BodyArrays a = arrays_of(b);
+  parallel_for(b.size(), [&a, dt](std::size_t i) {
+    if (is_isotropic(a.inertia[i])) {
+      drift_body<true>(a, i, dt);
     } else {
-      drift_body<false>(b, i, dt);
+      drift_body<false>(a, i, dt);
     }
   });
 }
 
 void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
-  over_groups(groups, [&](std::size_t i, auto iso) { predict_body<decltype(iso)::value>(b, i, h); });
+  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+    predict_body<decltype(iso)::value>(a, i, h);
+  });
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
-  over_groups(groups, [&](std::size_t i, auto iso) {
-    integrate_detail::kick_body<decltype(iso)::value>(b, i, h);
-    drift_body<decltype(iso)::value>(b, i, dt);
-    predict_body<decltype(iso)::value>(b, i, h);  // the last step's force: before it is cleared
-    b.force[i] = b.mass[i] * gravity;
-    b.torque[i].setZero();
+  over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+    integrate_detail::kick_body<decltype(iso)::value>(a, i, h);
+    drift_body<decltype(iso)::value>(a, i, dt);
+    predict_body<decltype(iso)::value>(a, i, h);  // the last step's force: before it is cleared
+    a.force[i] = a.mass[i] * gravity;
+    a.torque[i].setZero();
   });
 }
 

@@ -5,6 +5,7 @@
 // Preconditions: mass > 0 and every principal moment > 0 (massless bodies are drivers).
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "polydem/bodies.hpp"
@@ -32,11 +33,48 @@ void kick(Bodies& b, double h);
 // fewer per body); equal to kick(b, h) up to round-off.
 void kick(Bodies& b, double h, const RotorGroups& groups);
 
+// The addresses of the arrays a step's passes read and write, copied into each thread's loop:
+// there they stay in registers. Read through Bodies' vectors, each access reloads the vector's
+// address (Eigen's SSE stores may alias anything): ~44 instructions a body in start_step.
+struct BodyArrays {
+  Vec3* position;             // m
+  Quat* orientation;
+  Vec3* velocity;             // m/s
+  Vec3* angular_velocity;     // rad/s
+  Vec3* velocity_end;         // m/s
+  Vec3* angular_velocity_end; // rad/s
+  Vec3* angular_momentum;     // kg m^2/s, principal frame
+  Vec3* force;                // N
+  Vec3* torque;               // N m
+  const double* mass;         // kg
+  const Vec3* inertia;        // kg m^2
+};
+inline BodyArrays arrays_of(Bodies& b) {
+  return {b.position.data(),         b.orientation.data(),      b.velocity.data(), b.angular_velocity.data(),
+          b.velocity_end.data(),     b.angular_velocity_end.data(), b.angular_momentum.data(),
+          b.force.data(),            b.torque.data(),           b.mass.data(),     b.inertia.data()};
+}
+
+// Runs body(arrays, i, isotropic path) over the bodies of `ids` (one rotor group), each thread
+// of the team on its share with the arrays' addresses in its own registers.
+template <bool kIsotropicPath, class Body>
+void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body) {
+  const std::size_t n = ids.size();
+  if (n == 0) return;  // the same on every thread: no barrier skipped by some only
+  in_team(n >= kParallelMinItems, [&] {
+    const BodyArrays a = arrays_of(b);
+    const Body each = body;  // a copy: what it holds by value stays in registers too
+    const std::size_t* id = ids.data();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) each(a, id[k], std::bool_constant<kIsotropicPath>{});
+  });
+}
+
 namespace integrate_detail {
 // v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame).
 // Inlined into the step's passes: a call per body and pass cost ~10% of a kick.
 template <bool kIsotropicPath>
-[[gnu::always_inline]] inline void kick_body(Bodies& b, std::size_t i, double h) {
+[[gnu::always_inline]] inline void kick_body(const BodyArrays& b, std::size_t i, double h) {
   b.velocity[i] += b.force[i] * (h / b.mass[i]);
   if constexpr (kIsotropicPath) {
     const Vec3 dl = b.torque[i] * h;  // N m s, world frame
@@ -53,14 +91,12 @@ template <bool kIsotropicPath>
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
 template <class Before>
 void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before) {
-  parallel_for(groups.isotropic.size(), [&](std::size_t k) {
-    before(groups.isotropic[k]);
-    integrate_detail::kick_body<true>(b, groups.isotropic[k], h);
-  });
-  parallel_for(groups.asymmetric.size(), [&](std::size_t k) {
-    before(groups.asymmetric[k]);
-    integrate_detail::kick_body<false>(b, groups.asymmetric[k], h);
-  });
+  auto one = [h, before](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+    before(i);
+    integrate_detail::kick_body<decltype(iso)::value>(a, i, h);
+  };
+  over_group<true>(b, groups.isotropic, one);
+  over_group<false>(b, groups.asymmetric, one);
 }
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).

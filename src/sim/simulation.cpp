@@ -155,7 +155,7 @@ void Simulation::step() {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       engine_->forces(local, drivers, dt_, !stale, false);
-      kick_after(bodies, 0.5 * dt_, moved, [&](std::size_t b) { engine_->add_body_forces(local, b); });
+      kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local));
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }

@@ -1,0 +1,144 @@
+// The sphere-wall kernel (sphere_wall.hpp) against the general path it replaces (pair_forces
+// with a DriverPartner, forced by spheres_only = 0): spheres thrown at the walls of a box, one
+// wall moving and turning, stepped with one engine's forces while a second engine of the
+// general path sees the same states; every wall pair's force, torques, contact count, slot
+// history and energy must be the same bits at every step, through contacts that start and end.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+
+#include "contact/contact_engine.hpp"
+#include "integrate/integrate.hpp"
+#include "sim_fixtures.hpp"
+
+using namespace polydem;
+using namespace polydem::test;
+
+namespace {
+
+template <class T>
+bool same_bits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+
+bool same_history(const ContactHistory& a, const ContactHistory& b) {
+  return same_bits(a.ft, b.ft) && same_bits(a.mr, b.mr) && same_bits(a.fd, b.fd) && same_bits(a.gap, b.gap) &&
+         same_bits(a.weight, b.weight);
+}
+
+// Counts the wall pairs (and slots, block energies) whose results differ by a bit.
+std::size_t wall_pair_mismatches(const PairList& a, const PairList& b) {
+  if (a.pairs.size() != b.pairs.size() || a.slots.size() != b.slots.size()) return 1;
+  std::size_t bad = 0;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    bad += !(same_bits(a.force_i[k], b.force_i[k]) && same_bits(a.torque_i[k], b.torque_i[k]) &&
+             same_bits(a.torque_j[k], b.torque_j[k]) && a.touching[k] == b.touching[k]);
+  for (std::size_t s = 0; s < a.slots.size(); ++s)
+    bad += !(a.active[s] == b.active[s] && same_history(a.slots[s].history, b.slots[s].history) &&
+             same_bits(a.records[s].point, b.records[s].point) && same_bits(a.records[s].fn, b.records[s].fn));
+  for (std::size_t e = 0; e < a.block_energy.size(); ++e)
+    bad += !(same_bits(a.block_energy[e].net, b.block_energy[e].net) &&
+             same_bits(a.block_energy[e].sliding, b.block_energy[e].sliding) &&
+             same_bits(a.block_energy[e].rolling, b.block_energy[e].rolling) &&
+             same_bits(a.block_energy[e].patch, b.block_energy[e].patch));
+  return bad;
+}
+
+struct WallRun {
+  std::size_t mismatches = 0, wall_contacts = 0, starts = 0, ends = 0;
+};
+
+// 300 spheres of 5 mm thrown about a 9 cm box; `config` for particles and walls.
+WallRun run_walls(const ContactParams& config, bool exact_step, int steps) {
+  Scene scene = base_scene(config, true, Vec3(0, 0, -9.807));
+  scene.simulation.exact_step = exact_step;
+  for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
+                               {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
+    DriverSettings d;
+    d.name = "side";
+    d.kind = WallSettings{point, normal};
+    scene.drivers.push_back(d);
+  }
+  ShapeLibrary lib = library({sphere_shape(0.005)});
+  std::vector<BodySpec> specs;
+  std::mt19937_64 rng(11);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53 - 0.5; };
+  for (int k = 0; k < 300; ++k) {  // 8 x 8 layers 1 cm apart, a slight jitter, thrown sideways and down
+    const Vec3 x(0.0105 * (k % 8 - 3.5), 0.0105 * ((k / 8) % 8 - 3.5), 0.006 + 0.0105 * (k / 64));
+    BodySpec b = body("sphere", x + 1e-4 * Vec3(u(), u(), u()), 1.5 * Vec3(u(), u(), u() - 0.5));
+    b.angular_velocity = 100.0 * Vec3(u(), u(), u());  // rad/s
+    specs.push_back(b);
+  }
+  Simulation sim(scene, lib, specs);
+  Bodies bodies = sim.bodies;
+  ContactSettings fast;
+  fast.particle = prepare_law(config);
+  fast.driver = prepare_law(config, &config);
+  fast.particle.exact_step = fast.driver.exact_step = exact_step;
+  fast.skin = 0.0005;  // m
+  ContactSettings general = fast;
+  general.spheres_only = 0;  // the general path for every pair
+  Drivers drivers_fast = sim.drivers, drivers_general = sim.drivers;
+  for (Drivers* d : {&drivers_fast, &drivers_general}) {  // the floor slides and turns about a point off the box
+    (*d)[0].velocity = Vec3(0.02, -0.01, 0.003);
+    (*d)[0].omega = Vec3(0.3, -0.2, 0.1);
+    (*d)[0].pivot = Vec3(0.1, 0.02, -0.03);
+  }
+  ContactEngine engine_fast(sim.shapes(), all_owned(bodies), fast);
+  ContactEngine engine_general(sim.shapes(), all_owned(bodies), general);
+  const RotorGroups rotors = group_rotors(bodies);
+  const Vec3 gravity(0, 0, -9.807);  // m/s^2
+  const double dt = sim.dt();
+  WallRun out;
+  std::vector<std::uint8_t> was_active;
+  for (int s = 0; s < steps; ++s) {
+    start_step(bodies, 0.5 * dt, dt, rotors, gravity);
+    Bodies copy = bodies;  // the general engine's forces go to a copy: the run follows the fast one
+    engine_fast.compute(all_owned(bodies), drivers_fast, dt);
+    engine_general.compute(all_owned(copy), drivers_general, dt);
+    const PairList& walls = engine_fast.driver_pairs();
+    out.mismatches += wall_pair_mismatches(walls, engine_general.driver_pairs());
+    for (std::uint16_t t : walls.touching) out.wall_contacts += t;
+    if (was_active.size() == walls.active.size())
+      for (std::size_t k = 0; k < walls.active.size(); ++k) {
+        out.starts += walls.active[k] && !was_active[k];
+        out.ends += !walls.active[k] && was_active[k];
+      }
+    was_active = walls.active;
+    kick(bodies, 0.5 * dt, rotors);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("contact: the sphere-wall kernel gives the general path's bits", "[contact][sphere]") {
+  struct Case {
+    const char* name;
+    ContactParams config;
+    bool exact_step;
+  };
+  ContactParams dashpot = law(1e5, 0.5, 0.4, 0.8e5);
+  dashpot.damp_tangential = 0.2;
+  ContactParams rolling = law(1e5, 0.3, 0.5, 0.8e5);
+  rolling.kr = 1e-3;
+  rolling.mur = 0.1;
+  rolling.fc = 0.05;
+  rolling.dncut = 2e-4;
+  ContactParams contact_mass = law(1e5, 0.5, 0.4, 0.8e5);
+  contact_mass.damping_contact_mass = true;
+  ContactParams hertz = law(0.0, 0.5, 0.4);
+  hertz.hertz = true;
+  hertz.young = 5e6;
+  hertz.poisson = 0.3;
+  for (const Case& c : {Case{"linear, exact step", law(1e5, 0.5, 0.4, 0.8e5), true},
+                        Case{"linear, end-of-step dashpot", law(1e5, 0.5, 0.4, 0.8e5), false},
+                        Case{"tangential dashpot", dashpot, true}, Case{"rolling and cohesion", rolling, true},
+                        Case{"damping_mass: contact", contact_mass, true}, Case{"hertz", hertz, false}}) {
+    INFO(c.name);
+    const WallRun r = run_walls(c.config, c.exact_step, 400);
+    CHECK(r.mismatches == 0);
+    CHECK(r.wall_contacts > 2000);  // about 10 wall contacts a step
+    CHECK(r.starts > 10);           // contacts start and end: the hand-over paths run
+    CHECK(r.ends > 10);
+  }
+}
