@@ -49,3 +49,19 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
     }
   }
 }
+
+// The exact step's error model (sim/step_accuracy.cpp, what `polydem check` prints and
+// `accuracy` reads): at each fraction of the critical step, the worst sphere-wall restitution
+// error over en 0.1-0.95 and 16 touch phases. Hidden: a table to paste, not a check
+// (test_accuracy.cpp checks 0.1 and 0.3). `tests_validation "[.accuracy_model]"`.
+TEST_CASE("accuracy: the exact step's error model", "[.accuracy_model]") {
+  for (double fraction : {0.5, 0.4, 0.3, 0.25, 0.2, 0.18, 0.16, 0.15, 0.14, 0.12, 0.1, 0.07, 0.05, 0.03, 0.02, 0.01, 0.005, 0.002}) {
+    double worst = 0.0, worst_en = 0.0;
+    for (double en : {0.1, 0.3, 0.5, 0.7, 0.8, 0.9, 0.95}) {
+      const double e = binary_impact_worst_phase(fraction, en);
+      if (e > worst) worst = e, worst_en = en;
+    }
+    std::printf("{%g, %.3g},  // en %.2f\n", fraction, worst, worst_en);
+    std::fflush(stdout);
+  }
+}
