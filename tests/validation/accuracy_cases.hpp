@@ -60,6 +60,20 @@ inline double binary_impact_worst_phase(double fraction, double en, bool exact =
   return worst;
 }
 
+// The worst over 16 touch phases at `dt: auto` (the exact step's kAutoAccuracy for a sphere).
+inline double binary_impact_at_auto_worst_phase(double en) {
+  double worst = 0.0;
+  for (int k = 0; k < 16; ++k)
+    worst = std::max(worst, sphere_wall_error(
+                                en, true,
+                                [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+                                  scene.simulation.dt.reset();
+                                  scene.simulation.dt = Simulation(scene, lib, specs).dt();  // the step auto took
+                                },
+                                k / 16.0));
+  return worst;
+}
+
 // The same at `dt: auto` with `simulation: accuracy` (the step chosen for that error).
 inline double binary_impact_at_accuracy(double accuracy, double en = kEn) {
   return sphere_wall_error(en, true, [&](Scene& scene, const ShapeLibrary&, const std::vector<BodySpec>&) {
