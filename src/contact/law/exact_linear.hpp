@@ -108,7 +108,6 @@ inline GluedAhead glued_ahead(const LinearStep& step, double m, double dt, doubl
 // release_ahead: at a, the push when the glued arc's next force u_next <= 0; u > 0 the force
 // now (N per unit weight).
 inline double release_ahead(double u, double u_next, double dt) {
-  if (u_next > 0.0) return 0.0;
   const double later = dt * -u_next / (u - u_next);  // s, dt - theta
   return (u - u_next) / dt * later * later * later / (6.0 * dt * dt);
 }
