@@ -93,18 +93,6 @@ RunArgs parse_run_args(const std::vector<std::string>& args, const char* help, b
   return r;
 }
 
-// The printed error's model is the exact step's (sim/step_accuracy.hpp) with `accuracy`, which
-// picks the step from it, or where that step covers every contact: spheres under the linear law.
-bool exact_model(const Simulation& sim) {
-  const Scene& scene = sim.scene();
-  if (scene.simulation.accuracy) return true;
-  if (!scene.simulation.exact_step || scene.forces.contact.config.hertz || scene.forces.contact.config_driver.hertz)
-    return false;
-  for (std::size_t b = 0; b < sim.bodies.size(); ++b)
-    if (!sim.shapes()[sim.bodies.shape[b]].is_sphere()) return false;
-  return sim.bodies.size() > 0;
-}
-
 void print_counts(const Simulation& sim) {
   std::map<std::string, std::pair<std::size_t, double>> per_shape;
   double total = 0.0;
@@ -130,7 +118,7 @@ void print_counts(const Simulation& sim) {
   std::printf("chosen time step:   %.4g s (%.3g x critical)%s\n", t.chosen, t.chosen / t.critical,
               sim.scene().simulation.dt ? "" : (sim.scene().simulation.accuracy ? " [auto, accuracy]" : " [auto]"));
   if (sim.scene().forces.contact.present)
-    std::printf("  %s\n", impact_error_note(t.chosen, t.critical, exact_model(sim)).c_str());
+    std::printf("  %s\n", impact_error_note(t.chosen, t.critical, t.exact).c_str());
   const double steps = sim.scene().simulation.duration / t.chosen;
   std::printf("steps for %.4g s: %.0f\n", sim.scene().simulation.duration, steps);
 }
@@ -138,7 +126,7 @@ void print_counts(const Simulation& sim) {
 // " (expected restitution error ...)" after the dt of the start-up line, "" without a contact law.
 std::string dt_note(const Simulation& sim) {
   if (!sim.scene().forces.contact.present) return "";
-  return " (" + impact_error_note(sim.dt(), sim.time_step().critical, exact_model(sim)) + ")";
+  return " (" + impact_error_note(sim.dt(), sim.time_step().critical, sim.time_step().exact) + ")";
 }
 
 void warn_unsafe_step(const Simulation& sim) {

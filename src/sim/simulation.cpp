@@ -35,6 +35,19 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
   return s;
 }
 
+// Every contact takes the linear law's exact step (contact/law/exact_linear.hpp): the step is
+// on, the laws are linear and damped, and every body is a sphere (its pair mass is its point's).
+bool exact_everywhere(const ContactSettings& cs, const Bodies& bodies, const std::vector<Shape>& shapes,
+                      bool drivers) {
+  auto exact_law = [](const LawParams& law) {
+    return law.exact_step && law.normal == NormalModel::linear && law.alpha_n > 0.0;
+  };
+  if (bodies.size() == 0 || !exact_law(cs.particle) || (drivers && !exact_law(cs.driver))) return false;
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (!shapes[bodies.shape[b]].is_sphere()) return false;
+  return true;
+}
+
 // The line of a given key ("simulation.dt"), else of its block ("simulation"), else 0.
 int scene_line(const Scene& scene, const std::string& key) {
   auto it = scene.key_locs.find(key);
@@ -56,7 +69,8 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_),
-                                    scene.simulation.accuracy);
+                                    scene.simulation.accuracy,
+                                    contacts && exact_everywhere(cs, bodies, library_.shapes, !drivers.empty()));
   if (!contacts && !scene.simulation.dt)
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
                                    "'auto' needs a contact law to estimate the critical step; give a number"));

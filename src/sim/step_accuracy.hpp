@@ -2,7 +2,8 @@
 // The restitution error of a single impact against the time step, and the step for a target
 // error (simulation: accuracy). The model: the sphere-wall columns of tools/bench/accuracy,
 // interpolated in log-log: for the end-of-step dashpot at e9b1677 (en 0.5); for the linear
-// law's exact step (spheres; `accuracy` reads it), the worst of en 0.1, 0.5, 0.9 at b7f7c1c (README).
+// law's exact step (spheres; `accuracy` and `dt: auto` read it), the worst of en 0.1-0.95 and
+// of the touch's place in its step (README).
 
 #include <string>
 
@@ -11,6 +12,15 @@ namespace polydem {
 // Relative restitution error expected at dt = fraction x critical; slope 2 below the smallest
 // measured fraction (the observed order), infinity above the largest.
 double expected_restitution_error(double fraction, bool exact = false);
+
+// The restitution error `dt: auto` keeps where every contact takes the exact step (spheres
+// under a damped linear law): 0.1%, 0.18 x critical by the exact step's model (0.1 x before
+// issue 16's last step; dense beds checked there: README "dt: auto").
+constexpr double kAutoAccuracy = 1e-3;
+
+// The fraction of the critical step `dt: auto` takes: accuracy_fraction(kAutoAccuracy) where
+// every contact takes the exact step, else kAutoFraction (sim/time_step.hpp).
+double auto_fraction(bool exact);
 
 // The largest fraction of the critical step (at most kUnsafeFraction) whose expected error is
 // within `accuracy`, by the exact step's model.

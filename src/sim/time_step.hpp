@@ -23,6 +23,7 @@ struct TimeStepEstimate {
   StepMode mode = StepMode::kNormal;
   double impact_speed = 0.0;  // m/s, the fastest impact expected (expected_impact_speed)
   double kn_particle = 0.0, kn_driver = 0.0;  // N/m, normal stiffness the limits took (Hertz: at that impact)
+  bool exact = false;  // the expected error is the exact step's model (step_accuracy.hpp): every contact takes it, or `accuracy`
 };
 
 // m/s, the fastest impact a scene expects, for laws whose stiffness grows with the overlap
@@ -34,9 +35,10 @@ double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& sha
                              const Vec3& gravity);
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
-// heavier contacts; a single impact's restitution is then 0.1-0.25% off (tools/bench/accuracy;
-// simulation: accuracy picks another fraction, sim/step_accuracy.hpp). A given step above
-// kUnsafeFraction draws a warning, and `accuracy` never picks more.
+// heavier contacts; a single impact's restitution is then 0.1-0.25% off (tools/bench/accuracy).
+// Where every contact takes the linear law's exact step, `dt: auto` takes the step of
+// kAutoAccuracy instead, and simulation: accuracy picks another fraction (sim/step_accuracy.hpp).
+// A given step above kUnsafeFraction draws a warning, and `accuracy` never picks more.
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;
 
@@ -45,11 +47,12 @@ constexpr double kUnsafeFraction = 0.3;
 // contact point of any body; pairs of bodies halve it, a driver does not. Each law's normal
 // part gives its stiffness at an impact at `impact_speed` (m/s; two bodies close at twice it).
 // The step: given_dt, else the fraction of the limit whose expected restitution error is
-// within `accuracy` (accuracy_fraction), else kAutoFraction of the limit.
+// within `accuracy` (accuracy_fraction), else auto_fraction(exact) of the limit; `exact`: every
+// contact takes the linear law's exact step.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt, double impact_speed = kMinImpactSpeed,
-                                    std::optional<double> accuracy = std::nullopt);
+                                    std::optional<double> accuracy = std::nullopt, bool exact = false);
 
 // A warning line ("" when none) for a given step above kUnsafeFraction of the critical one.
 std::string unsafe_step_warning(const TimeStepEstimate& t);

@@ -1,6 +1,7 @@
 // The step for a target restitution error (simulation: accuracy, sim/step_accuracy.cpp): the
 // model reproduces the sphere-wall errors measured in tools/bench/accuracy/results.csv, grows
-// with the step, and inverts; `dt: auto` without it keeps kAutoFraction.
+// with the step, and inverts; `dt: auto` without it takes kAutoAccuracy's step where every
+// contact takes the exact step, else kAutoFraction.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -25,12 +26,19 @@ TEST_CASE("step accuracy: the model passes through the measured sphere-wall erro
   CHECK(std::isinf(expected_restitution_error(0.6)));
 }
 
-TEST_CASE("step accuracy: with the exact step, the worst sphere-wall errors of en 0.1, 0.5, 0.9", "[step_accuracy]") {
-  // tools/bench/accuracy/results.csv, exact step: binary impact en 0.1, 0.5, 0.9 at b7f7c1c.
-  CHECK(expected_restitution_error(0.1, true) == Approx(4.9e-05).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.3, true) == Approx(2.99e-03).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.001, true) == Approx(3.0e-10 / 4).epsilon(1e-9));
-  CHECK(impact_error_note(1e-6, 1e-5, true) == "expected restitution error of an impact at this step: 4.9e-05 (0.1 x critical)");
+TEST_CASE("step accuracy: with the exact step, the worst sphere-wall errors of en 0.1-0.95 and the touch's phase", "[step_accuracy]") {
+  // tests/validation/accuracy_sweep.cpp "[.accuracy_model]": the exact step's worst error.
+  CHECK(expected_restitution_error(0.1, true) == Approx(1.65e-04).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.3, true) == Approx(4.92e-03).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.001, true) == Approx(1.27e-09 / 4).epsilon(1e-9));
+  CHECK(impact_error_note(1e-6, 1e-5, true) == "expected restitution error of an impact at this step: 1.6e-04 (0.1 x critical)");
+}
+
+TEST_CASE("step accuracy: dt: auto keeps 1e-3 where every contact takes the exact step, 0.1 x critical elsewhere", "[step_accuracy]") {
+  const double f = auto_fraction(true);
+  CHECK(expected_restitution_error(f, true) == Approx(kAutoAccuracy).epsilon(1e-9));
+  CHECK(f == Approx(0.18 * std::pow(0.2 / 0.18, std::log(1e-3 / 0.000978) / std::log(0.00145 / 0.000978))).epsilon(1e-9));
+  CHECK(auto_fraction(false) == kAutoFraction);
 }
 
 TEST_CASE("step accuracy: error grows with the step and the fraction inverts it", "[step_accuracy]") {
@@ -51,7 +59,7 @@ TEST_CASE("step accuracy: error grows with the step and the fraction inverts it"
     if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, true) == Approx(a).epsilon(1e-9));
     previous_fraction = f;
   }
-  CHECK(accuracy_fraction(4.9e-05) == Approx(0.1).epsilon(1e-9));  // accuracy turns on the exact step
+  CHECK(accuracy_fraction(1.65e-04) == Approx(0.1).epsilon(1e-9));
   CHECK(accuracy_fraction(0.1) == kUnsafeFraction);  // beyond 0.3 x critical: capped
 }
 

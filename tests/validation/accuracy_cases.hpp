@@ -21,14 +21,17 @@ inline double critical_step(const Scene& scene, const ShapeLibrary& lib, const s
 }
 
 // Sphere on a wall at 0.5 m/s, the step set by `step(scene, lib, specs)`, with the linear law's
-// exact step (what simulation: accuracy turns on) or not: error of the restitution.
+// exact step (the spheres' default) or not: error of the restitution. `phase` in [0, 1): where
+// in its step the touch falls (the start gap is that share of the stroke 0.5 m/s x dt, plus
+// 1 nm); negative: a gap of 0.1 um (the sweep's one start).
 template <class SetStep>
-double sphere_wall_error(double en, bool exact, const SetStep& step) {
+double sphere_wall_error(double en, bool exact, const SetStep& step, double phase = -1.0) {
   Scene scene = base_scene(law(kKn, en), true);
   scene.simulation.exact_step = exact;
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
-  const std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -0.5})};
+  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -0.5})};
   step(scene, lib, specs);
+  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * 0.5 * *scene.simulation.dt;
   Simulation sim(scene, lib, specs);
   const MeasuredImpact r = run_impact(
       sim, 0.5, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
@@ -41,6 +44,34 @@ inline double binary_impact(double fraction, double en = kEn, bool exact = false
   return sphere_wall_error(en, exact, [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
     scene.simulation.dt = fraction * critical_step(scene, lib, specs);
   });
+}
+
+// The largest error over `phases` touch phases spread over the step (sphere_wall_error): a bed's
+// impacts touch anywhere in a step.
+inline double binary_impact_worst_phase(double fraction, double en, bool exact = true, int phases = 16) {
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k)
+    worst = std::max(worst, sphere_wall_error(
+                                en, exact,
+                                [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+                                  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+                                },
+                                double(k) / phases));
+  return worst;
+}
+
+// The worst over 16 touch phases at `dt: auto` (the exact step's kAutoAccuracy for a sphere).
+inline double binary_impact_at_auto_worst_phase(double en) {
+  double worst = 0.0;
+  for (int k = 0; k < 16; ++k)
+    worst = std::max(worst, sphere_wall_error(
+                                en, true,
+                                [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+                                  scene.simulation.dt.reset();
+                                  scene.simulation.dt = Simulation(scene, lib, specs).dt();  // the step auto took
+                                },
+                                k / 16.0));
+  return worst;
 }
 
 // The same at `dt: auto` with `simulation: accuracy` (the step chosen for that error).

@@ -94,13 +94,20 @@ inline double exact_onset_force(double kn, double zeta, double m, double dt, dou
 // along a line of slope -g (N/s): the arc lies below its tangent line by g (theta - t)^3/(6m)
 // before theta and the free flight is that line after it. Exact samples then need, beyond the
 // glued arc's force, g (dt - theta)^3/(6 dt^2) at a and g theta^3/(6 dt^2) at a + 1 (N).
-// release_ahead: at a, when the glued arc's next force u_next (from x(a+1) it predicts, with
-// overlap x (m), rate r = -vn (m/s) and load f_rest now) is <= 0; u > 0 the force now (N per
-// unit weight).
-inline double release_ahead(const LinearStep& step, double m, double dt, double x, double r, double u, double f_rest) {
+// At a, the glued arc one step ahead: overlap x (m) and force u (N per unit weight) at a + 1,
+// from overlap x, rate r = -vn (m/s), force u and load f_rest now (N per unit weight).
+struct GluedAhead {
+  double x, u;  // m, N
+};
+inline GluedAhead glued_ahead(const LinearStep& step, double m, double dt, double x, double r, double u,
+                              double f_rest) {
   const double r_next = r + (f_rest - u) * dt / m;  // m/s
-  const double u_next = step.force(x + r_next * dt, r_next, f_rest);  // N
-  if (u_next > 0.0) return 0.0;
+  const double x_next = x + r_next * dt;            // m
+  return {x_next, step.force(x_next, r_next, f_rest)};
+}
+// release_ahead: at a, the push when the glued arc's next force u_next <= 0; u > 0 the force
+// now (N per unit weight).
+inline double release_ahead(double u, double u_next, double dt) {
   const double later = dt * -u_next / (u - u_next);  // s, dt - theta
   return (u - u_next) / dt * later * later * later / (6.0 * dt * dt);
 }

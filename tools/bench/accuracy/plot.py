@@ -2,9 +2,11 @@
 
 usage: plot.py results.csv out.png [reference.csv]
 Also prints, per case, the largest time-step fraction from which every smaller one is below
-1% and 0.1% error. A reference CSV (an earlier commit's run) is drawn dashed in the same colours.
+1% and 0.1% error, the observed order between neighbouring steps, and against the reference
+the wall time at which the error first reaches 1e-3. A reference CSV (an earlier commit's run) is drawn dashed in the same colours.
 """
 import csv
+import math
 import sys
 
 import matplotlib
@@ -26,6 +28,24 @@ def read(path):
     return cases, commit
 
 
+def at_error(runs, target):
+    """(dt fraction, wall time per run) where the error first falls to target from the largest
+    step down (log-log between the two runs around it), or None."""
+    runs = sorted(runs, reverse=True)  # largest step first
+    for (f0, w0, e0), (f1, w1, e1) in zip(runs, runs[1:]):
+        if e0 > target >= e1 and e1 > 0:
+            t = math.log(target / e0) / math.log(e1 / e0)
+            return f0 * (f1 / f0) ** t, w0 * (w1 / w0) ** t
+    return runs[0][:2] if runs and runs[0][2] <= target else None
+
+
+def orders(runs):
+    """Observed order between neighbouring steps, largest first, down to an error of 1e-5."""
+    runs = sorted(runs, reverse=True)
+    return [(f0, math.log(e0 / e1) / math.log(f0 / f1)) for (f0, _, e0), (f1, _, e1) in zip(runs, runs[1:])
+            if e0 > 0 and e1 > 1e-5]
+
+
 def main(path, png, reference=None):
     cases, commit = read(path)
     fig, ax = plt.subplots(figsize=(7, 5))
@@ -38,8 +58,15 @@ def main(path, png, reference=None):
         for target in (1e-2, 1e-3):
             ok = [f for f, _, _ in runs if all(e <= target for g, _, e in runs if g <= f)]
             print(f"{name}: error <= {target:g} for dt/critical <= {max(ok) if ok else 'none'}")
+        print(f"{name}: order " + " ".join(f"{f:g}:{o:.1f}" for f, o in orders(runs)))
     if reference:
         old, old_commit = read(reference)
+        for name in old.keys() & cases.keys():
+            new, before = at_error(cases[name], 1e-3), at_error(old[name], 1e-3)
+            if new and before:
+                print(f"{name}: at 1e-3 error, dt/critical {before[0]:.3g} at {old_commit} -> {new[0]:.3g} "
+                      f"({new[0] / before[0]:.1f}x fewer steps), wall time {before[1]:.3g} s -> {new[1]:.3g} s "
+                      f"({before[1] / new[1]:.1f}x less)")
         for name, runs in old.items():
             ax.loglog([r[1] for r in runs], [max(r[2], 1e-9) for r in runs], "x--", lw=0.8, ms=4,
                       color=colours.get(name, "grey"), label=f"{name} ({old_commit})")
