@@ -7,6 +7,17 @@
 
 namespace polydem::test {
 
+// The four side walls of a 9 cm box, named "side".
+inline void add_side_walls(Scene& scene) {
+  for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
+                               {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
+    DriverSettings d;
+    d.name = "side";
+    d.kind = WallSettings{point, normal};
+    scene.drivers.push_back(d);
+  }
+}
+
 // 150 cubes and spheres packed close with random velocities and fast spins in a walled box.
 struct Pile {
   Scene scene = base_scene(law(1e5, 0.5, 0.4, 1e5), true, Vec3(0, 0, -9.807));
@@ -14,13 +25,7 @@ struct Pile {
   std::vector<BodySpec> specs;
   explicit Pile(double damp_tangential = 0.0) {
     scene.forces.contact.config.damp_tangential = scene.forces.contact.config_driver.damp_tangential = damp_tangential;
-    for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
-                                 {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
-      DriverSettings d;
-      d.name = "side";
-      d.kind = WallSettings{point, normal};
-      scene.drivers.push_back(d);
-    }
+    add_side_walls(scene);
     std::mt19937_64 rng(7);
     auto u = [&] { return double(rng() >> 11) * 0x1.0p-53 - 0.5; };
     for (int k = 0; k < 150; ++k) {  // a 5 x 5 x 6 lattice, bounding spheres 1 mm apart, moving into each other

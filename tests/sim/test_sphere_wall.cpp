@@ -10,6 +10,7 @@
 
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
+#include "pile.hpp"
 #include "sim_fixtures.hpp"
 
 using namespace polydem;
@@ -51,13 +52,7 @@ struct WallRun {
 WallRun run_walls(const ContactParams& config, bool exact_step, int steps) {
   Scene scene = base_scene(config, true, Vec3(0, 0, -9.807));
   scene.simulation.exact_step = exact_step;
-  for (auto [point, normal] : {std::pair{Vec3(-0.045, 0, 0), Vec3(1, 0, 0)}, {Vec3(0.045, 0, 0), Vec3(-1, 0, 0)},
-                               {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
-    DriverSettings d;
-    d.name = "side";
-    d.kind = WallSettings{point, normal};
-    scene.drivers.push_back(d);
-  }
+  add_side_walls(scene);
   ShapeLibrary lib = library({sphere_shape(0.005)});
   std::vector<BodySpec> specs;
   std::mt19937_64 rng(11);
