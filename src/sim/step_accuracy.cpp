@@ -82,18 +82,19 @@ double expected_restitution_error(double fraction, bool exact) {
   return std::numeric_limits<double>::infinity();
 }
 
-double accuracy_fraction(double accuracy) {
-  const Point& first = kExactSphereWall.front();
+double accuracy_fraction(double accuracy, bool exact) {
+  const std::span<const Point> table = sphere_wall(exact);
+  const Point& first = table.front();
   if (accuracy <= first.error) return first.fraction * std::sqrt(accuracy / first.error);
-  for (std::size_t k = 1; k < kExactSphereWall.size(); ++k) {
-    const Point &a = kExactSphereWall[k - 1], &b = kExactSphereWall[k];
+  for (std::size_t k = 1; k < table.size(); ++k) {
+    const Point &a = table[k - 1], &b = table[k];
     if (b.fraction > kUnsafeFraction) break;
     if (accuracy <= b.error) return log_line(a.error, a.fraction, b.error, b.fraction, accuracy);
   }
   return kUnsafeFraction;
 }
 
-double auto_fraction(bool exact) { return exact ? accuracy_fraction(kAutoAccuracy) : kAutoFraction; }
+double auto_fraction(bool exact) { return exact ? accuracy_fraction(kAutoAccuracy, true) : kAutoFraction; }
 
 std::string impact_error_note(double dt, double critical, bool exact) {
   if (!std::isfinite(critical) || !(critical > 0.0)) return "";

@@ -140,11 +140,11 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
   e.critical = limit.dt;
   e.critical_normal = normal.dt;
   e.mode = limit.mode;
-  e.exact = exact || accuracy.has_value();
+  e.exact = exact;
   if (given_dt)
     e.chosen = *given_dt;
   else
-    e.chosen = (accuracy ? accuracy_fraction(*accuracy) : auto_fraction(exact)) * limit.dt;
+    e.chosen = (accuracy ? accuracy_fraction(*accuracy, exact) : auto_fraction(exact)) * limit.dt;
   return e;
 }
 

@@ -19,12 +19,13 @@ expect_exit 1 "seed" "$polydem" check "$tmp/bad.yaml"
 
 expect_exit 0 "critical time step" "$polydem" check "$here/drop.yaml"
 # dt: auto is 0.1 x critical for polyhedra, its expected restitution error 1.9e-3
-# (sim/step_accuracy.cpp); accuracy: 1e-3 reads the exact step's model and chooses 0.181 x critical.
+# (sim/step_accuracy.cpp); accuracy: 1e-3 inverts that model: 0.0753 x critical (polyhedra take
+# the end-of-step dashpot, not the spheres' exact step, whose model would give 0.181).
 grep -q "expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: no expected error at dt: auto"; }
 sed "s|^  dt: auto|  dt: auto\n  accuracy: 1e-3|; s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/accuracy.yaml"
-expect_exit 0 "(0.181 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
-grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.181 x critical)" "$tmp/out" \
+expect_exit 0 "(0.0753 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
+grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0753 x critical)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: accuracy 1e-3 not met"; }
 
 # Spheres under the linear law take its exact step: dt: auto is that model's step for 1e-3.

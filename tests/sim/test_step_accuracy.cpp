@@ -51,7 +51,7 @@ TEST_CASE("step accuracy: error grows with the step and the fraction inverts it"
   }
   double previous_fraction = 0.0;
   for (double a = kMinAccuracy; a <= kMaxAccuracy; a *= 1.1) {
-    const double f = accuracy_fraction(a);
+    const double f = accuracy_fraction(a, true);
     INFO("accuracy " << a << ", fraction " << f);
     CHECK(f >= previous_fraction);
     CHECK(f <= kUnsafeFraction);
@@ -59,8 +59,20 @@ TEST_CASE("step accuracy: error grows with the step and the fraction inverts it"
     if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, true) == Approx(a).epsilon(1e-9));
     previous_fraction = f;
   }
-  CHECK(accuracy_fraction(1.65e-04) == Approx(0.1).epsilon(1e-9));
-  CHECK(accuracy_fraction(0.1) == kUnsafeFraction);  // beyond 0.3 x critical: capped
+  CHECK(accuracy_fraction(1.65e-04, true) == Approx(0.1).epsilon(1e-9));
+  CHECK(accuracy_fraction(0.1, true) == kUnsafeFraction);  // beyond 0.3 x critical: capped
+}
+
+// Polyhedra (the pair's mass) take the end-of-step dashpot, 1.9e-3 at 0.1 x critical and 3.7e-4
+// at 0.05 (README): `accuracy` must step them by that model, not by the spheres' exact step.
+TEST_CASE("step accuracy: without the exact step, accuracy inverts the default step's model", "[step_accuracy]") {
+  CHECK(accuracy_fraction(1.9e-3, false) == Approx(0.1).epsilon(0.02));  // README's figures, rounded
+  CHECK(accuracy_fraction(3.7e-4, false) == Approx(0.05).epsilon(0.02));
+  const double f = accuracy_fraction(1e-3, false);
+  CHECK(f > 0.05);
+  CHECK(f < 0.1);
+  CHECK(expected_restitution_error(f) == Approx(1e-3).epsilon(1e-9));
+  CHECK(accuracy_fraction(1e-3, true) > 0.18);  // the exact step allows 2.5 times more
 }
 
 TEST_CASE("step accuracy: the note names the error and the fraction", "[step_accuracy]") {
