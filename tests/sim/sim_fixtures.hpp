@@ -1,6 +1,7 @@
 #pragma once
 // Scenes built in code for the physics tests: shapes, bodies and settings without YAML.
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "io/scene_settings.hpp"
@@ -104,6 +105,13 @@ inline bool run_through_impact(Simulation& sim, int max_steps) {
     touched = touched || sim.engine().stats().contacts > 0;
   }
   return touched;
+}
+
+// Whether two arrays hold the same bytes (bitwise determinism checks).
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(static_cast<const void*>(a.data()), static_cast<const void*>(b.data()),
+                                             a.size() * sizeof(T)) == 0;
 }
 
 }  // namespace polydem::test

@@ -21,12 +21,6 @@ namespace {
 
 constexpr int kThen = 300;  // steps after the checkpoint
 
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(static_cast<const void*>(a.data()), static_cast<const void*>(b.data()),
-                                             a.size() * sizeof(T)) == 0;
-}
-
 void require_same_bodies(const Bodies& a, const Bodies& b) {
   CHECK(same_bits(a.position, b.position));
   CHECK(same_bits(a.orientation, b.orientation));

@@ -16,12 +16,7 @@ using namespace polydem::test;
 
 namespace {
 
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(static_cast<const void*>(a.data()), static_cast<const void*>(b.data()),
-                                             a.size() * sizeof(T)) == 0;
-}
-
+using polydem::test::same_bits;  // the arrays' (sim_fixtures.hpp), beside this one
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 struct Outcome {

@@ -22,7 +22,7 @@ Scene lid_scene(std::optional<double> force, std::optional<double> pressure) {
   Scene scene = base_scene(law(kKn, 0.3, 0.5, kKn), true, Vec3(0, 0, -kG));
   DriverSettings lid;
   lid.name = "lid";
-  lid.kind = WallSettings{{0, 0, 2 * kRadius + 0.001}, -Vec3::UnitZ()};
+  lid.kind = WallSettings{{0, 0, 2 * kRadius + 0.001}, -Vec3::UnitZ(), std::nullopt};
   lid.motion.force = force;
   lid.motion.pressure = pressure;
   if (pressure) lid.motion.area = 0.01;
