@@ -13,7 +13,7 @@ inline void add_side_walls(Scene& scene) {
                                {Vec3(0, -0.045, 0), Vec3(0, 1, 0)}, {Vec3(0, 0.045, 0), Vec3(0, -1, 0)}}) {
     DriverSettings d;
     d.name = "side";
-    d.kind = WallSettings{point, normal};
+    d.kind = WallSettings{point, normal, std::nullopt};
     scene.drivers.push_back(d);
   }
 }
