@@ -15,11 +15,13 @@ namespace {
 constexpr double kIsotropicTolerance = 1e-12;
 
 // Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
-// (an isotropic body keeps its w: it turns about L).
-template <bool kIsotropicPath>
+// (an isotropic body keeps its w: it turns about L; a sphere does not turn its q at all).
+template <Rotor kRotor>
 [[gnu::always_inline]] inline void drift_body(const BodyArrays& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
-  if constexpr (kIsotropicPath) {
+  if constexpr (kRotor == Rotor::sphere) {
+    return;
+  } else if constexpr (kRotor == Rotor::isotropic) {
     // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
     free_rotor::rotate_isotropic(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
     free_rotor::renormalize(b.orientation[i]);
@@ -30,10 +32,10 @@ template <bool kIsotropicPath>
   }
 }
 
-template <bool kIsotropicPath>
+template <Rotor kRotor>
 [[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
   b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
-  if constexpr (kIsotropicPath) {
+  if constexpr (kRotor != Rotor::asymmetric) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
   } else {
     const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
@@ -41,16 +43,20 @@ template <bool kIsotropicPath>
   }
 }
 
-// Runs body(arrays, i, isotropic path) over the bodies of both groups.
+// Runs body(arrays, i, rotor path) over the bodies of the three groups.
 template <class Body>
 void over_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
-  over_group<true>(b, groups.isotropic, body);
-  over_group<false>(b, groups.asymmetric, body);
+  over_group<Rotor::sphere>(b, groups.spheres, body);
+  over_group<Rotor::isotropic>(b, groups.isotropic, body);
+  over_group<Rotor::asymmetric>(b, groups.asymmetric, body);
 }
 
-// Body i into the group of its rotation path.
-void add_rotor(const Bodies& b, std::size_t i, RotorGroups& groups) {
-  (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
+// Body i into the group of its rotation path; shapes null: no sphere path.
+void add_rotor(const Bodies& b, std::size_t i, const std::vector<Shape>* shapes, RotorGroups& groups) {
+  if (shapes && keeps_no_orientation((*shapes)[b.shape[i]], b.inertia[i]))
+    groups.spheres.push_back(i);
+  else
+    (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
 }
 
 }  // namespace
@@ -60,16 +66,34 @@ bool is_isotropic(const Vec3& inertia) {
   return largest - inertia.minCoeff() <= kIsotropicTolerance * largest;
 }
 
+bool keeps_no_orientation(const Shape& shape, const Vec3& inertia) {
+  return shape.is_sphere() && shape.vertices[0] == Vec3::Zero() && is_isotropic(inertia);
+}
+
 RotorGroups group_rotors(const Bodies& b) {
   RotorGroups groups;
-  for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, groups);
+  for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, nullptr, groups);
   return groups;
 }
 
-RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids) {
+RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes) {
   RotorGroups groups;
-  for (std::uint32_t i : ids) add_rotor(b, i, groups);
+  for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, &shapes, groups);
   return groups;
+}
+
+RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids, const std::vector<Shape>& shapes) {
+  RotorGroups groups;
+  for (std::uint32_t i : ids) add_rotor(b, i, &shapes, groups);
+  return groups;
+}
+
+void drop_sphere_orientations(Bodies& b, const RotorGroups& groups) {
+  for (std::size_t i : groups.spheres) {
+    if (b.orientation[i].coeffs() == Quat::Identity().coeffs()) continue;  // exact: -0 stays -0 in L
+    b.angular_momentum[i] = b.orientation[i] * b.angular_momentum[i];
+    b.orientation[i] = Quat::Identity();
+  }
 }
 
 void kick(Bodies& b, double h) {
@@ -87,8 +111,8 @@ void kick(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
-    drift_body<decltype(iso)::value>(a, i, dt);
+  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+    drift_body<decltype(rotor)::value>(a, i, dt);
   });
 }
 
@@ -96,24 +120,24 @@ void drift(Bodies& b, double dt) {
   const BodyArrays a = arrays_of(b);
   parallel_for(b.size(), [&a, dt](std::size_t i) {
     if (is_isotropic(a.inertia[i])) {
-      drift_body<true>(a, i, dt);
+      drift_body<Rotor::isotropic>(a, i, dt);
     } else {
-      drift_body<false>(a, i, dt);
+      drift_body<Rotor::asymmetric>(a, i, dt);
     }
   });
 }
 
 void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
-    predict_body<decltype(iso)::value>(a, i, h);
+  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+    predict_body<decltype(rotor)::value>(a, i, h);
   });
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
-  over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
-    integrate_detail::kick_body<decltype(iso)::value>(a, i, h);
-    drift_body<decltype(iso)::value>(a, i, dt);
-    predict_body<decltype(iso)::value>(a, i, h);  // the last step's force: before it is cleared
+  over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+    integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
+    drift_body<decltype(rotor)::value>(a, i, dt);
+    predict_body<decltype(rotor)::value>(a, i, h);  // the last step's force: before it is cleared
     a.force[i] = a.mass[i] * gravity;
     a.torque[i].setZero();
   });

@@ -10,22 +10,44 @@
 
 #include "polydem/bodies.hpp"
 #include "polydem/parallel.hpp"
+#include "polydem/shape.hpp"
 
 namespace polydem {
 
-// Bodies sorted once by rotation path, so the drift loop never tests inertia per body.
+// A body's rotation path, chosen once: the drift loop never tests inertia per body.
+enum class Rotor {
+  sphere,      // nothing reads its orientation: w alone, q the identity, L in the world frame
+  isotropic,   // Ix == Iy == Iz: one exact rotation per step
+  asymmetric,  // the 3,2,1,2,3 splitting
+};
+
+// Bodies sorted once by rotation path.
 struct RotorGroups {
-  std::vector<std::size_t> isotropic;   // Ix == Iy == Iz: one exact rotation per step
-  std::vector<std::size_t> asymmetric;  // the 3,2,1,2,3 splitting
+  std::vector<std::size_t> spheres;     // Rotor::sphere (only with the shapes known)
+  std::vector<std::size_t> isotropic;   // Rotor::isotropic
+  std::vector<std::size_t> asymmetric;  // Rotor::asymmetric
 };
 
 // True when the principal moments agree within 1e-12 relative (sphere, cube, Platonic solid).
 bool is_isotropic(const Vec3& inertia);
 
-// Recompute whenever inertia changes (bodies added or removed).
+// True for a sphere: one vertex, at the centre of mass, and isotropic inertia. Its orientation
+// moves nothing (R 0 = 0 for its vertex, R I R^T = I), so it is not integrated: it stays the
+// identity, and L (body frame = world frame) is I w (README, "A sphere's orientation").
+bool keeps_no_orientation(const Shape& shape, const Vec3& inertia);
+
+// Recompute whenever inertia changes (bodies added or removed). Without the shapes no body
+// takes Rotor::sphere (every orientation is integrated).
 RotorGroups group_rotors(const Bodies& b);
+RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes);
 // The same for the bodies `ids` alone (a rank's owned bodies), in their order.
-RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids);
+RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids, const std::vector<Shape>& shapes);
+
+// Sets the orientation of groups.spheres to the identity, turning L into the world frame
+// (L_world = q L_body, w unchanged): at the start and after a state is read (checkpoints of
+// polydem before this path kept turning quaternions). Bodies already at the identity keep
+// their bits.
+void drop_sphere_orientations(Bodies& b, const RotorGroups& groups);
 
 // v += F/m h; L_body += R^T torque h (a half kick with h = dt/2 in velocity Verlet).
 void kick(Bodies& b, double h);
@@ -55,9 +77,13 @@ inline BodyArrays arrays_of(Bodies& b) {
           b.force.data(),            b.torque.data(),           b.mass.data(),     b.inertia.data()};
 }
 
-// Runs body(arrays, i, isotropic path) over the bodies of `ids` (one rotor group), each thread
-// of the team on its share with the arrays' addresses in its own registers.
-template <bool kIsotropicPath, class Body>
+// The rotor path as a type: body lambdas take it as `auto rotor` and read decltype(rotor)::value.
+template <Rotor kRotor>
+using RotorPath = std::integral_constant<Rotor, kRotor>;
+
+// Runs body(arrays, i, RotorPath<kRotor>) over the bodies of `ids` (one rotor group), each
+// thread of the team on its share with the arrays' addresses in its own registers.
+template <Rotor kRotor, class Body>
 void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body) {
   const std::size_t n = ids.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
@@ -66,17 +92,22 @@ void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body
     const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) each(a, id[k], std::bool_constant<kIsotropicPath>{});
+    for (std::size_t k = 0; k < n; ++k) each(a, id[k], RotorPath<kRotor>{});
   });
 }
 
 namespace integrate_detail {
-// v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame).
-// Inlined into the step's passes: a call per body and pass cost ~10% of a kick.
-template <bool kIsotropicPath>
+// v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame;
+// a sphere: R the identity). Inlined into the step's passes: a call per body and pass cost ~10%
+// of a kick.
+template <Rotor kRotor>
 [[gnu::always_inline]] inline void kick_body(const BodyArrays& b, std::size_t i, double h) {
   b.velocity[i] += b.force[i] * (h / b.mass[i]);
-  if constexpr (kIsotropicPath) {
+  if constexpr (kRotor == Rotor::sphere) {
+    const Vec3 dl = b.torque[i] * h;  // N m s, world frame = body frame
+    b.angular_momentum[i] += dl;
+    b.angular_velocity[i] += dl / b.inertia[i].x();
+  } else if constexpr (kRotor == Rotor::isotropic) {
     const Vec3 dl = b.torque[i] * h;  // N m s, world frame
     b.angular_momentum[i] += b.orientation[i].conjugate() * dl;
     b.angular_velocity[i] += dl / b.inertia[i].x();
@@ -91,12 +122,13 @@ template <bool kIsotropicPath>
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
 template <class Before>
 void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before) {
-  auto one = [h, before](const BodyArrays& a, std::size_t i, auto iso) __attribute__((always_inline)) {
+  auto one = [h, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
-    integrate_detail::kick_body<decltype(iso)::value>(a, i, h);
+    integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
   };
-  over_group<true>(b, groups.isotropic, one);
-  over_group<false>(b, groups.asymmetric, one);
+  over_group<Rotor::sphere>(b, groups.spheres, one);
+  over_group<Rotor::isotropic>(b, groups.isotropic, one);
+  over_group<Rotor::asymmetric>(b, groups.asymmetric, one);
 }
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).

@@ -118,6 +118,7 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   check_state(r, sim);
   read_active(r, sim.engine().body_pairs(), n, n, false);
   read_active(r, sim.engine().driver_pairs(), n, sim.drivers.size(), true);
+  sim.drop_sphere_orientations();  // files of older builds turned them
   sim.force_rebuild();
   read_progress(r, progress);
   if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the checkpoint");

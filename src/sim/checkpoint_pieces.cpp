@@ -220,6 +220,7 @@ void read_checkpoint_pieces(const std::string& path, const std::string& bytes, S
   check_state(r, sim);
   sim.engine().body_pairs() = checkpoint_list(std::move(into.body));
   sim.engine().driver_pairs() = checkpoint_list(std::move(into.driver));
+  sim.drop_sphere_orientations();  // files of older builds turned them
   sim.force_rebuild();
 }
 

@@ -52,7 +52,7 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
   local_of_.assign(bodies.size(), -1);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
-  owned_rotors_ = group_rotors(bodies, plan_.owned);
+  owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
   store_.select(bodies, plan_.local, plan_.ghost);
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(whole.body_pairs(), local_of_, false);  // handed over by the rebuild

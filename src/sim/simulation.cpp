@@ -61,11 +61,12 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
                        const RankLink* link)
     : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library), link_(link) {
   std::vector<BodySpec>().swap(specs);
+  rotors_ = group_rotors(bodies, library_.shapes);
+  drop_sphere_orientations();  // before anything copies the bodies (a rank's store)
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
   if (link && link->ranks() > 1) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
-  rotors_ = group_rotors(bodies);
   const bool contacts = scene.forces.contact.present;
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_),

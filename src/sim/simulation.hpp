@@ -71,6 +71,9 @@ class Simulation {
   // engine()'s lists were gathered to rank 0 only (a checkpoint written by a distributed run:
   // the ranks rebuild from their own lists then).
   void force_rebuild(bool table_on_every_rank = true);
+  // After a state is read: spheres take the identity orientation, their L folded into the
+  // world frame (checkpoints written before Rotor::sphere turned them; integrate.hpp).
+  void drop_sphere_orientations() { polydem::drop_sphere_orientations(bodies, rotors_); }
 
   // Distributed runs: `bodies` holds every body's state and engine() every rank's contacts
   // (global ids) only after gather_state(), a collective, called before output, checkpoints and
@@ -99,7 +102,7 @@ class Simulation {
   Scene scene_;
   ShapeLibrary library_;
   std::unique_ptr<ContactEngine> engine_;
-  RotorGroups rotors_;           // isotropic bodies take the exact one-rotation path
+  RotorGroups rotors_;           // spheres turn no orientation, isotropic bodies take one rotation
   TimeStepEstimate dt_estimate_;
   double dt_ = 0.0;
   std::int64_t step_ = 0;

@@ -1,0 +1,130 @@
+// Rotor::sphere: a sphere's orientation moves nothing, so it is not integrated. Its position,
+// velocities and predicted velocities must be the isotropic path's bits, its L the same world
+// angular momentum, and only spheres (one vertex at the centre, isotropic inertia) take it.
+#include <catch2/catch.hpp>
+
+#include <omp.h>
+
+#include <cstring>
+#include <random>
+
+#include "integrate/integrate.hpp"
+#include "polydem/parallel.hpp"
+
+using namespace polydem;
+
+namespace {
+
+// Shape 0 a sphere, shape 1 one vertex off the centre of mass (its orientation moves it).
+std::vector<Shape> shapes() {
+  Shape off = sphere_shape("off-centre", 0.01);
+  off.vertices = {Vec3(1e-3, 0.0, 0.0)};
+  return {sphere_shape("ball", 0.01), off};
+}
+
+// Bodies i % 3: 0 a sphere, 1 the off-centre point (isotropic), 2 the sphere's shape with
+// unequal moments (asymmetric); random state.
+Bodies mixed_bodies(std::size_t n) {
+  Bodies b;
+  b.resize(n);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  for (std::size_t i = 0; i < n; ++i) {
+    b.shape[i] = i % 3 == 1 ? 1 : 0;
+    b.position[i] = vec();
+    b.orientation[i] = Quat(1.0 + u(rng), u(rng), u(rng), u(rng)).normalized();
+    b.velocity[i] = vec();
+    b.mass[i] = 1.5 + u(rng);                                                  // kg
+    b.inertia[i] = i % 3 == 2 ? Vec3(1e-3, 2e-3, 3e-3) : Vec3::Constant(2e-3);  // kg m^2
+    set_angular_velocity(b, i, 10.0 * vec());
+  }
+  return b;
+}
+
+// Forces and torques from the step and the body only (N, N m).
+void loads(Bodies& b, int step) {
+  std::mt19937_64 rng(100 + step);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    b.force[i] += Vec3(u(rng), u(rng), u(rng));
+    b.torque[i] = 1e-3 * Vec3(u(rng), u(rng), u(rng));
+  }
+}
+
+bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+}
+
+void run(Bodies& b, const RotorGroups& groups, int steps) {
+  const double dt = 1e-4, h = 0.5 * dt;  // s
+  const Vec3 gravity(0.0, 0.0, -9.807);  // m/s^2
+  for (int s = 0; s < steps; ++s) {
+    in_team(true, [&] { start_step(b, h, dt, groups, gravity); });
+    loads(b, s);
+    in_team(true, [&] { kick(b, h, groups); });
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a sphere turns no quaternion: the isotropic path's x, v and w bits, the same world L, at 1 and 2 threads",
+          "[integrate]") {
+  const std::size_t n = 3 * kParallelMinItems;  // enough for a team
+  Bodies start = mixed_bodies(n);
+  const RotorGroups groups = group_rotors(start, shapes());
+  REQUIRE(groups.spheres.size() == n / 3);
+  REQUIRE(groups.isotropic.size() == n / 3);  // the off-centre point keeps its orientation
+  REQUIRE(groups.asymmetric.size() == n / 3);
+  for (std::size_t k = 0; k < groups.spheres.size(); ++k) CHECK(groups.spheres[k] == 3 * k);
+  drop_sphere_orientations(start, groups);
+  Bodies turned = start;  // the reference: every isotropic body on the isotropic path
+  run(turned, group_rotors(turned), 200);
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    Bodies b = start;
+    run(b, groups, 200);
+    CHECK(same_bits(b.position, turned.position));
+    CHECK(same_bits(b.velocity, turned.velocity));
+    CHECK(same_bits(b.angular_velocity, turned.angular_velocity));
+    CHECK(same_bits(b.velocity_end, turned.velocity_end));
+    CHECK(same_bits(b.angular_velocity_end, turned.angular_velocity_end));
+    double worst = 0.0;  // relative, world L against the turned reference's R L_body
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i % 3 != 0) {  // not spheres: the same path, the same bits
+        CHECK(b.orientation[i].coeffs() == turned.orientation[i].coeffs());
+        CHECK(b.angular_momentum[i] == turned.angular_momentum[i]);
+        continue;
+      }
+      CHECK(b.orientation[i].coeffs() == Quat::Identity().coeffs());
+      CHECK(turned.orientation[i].angularDistance(Quat::Identity()) > 1e-3);  // the reference did turn
+      const Vec3 world = turned.orientation[i] * turned.angular_momentum[i];  // kg m^2/s
+      worst = std::max(worst, (b.angular_momentum[i] - world).norm() / world.norm());
+      worst = std::max(worst, (b.angular_momentum[i] - b.inertia[i].x() * b.angular_velocity[i]).norm() / world.norm());
+    }
+    CHECK(worst < 1e-13);  // round-off of 200 steps' sums
+  }
+  omp_set_num_threads(1);
+}
+
+TEST_CASE("drop_sphere_orientations folds L into the world frame and keeps identity states bit for bit", "[integrate]") {
+  Bodies b = mixed_bodies(6);
+  const RotorGroups groups = group_rotors(b, shapes());
+  b.angular_momentum[3] = Vec3(-0.0, 2e-3, -1e-3);  // a sphere already at the identity, with a signed zero
+  b.orientation[3] = Quat::Identity();
+  const Bodies before = b;
+  drop_sphere_orientations(b, groups);
+  const Vec3 world0 = before.orientation[0] * before.angular_momentum[0];
+  CHECK(b.orientation[0].coeffs() == Quat::Identity().coeffs());
+  CHECK((b.angular_momentum[0] - world0).norm() < 1e-15 * world0.norm());
+  CHECK(std::signbit(b.angular_momentum[3].x()));  // untouched
+  CHECK(b.angular_momentum[3] == before.angular_momentum[3]);
+  CHECK(b.angular_velocity == before.angular_velocity);  // w is a world vector: unchanged
+  for (std::size_t i : {1, 2, 4, 5}) {  // not spheres
+    CHECK(b.orientation[i].coeffs() == before.orientation[i].coeffs());
+    CHECK(b.angular_momentum[i] == before.angular_momentum[i]);
+  }
+  // The rotational energy 0.5 L.L / I (simulation.cpp) is the same before and after.
+  const double e0 = 0.5 * before.angular_momentum[0].squaredNorm() / before.inertia[0].x();  // J
+  CHECK(0.5 * b.angular_momentum[0].squaredNorm() / b.inertia[0].x() == Approx(e0).epsilon(1e-15));
+}
