@@ -108,8 +108,10 @@ std::uint64_t mark_beyond(const PosedBody& body, const PosedBody& other, const V
 }
 
 // Fills `near` with the features of `body` that reach at least `floor` towards the other body
-// (the slab test) and lie closer than `reach` to its centre `centre` (the sphere test; for a
-// face, its plane: the polygon's distance cost more than the pairs it spared), in index order.
+// (the slab test), lie beyond none of the other's face planes (near.beyond) and, for vertices
+// and faces, closer than `reach` to its centre `centre` (the sphere test; for a face, its plane:
+// the polygon's distance cost more than the pairs it spared), in index order. Edges take no
+// sphere test: after the plane test it cost more than the pairs it spared (the pour -0.9%).
 // The slab test is cheap and runs first.
 void collect_near(const PosedBody& body, const Vec3& centre, double reach, double floor, NearFeatures& near) {
   const Shape& s = *body.shape;
@@ -133,12 +135,10 @@ void collect_near(const PosedBody& body, const Vec3& centre, double reach, doubl
     const double edge_reach = std::max(proj[s.edges[i][0]], proj[s.edges[i][1]]);
     if (edge_reach < floor || (beyond[s.edges[i][0]] & beyond[s.edges[i][1]])) continue;
     const Vec3& p0 = body.vertices[s.edges[i][0]];
-    if (point_segment_distance_sq(centre, p0, body.vertices[s.edges[i][1]] - p0) < reach2) {
-      near.edges.push_back(static_cast<std::uint16_t>(i));
-      near.edge_reach.push_back(edge_reach);
-      const Vec3& p1 = body.vertices[s.edges[i][1]];
-      near.edge_box.push_back({p0.cwiseMin(p1), p0.cwiseMax(p1)});
-    }
+    const Vec3& p1 = body.vertices[s.edges[i][1]];
+    near.edges.push_back(static_cast<std::uint16_t>(i));
+    near.edge_reach.push_back(edge_reach);
+    near.edge_box.push_back({p0.cwiseMin(p1), p0.cwiseMax(p1)});
   }
   for (std::size_t i = 0; i < s.faces.size(); ++i) {
     double face_reach = -std::numeric_limits<double>::infinity();
