@@ -1,4 +1,4 @@
-// Feature-pair candidates for the Verlet lists, the brute-force reference, and vertex posing.
+// Feature-pair candidates for the Verlet lists, and vertex posing.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -84,8 +84,9 @@ void project(const PosedBody& body, const Vec3& u, NearFeatures& near) {
 // other body's faces that look towards it (`towards`: unit, from the other's centre to body's).
 // A feature whose vertices all lie beyond one plane by more than `limit` is at least that far
 // from a convex core, which lies behind every face plane: the exact distances would drop all
-// its pairs. On the settled cube pile it takes the search from 268e6 to 231e6 instructions in
-// 5 rebuilds (README, Benchmarks). Faces of a non-convex or open body bound nothing: no bits.
+// its pairs. With the early end below, the settled cube pile's search went from 268e6 to 223e6
+// instructions in 5 rebuilds (README, Benchmarks). Faces of a non-convex or open body bound
+// nothing: no bits.
 // Returns the planes the whole body lies beyond (a separating plane: no candidate at all).
 std::uint64_t mark_beyond(const PosedBody& body, const PosedBody& other, const Vec3& towards, double limit,
                           NearFeatures& near) {
@@ -111,7 +112,7 @@ std::uint64_t mark_beyond(const PosedBody& body, const PosedBody& other, const V
 // (the slab test), lie beyond none of the other's face planes (near.beyond) and, for vertices
 // and faces, closer than `reach` to its centre `centre` (the sphere test; for a face, its plane:
 // the polygon's distance cost more than the pairs it spared), in index order. Edges take no
-// sphere test: after the plane test it cost more than the pairs it spared (the pour -0.9%).
+// sphere test: after the plane test it cost more than the pairs it spared (a cube pour: 1.0%).
 // The slab test is cheap and runs first.
 void collect_near(const PosedBody& body, const Vec3& centre, double reach, double floor, NearFeatures& near) {
   const Shape& s = *body.shape;
@@ -253,23 +254,6 @@ void append_edge_edge(const PosedBody& A, const PosedBody& B, const NearFeatures
   }
 }
 
-template <typename Visit>
-void for_each_feature_pair(const Shape& a, const Shape& b, Visit visit) {
-  const auto nva = a.vertices.size(), nvb = b.vertices.size();
-  for (std::size_t i = 0; i < nva; ++i)
-    for (std::size_t j = 0; j < nvb; ++j) visit(PairType::vertex_vertex, i, j);
-  for (std::size_t i = 0; i < nva; ++i)
-    for (std::size_t j = 0; j < b.edges.size(); ++j) visit(PairType::vertex_edge, i, j);
-  for (std::size_t i = 0; i < a.edges.size(); ++i)
-    for (std::size_t j = 0; j < nvb; ++j) visit(PairType::edge_vertex, i, j);
-  for (std::size_t i = 0; i < nva; ++i)
-    for (std::size_t j = 0; j < b.faces.size(); ++j) visit(PairType::vertex_face, i, j);
-  for (std::size_t i = 0; i < a.faces.size(); ++i)
-    for (std::size_t j = 0; j < nvb; ++j) visit(PairType::face_vertex, i, j);
-  for (std::size_t i = 0; i < a.edges.size(); ++i)
-    for (std::size_t j = 0; j < b.edges.size(); ++j) visit(PairType::edge_edge, i, j);
-}
-
 }  // namespace
 
 void pose_vertices(const Shape& shape, double scale, const Vec3& position, const Mat3& rotation, Vec3* out) {
@@ -304,7 +288,8 @@ double candidate_features(const PosedBody& A, const PosedBody& B, double range, 
   // m, beyond a face plane by more than this, a vertex is out of reach (margin for round-off,
   // on the scale of the lengths the plane distances are made of).
   const double plane_limit = cutoff + kProjectionMargin * (length + cutoff + core_a + core_b);
-  if (mark_beyond(A, B, -u, plane_limit, na) || mark_beyond(B, A, u, plane_limit, nb)) return kNone;  // a face plane separates
+  // A face plane that one whole body lies beyond separates them.
+  if (mark_beyond(A, B, -u, plane_limit, na) || mark_beyond(B, A, u, plane_limit, nb)) return kNone;
   collect_near(A, B.position, core_b + cutoff, slab - nb.support, na);
   if (na.vertices.empty() && na.edges.empty() && na.faces.empty()) return kNone;
   collect_near(B, A.position, core_a + cutoff, slab - na.support, nb);
@@ -316,16 +301,6 @@ double candidate_features(const PosedBody& A, const PosedBody& B, double range, 
   append_vertex_face(B, A, nb, na, cutoff2, PairType::face_vertex, out);
   append_edge_edge(A, B, na, nb, cutoff2, out);
   return std::sqrt(out.nearest2) - A.radius - B.radius;
-}
-
-std::vector<std::pair<FeaturePair, ContactPoint>> brute_force_contacts(const PosedBody& A, const PosedBody& B) {
-  std::vector<std::pair<FeaturePair, ContactPoint>> contacts;
-  for_each_feature_pair(*A.shape, *B.shape, [&](PairType type, std::size_t i, std::size_t j) {
-    const FeaturePair pair{type, static_cast<std::uint16_t>(i), static_cast<std::uint16_t>(j)};
-    ContactPoint c;
-    if (feature_contact(A, B, pair, 0.0, c)) contacts.emplace_back(pair, c);
-  });
-  return contacts;
 }
 
 }  // namespace polydem
