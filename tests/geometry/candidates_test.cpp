@@ -110,3 +110,42 @@ TEST_CASE("feature candidates are every feature pair within the cutoff, with the
   CHECK(pairs_with_candidates < 2900);
   CHECK(compared > 10000);
 }
+
+// The face-plane test drops features that lie beyond one of the other cube's face planes: here
+// cubes rest on each other (face on face, turned, tilted, overhanging), where many vertices lie
+// within round-off of those planes, near the origin and 100 m from it.
+TEST_CASE("resting cubes: feature candidates are every feature pair within the cutoff, bit for bit") {
+  std::mt19937_64 rng(1919);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Shape cube = make_cube(0.5, 0.05);  // m, half side and rounding
+  std::size_t compared = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 origin = trial % 2 == 0 ? Vec3::Zero() : Vec3(100.0, -37.5, 12.25);  // m
+    const Quat qb = trial % 4 < 2 ? Quat::Identity() : random_axis_rotation(rng);
+    // A on B's top face: turned about the normal, tilted up to 0.01 rad (none every third trial).
+    const double tilt = trial % 3 == 0 || trial % 5 == 0 ? 0.0 : 0.01 * u(rng);
+    const Quat qa = qb * Quat(Eigen::AngleAxisd(kPi * u(rng), Vec3::UnitZ())) *
+                    Quat(Eigen::AngleAxisd(tilt, Vec3(u(rng), u(rng), 0.0).normalized()));
+    const Vec3 lateral(0.9 * u(rng), 0.9 * u(rng), 0.0);  // m: up to overhanging by 0.4
+    const double range = 0.05 * (u(rng) + 1.0);  // m
+    // m, between the centres: the rounded cubes touch at 1.1; every fifth trial, A's lower
+    // vertices lie on the cutoff above B's top face plane (up to round-off).
+    const double height = trial % 5 == 0 ? 1.0 + 0.1 + range : 1.1 + 0.12 * u(rng);
+    const Posed b(cube, 1.0, origin, qb);
+    const Posed a(cube, 1.0, origin + qb * (lateral + height * Vec3::UnitZ()), qa);
+    std::vector<FeaturePair> found;
+    std::vector<double> distances2;
+    candidate_features(a.body(), b.body(), range, found, &distances2);
+    const std::vector<Candidate> truth = brute_force_candidates(a.body(), b.body(), range);
+    INFO("trial " << trial << " range " << range);
+    REQUIRE(found.size() == truth.size());
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      CHECK(found[k].type == truth[k].pair.type);
+      CHECK(found[k].a == truth[k].pair.a);
+      CHECK(found[k].b == truth[k].pair.b);
+      CHECK(same_bits(distances2[k], truth[k].distance2));
+    }
+    compared += truth.size();
+  }
+  CHECK(compared > 10000);  // 17,468
+}
