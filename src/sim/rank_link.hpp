@@ -53,7 +53,8 @@ class RankLink {
     append_values(mine, to_each);
     std::vector<std::uint64_t> from(ranks());
     const std::vector<std::vector<char>> all = all_gather(mine);
-    for (int q = 0; q < ranks(); ++q) std::memcpy(&from[q], all[q].data() + rank() * sizeof(std::uint64_t), sizeof(std::uint64_t));
+    for (int q = 0; q < ranks(); ++q)
+      std::memcpy(&from[q], all[q].data() + rank() * sizeof(std::uint64_t), sizeof(std::uint64_t));
     return from;
   }
   // The sum over the ranks of each element of `mine`, on every rank (a collective; integers:
@@ -89,6 +90,7 @@ class RankLink {
       if (b.at(0)) return true;
     return false;
   }
+
  private:
   static void append_values(std::vector<char>& bytes, const std::vector<std::uint64_t>& values) {
     bytes.resize(values.size() * sizeof(std::uint64_t));
