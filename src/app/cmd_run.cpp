@@ -186,10 +186,17 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
                link.rank(), link.ranks(), sim.owned_bodies() + sim.ghost_bodies(), sim.bodies.size(),
                sim.owned_bodies(), sim.ghost_bodies(), double(c.parcels) / n, double(c.parcel_bytes) / n,
                double(c.collectives) / n, double(c.collective_bytes) / n, double(c.collective_bytes_in) / n);
-  if (const RankContacts* r = sim.rank_contacts())
+  if (const RankContacts* r = sim.rank_contacts()) {
     std::fprintf(stderr, "polydem: rank %d of %d: last lists: %zu pairs, %zu candidate feature pairs; %.1f%% of the "
                  "weight; %zu cuts in %zu rebuilds\n", link.rank(), link.ranks(), r->pairs(), r->candidates(),
                  100.0 * r->load_share(), r->cuts(), r->rebuilds());
+    const LinkCounts& b = r->rebuild_traffic();  // the share of the totals above spent at rebuilds
+    const double k = double(std::max<std::size_t>(1, r->rebuilds()));
+    std::fprintf(stderr, "polydem: rank %d of %d: per rebuild: %.3g point-to-point messages, %.4g bytes; %.3g "
+                 "collectives, %.4g bytes of its own in them, %.4g bytes received\n", link.rank(), link.ranks(),
+                 double(b.parcels) / k, double(b.parcel_bytes) / k, double(b.collectives) / k,
+                 double(b.collective_bytes) / k, double(b.collective_bytes_in) / k);
+  }
 }
 
 }  // namespace

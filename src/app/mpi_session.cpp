@@ -44,9 +44,27 @@ class MpiLink final : public RankLink {
     MPI_Waitall(int(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
   }
   LinkCounts counts() const override { return counts_; }
+  std::vector<std::uint64_t> all_to_all(const std::vector<std::uint64_t>& to_each) const override {
+    std::vector<std::uint64_t> from(ranks_);
+    MPI_Alltoall(to_each.data(), 1, MPI_UINT64_T, from.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD);
+    count_collective(to_each.size());
+    return from;
+  }
+  std::vector<std::uint64_t> sum(const std::vector<std::uint64_t>& mine) const override {
+    std::vector<std::uint64_t> total(mine.size());
+    MPI_Allreduce(mine.data(), total.data(), int(mine.size()), MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+    count_collective(mine.size());
+    return total;
+  }
 
  private:
   static constexpr int kEveryRank = -1;
+  // A collective of `n` values each way (the bytes in: what a reduction or a transpose brings).
+  void count_collective(std::size_t n) const {
+    ++counts_.collectives;
+    counts_.collective_bytes += n * sizeof(std::uint64_t);
+    counts_.collective_bytes_in += n * sizeof(std::uint64_t);
+  }
   // Every rank's `mine` onto `root`, or onto every rank (kEveryRank): sizes first, then bytes.
   std::vector<std::vector<char>> collect(const std::vector<char>& mine, int root) const {
     const int n = int(mine.size());

@@ -66,13 +66,14 @@ std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32
   return bytes;
 }
 
-void unpack_owned(const std::vector<char>& bytes, Bodies& bodies) {
+std::vector<std::uint32_t> unpack_owned(const std::vector<char>& bytes, Bodies& bodies) {
   Reader r{bytes.data()};
-  for (std::size_t k = 0; k < bytes.size() / kOwnedBytes; ++k) {
-    std::uint32_t b = 0;
+  std::vector<std::uint32_t> ids(bytes.size() / kOwnedBytes);
+  for (std::uint32_t& b : ids) {
     r.field(b);
     owned_fields(r, bodies, b);
   }
+  return ids;
 }
 
 }  // namespace polydem

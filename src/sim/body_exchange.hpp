@@ -20,7 +20,7 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
 
 // The integration state of bodies `ids` with their ids.
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
-// Writes each record of a pack_owned parcel into its body.
-void unpack_owned(const std::vector<char>& bytes, Bodies& bodies);
+// Writes each record of a pack_owned parcel into its body; returns their ids, in parcel order.
+std::vector<std::uint32_t> unpack_owned(const std::vector<char>& bytes, Bodies& bodies);
 
 }  // namespace polydem

@@ -7,6 +7,7 @@
 #include "sim/body_exchange.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/rank_energy.hpp"
+#include "sim/rank_migration.hpp"
 
 namespace polydem {
 
@@ -20,6 +21,19 @@ double largest_bounding_radius(const std::vector<Shape>& shapes, const Bodies& b
   double r = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) r = std::max(r, shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
   return r;
+}
+
+// Adds what was sent between the counts `from` and `to` to `sum`.
+void add_traffic(LinkCounts& sum, const LinkCounts& from, const LinkCounts& to) {
+  sum.parcels += to.parcels - from.parcels;
+  sum.parcel_bytes += to.parcel_bytes - from.parcel_bytes;
+  sum.collectives += to.collectives - from.collectives;
+  sum.collective_bytes += to.collective_bytes - from.collective_bytes;
+  sum.collective_bytes_in += to.collective_bytes_in - from.collective_bytes_in;
+}
+
+RunError non_finite_position(std::size_t b) {
+  return RunError("the neighbour search met a non-finite position (body " + std::to_string(b) + ")");
 }
 
 }  // namespace
@@ -44,45 +58,47 @@ bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
   return link_.any(stale);  // one rank's moved body rebuilds every rank's lists
 }
 
+// Every rank holds every body and `whole`'s table (the start, a resume, after sync_bodies):
+// each cuts the domain alike, every body weighing the same (no lists yet), and takes its share.
 void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole) {
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
-    if (!bodies.position[b].allFinite())
-      throw RunError("the neighbour search met a non-finite position (body " + std::to_string(b) + ")");
-  recut_if_unbalanced(bodies.position);
+    if (!bodies.position[b].allFinite()) throw non_finite_position(b);
+  cut_ = cut_domain(bodies.position, std::vector<double>(bodies.size(), double(kBodyWork)), link_.ranks());
+  ++cuts_;
+  set_load_share(part_loads(cut_, bodies.position, std::vector<double>(bodies.size(), 1.0)));
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
+  adopt(bodies, whole.body_pairs(), whole.driver_pairs());
+}
+
+// A rebuild the motion asks for: each rank's owned bodies and ghosts are current, no other;
+// the movers and their histories go to their new owners, then the ghosts to their holders,
+// point to point (sim/rank_migration.hpp).
+void RankContacts::migrate_bodies(Bodies& bodies) {
+  long bad = -1;
+  for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
+    if (!bodies.position[b].allFinite()) {
+      bad = b;
+      break;
+    }
+  bad = least_over_ranks(link_, bad);
+  if (bad >= 0) throw non_finite_position(std::size_t(bad));  // the same message on every rank
+  recut_if_unbalanced(bodies);
+  Handover h = migrate(link_, cut_, plan_.owned, active_slots(engine_->body_pairs(), store_, false),
+                       active_slots(engine_->driver_pairs(), store_, true), bodies);
+  plan_ = share_ghosts(link_, cut_, std::move(h.owned), halo_, bodies);
+  adopt(bodies, h.body_table, h.driver_table);
+}
+
+// Lists this rank's bodies (plan_) and hands their histories over from `body_table` and
+// `driver_table` (global ids; pairs of other bodies are left out).
+void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table) {
   local_of_.assign(bodies.size(), -1);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
   owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
   store_.select(bodies, plan_.local, plan_.ghost);
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
-  engine_->body_pairs() = localise(whole.body_pairs(), local_of_, false);  // handed over by the rebuild
-  engine_->driver_pairs() = localise(whole.driver_pairs(), local_of_, true);
-}
-
-// Each body's weight from the last lists, the same on every rank (their counts were
-// gathered): its own step as one candidate feature pair (2 halves) plus the candidates of its
-// pairs (work: counted on both sides); before any lists, every body alike (equal counts).
-std::vector<double> RankContacts::body_weights() const {
-  std::vector<double> w(n_bodies_, double(kBodyWork));
-  for (const std::vector<PairCounts>& rank : pair_counts_)
-    for (const PairCounts& c : rank) w[c.id] += double(c.work);
-  return w;
-}
-
-// Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
-// bodies change owner); cuts again past it, or at the first rebuild.
-void RankContacts::recut_if_unbalanced(const std::vector<Vec3>& x) {
-  const std::vector<double> w = body_weights();
-  std::vector<double> loads;
-  if (cut_.parts() == link_.ranks()) loads = part_loads(cut_, x, w);
-  if (loads.empty() || imbalance(loads) > kRecutImbalance) {
-    cut_ = cut_domain(x, w, link_.ranks());
-    loads = part_loads(cut_, x, w);
-    ++cuts_;
-  }
-  double total = 0.0;
-  for (double l : loads) total += l;
-  load_share_ = total > 0.0 ? loads[link_.rank()] / total : 0.0;
+  engine_->body_pairs() = localise(body_table, local_of_, false);
+  engine_->driver_pairs() = localise(driver_table, local_of_, true);
 }
 
 void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
@@ -106,11 +122,16 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   if (!forced_ && engine_) exchange_ghosts(bodies);
   const bool stale = lists_stale(bodies, drivers);
   if (stale) {
-    sync_bodies(bodies);  // the new cut and the migration read every body's state
-    if (!forced_) gather_table(whole);  // forced: whole's lists hold the table already
-    redistribute(bodies, whole);
+    const LinkCounts before = link_.counts();
+    if (forced_) {  // the start or a resume: whole's lists hold the table
+      sync_bodies(bodies);  // a resume's first drift moved each rank's bodies of the cut before it
+      redistribute(bodies, whole);
+    } else {
+      migrate_bodies(bodies);
+    }
     forced_ = rebuild_asked_ = false;
     ++rebuilds_;
+    add_traffic(rebuild_traffic_, before, link_.counts());
   }
   engine_->record_contacts(whole.records_contacts());  // the run loop tells the whole engine
   engine_->compute(store_.view(), drivers, dt, stale);
@@ -160,21 +181,13 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
 }
 
 long RankContacts::first_non_finite(const Bodies& bodies) const {
-  std::int64_t mine = -1;  // the owned bodies are in increasing id: the first is the smallest
+  long mine = -1;  // the owned bodies are in increasing id: the first is the smallest
   for (std::uint32_t b : plan_.owned)
     if (!bodies.finite(b)) {
-      mine = b;
+      mine = long(b);
       break;
     }
-  std::vector<char> bytes;
-  append_section(bytes, std::vector<std::int64_t>{mine});
-  long first = -1;
-  for (const std::vector<char>& from : link_.all_gather(bytes)) {
-    std::size_t at = 0;
-    const std::int64_t b = read_section<std::int64_t>(from, at).at(0);
-    if (b >= 0 && (first < 0 || b < first)) first = long(b);
-  }
-  return first;
+  return least_over_ranks(link_, mine);
 }
 
 // One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'

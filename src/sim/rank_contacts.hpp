@@ -6,10 +6,11 @@
 // to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
 // reactions (summed in the one-process pair order) and the pair energies (summed in the
 // one-process blocks of kPairBlock pairs; where each pair falls follows from the owned
-// bodies' pair counts, sent at rebuilds). At a rebuild every rank gathers every body's state
-// (sync_bodies), cuts again if need be and takes its bodies and their contact histories from
-// the table of active slots in global ids (sim/contact_table.hpp). Every rank keeps arrays for
-// all bodies: only its owned bodies and ghosts are current between gathers.
+// bodies' pair counts, sent at rebuilds). At a rebuild each rank sends the owned bodies that
+// change owner, with the histories of their pairs, to their new owners, then its owned bodies
+// to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
+// reads the loads summed over the ranks and a sample of the centres. Every rank keeps arrays
+// for all bodies: only its owned bodies and ghosts are current between gathers.
 #include <memory>
 #include <vector>
 
@@ -52,7 +53,7 @@ class RankContacts {
   void gather_table(ContactEngine& whole, bool to_root = false) const;
 
   // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
-  // bodies, gathered (a collective).
+  // bodies, gathered (a collective: output, drag and fluid forces; never a rebuild).
   void sync_bodies(Bodies& bodies, bool to_root = false) const;
   // What this rank writes of the state (VTK pieces, checkpoint pieces): the bodies it owns in
   // increasing id and the active slots it answers for (its body pairs whose lower body it owns,
@@ -72,6 +73,7 @@ class RankContacts {
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t cuts() const { return cuts_; }          // rebuilds that cut the domain again
   double load_share() const { return load_share_; }   // this rank's share of the weight at the last rebuild
+  const LinkCounts& rebuild_traffic() const { return rebuild_traffic_; }  // what the rebuilds sent, all told
   // This rank's lists: pairs with an owned body and their candidate feature pairs.
   std::size_t pairs() const;
   std::size_t candidates() const;
@@ -80,12 +82,20 @@ class RankContacts {
   static constexpr std::uint32_t kBodyWork = 2;
   // The most loaded part over the mean past which a rebuild cuts again: a 5% wait at most.
   static constexpr double kRecutImbalance = 1.05;
+  // Points of the sample a cut is made from, over all ranks (32 bytes each: 4 MB to each
+  // rank at most) and at least per rank.
+  static constexpr std::size_t kCutSample = std::size_t(1) << 17, kCutSampleRank = 64;
 
  private:
   bool lists_stale(const Bodies& bodies, const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
-  std::vector<double> body_weights() const;
-  void recut_if_unbalanced(const std::vector<Vec3>& x);
+  void migrate_bodies(Bodies& bodies);
+  void adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table);
+  std::vector<std::uint64_t> owned_weights() const;
+  std::vector<double> summed_loads(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
+  void recut_if_unbalanced(const Bodies& bodies);
+  std::vector<char> cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
+  void set_load_share(const std::vector<double>& loads);
   void exchange_ghosts(Bodies& bodies) const;
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
@@ -107,6 +117,7 @@ class RankContacts {
   bool forced_ = true;
   bool rebuild_asked_ = false;
   std::size_t rebuilds_ = 0;
+  LinkCounts rebuild_traffic_;
   EnergyParts energy_;
   std::size_t contacts_ = 0;
 };

@@ -45,12 +45,56 @@ class RankLink {
   // the caller) from its rank. Every rank calls it; the pattern is symmetric between ranks.
   virtual void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;
   virtual LinkCounts counts() const { return {}; }
+  // Element [q] of rank q's `to_each`, for every q, in rank order (a collective, ranks values
+  // each way): the sizes of the parcels a rebuild sends, so each receiver posts them. By
+  // default from an all_gather.
+  virtual std::vector<std::uint64_t> all_to_all(const std::vector<std::uint64_t>& to_each) const {
+    std::vector<char> mine;
+    append_values(mine, to_each);
+    std::vector<std::uint64_t> from(ranks());
+    const std::vector<std::vector<char>> all = all_gather(mine);
+    for (int q = 0; q < ranks(); ++q)
+      std::memcpy(&from[q], all[q].data() + rank() * sizeof(std::uint64_t), sizeof(std::uint64_t));
+    return from;
+  }
+  // The sum over the ranks of each element of `mine`, on every rank (a collective; integers:
+  // exact in any order). By default from an all_gather.
+  virtual std::vector<std::uint64_t> sum(const std::vector<std::uint64_t>& mine) const {
+    std::vector<char> bytes;
+    append_values(bytes, mine);
+    std::vector<std::uint64_t> total(mine.size(), 0), one(mine.size());
+    for (const std::vector<char>& from : all_gather(bytes)) {
+      std::memcpy(one.data(), from.data(), from.size());
+      for (std::size_t k = 0; k < total.size(); ++k) total[k] += one[k];
+    }
+    return total;
+  }
+
+  // Sends each non-empty parcel of `out` to its rank and returns the parcels sent to this
+  // rank, in rank order: their sizes first (all_to_all), then point to point (a collective).
+  std::vector<Parcel> deliver(std::vector<Parcel> out) const {
+    std::erase_if(out, [](const Parcel& p) { return p.bytes.empty(); });
+    std::vector<std::uint64_t> size(ranks(), 0);
+    for (const Parcel& p : out) size[p.rank] = p.bytes.size();
+    const std::vector<std::uint64_t> incoming = all_to_all(size);
+    std::vector<Parcel> in;
+    for (int q = 0; q < ranks(); ++q)
+      if (incoming[q]) in.push_back({q, std::vector<char>(incoming[q])});
+    exchange(out, in);
+    return in;
+  }
 
   // True on every rank when it is true on some rank.
   bool any(bool mine) const {
     for (const std::vector<char>& b : all_gather({char(mine)}))
       if (b.at(0)) return true;
     return false;
+  }
+
+ private:
+  static void append_values(std::vector<char>& bytes, const std::vector<std::uint64_t>& values) {
+    bytes.resize(values.size() * sizeof(std::uint64_t));
+    if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
   }
 };
 

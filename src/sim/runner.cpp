@@ -434,8 +434,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       const auto step_start = Clock::now();
       sim.step();
       stepping += std::chrono::duration<double>(Clock::now() - step_start).count();
-    } catch (const RunError&) {  // the neighbour search refuses non-finite positions
-      const long bad = first_non_finite_body(sim.bodies);
+    } catch (const RunError&) {  // the neighbour search refuses non-finite positions (every rank alike)
+      const long bad = sim.first_non_finite();  // a rank holds only its bodies current: the first over all
       if (bad >= 0) fail_non_finite(sim, body_name(sim, bad), last_good, good_step, o.out_dir, first_check);
       throw;
     }

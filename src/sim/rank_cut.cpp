@@ -1,0 +1,88 @@
+// The cut of a distributed run at a rebuild (issue 20): the loads of the kept cut summed over
+// the ranks (a value per rank), and a cut again from a sample of the owned bodies' centres
+// when they are unbalanced. The cut decides only who computes what: never the bits.
+#include <algorithm>
+
+#include "sim/rank_contacts.hpp"
+
+namespace polydem {
+
+namespace {
+
+Vec3 get(const double in[3]) { return {in[0], in[1], in[2]}; }
+void put(double out[3], const Vec3& v) { out[0] = v.x(); out[1] = v.y(); out[2] = v.z(); }
+
+// A point of the sample a cut is made from: a centre and the weight it stands for.
+struct CutPoint {
+  double x[3];  // m
+  double weight;
+};
+
+}  // namespace
+
+// Each owned body's weight from the last lists (this rank counted them): its own step as one
+// candidate feature pair (2 halves) plus the candidates of its pairs (work: counted on both sides).
+std::vector<std::uint64_t> RankContacts::owned_weights() const {
+  const std::vector<PairCounts>& counts = pair_counts_[link_.rank()];  // per owned body, in order
+  std::vector<std::uint64_t> w(plan_.owned.size(), kBodyWork);
+  if (counts.size() == w.size())
+    for (std::size_t k = 0; k < w.size(); ++k) w[k] += counts[k].work;
+  return w;
+}
+
+// Each part's load under cut_ at the owned bodies' centres now, summed over the ranks (exact: integers).
+std::vector<double> RankContacts::summed_loads(const Bodies& bodies, const std::vector<std::uint64_t>& w) const {
+  std::vector<std::uint64_t> mine(link_.ranks(), 0);
+  for (std::size_t k = 0; k < w.size(); ++k) mine[cut_.owner(bodies.position[plan_.owned[k]])] += w[k];
+  const std::vector<std::uint64_t> all = link_.sum(mine);
+  return std::vector<double>(all.begin(), all.end());
+}
+
+// Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
+// bodies change owner); past it, cuts again from a sample of the owned bodies (cut_sample).
+void RankContacts::recut_if_unbalanced(const Bodies& bodies) {
+  const std::vector<std::uint64_t> w = owned_weights();
+  std::vector<double> loads = summed_loads(bodies, w);
+  if (imbalance(loads) > kRecutImbalance) {
+    std::vector<Vec3> x;
+    std::vector<double> weight;
+    for (const std::vector<char>& from : link_.all_gather(cut_sample(bodies, w))) {
+      std::size_t at = 0;
+      for (const CutPoint& c : read_section<CutPoint>(from, at)) {
+        x.push_back(get(c.x));
+        weight.push_back(c.weight);
+      }
+    }
+    cut_ = cut_domain(x, weight, link_.ranks());
+    loads = summed_loads(bodies, w);
+    ++cuts_;
+  }
+  set_load_share(loads);
+}
+
+// The owned bodies as runs of consecutive ones (increasing id), each at its first body's
+// centre with the run's weight: at most kCutSample points over all ranks (at least
+// kCutSampleRank a rank), every body itself while they are fewer.
+std::vector<char> RankContacts::cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const {
+  const std::size_t n = plan_.owned.size();
+  const std::size_t most = std::max<std::size_t>(kCutSampleRank, kCutSample / std::size_t(link_.ranks()));
+  const std::size_t run = (n + most - 1) / std::max<std::size_t>(most, 1);  // bodies a point stands for
+  std::vector<CutPoint> points;
+  for (std::size_t k = 0; k < n; k += run) {
+    CutPoint c{};
+    put(c.x, bodies.position[plan_.owned[k]]);
+    for (std::size_t m = k; m < std::min(n, k + run); ++m) c.weight += double(w[m]);
+    points.push_back(c);
+  }
+  std::vector<char> bytes;
+  append_section(bytes, points);
+  return bytes;
+}
+
+void RankContacts::set_load_share(const std::vector<double>& loads) {
+  double total = 0.0;
+  for (double l : loads) total += l;
+  load_share_ = total > 0.0 ? loads[link_.rank()] / total : 0.0;
+}
+
+}  // namespace polydem
