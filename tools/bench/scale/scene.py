@@ -1,19 +1,36 @@
 """Writes the scale benchmark's scene: n^3 spheres (r = 5 mm) touching in a simple cubic
 lattice, the lowest layer on the floor, between four walls 0.5 mm clear of the outer spheres,
 at rest under gravity (a settled bed's 3 contacts a sphere, no settling run needed).
-usage: python3 scene.py N_SIDE SHAPE_LIBRARY > scene.yaml"""
+ORDER `lattice` (default) numbers the spheres layer by layer, so neighbours sit near in memory;
+`shuffled` lists the same sites as explicit bodies in a seeded random order, as a pour leaves
+them (a body's neighbours anywhere in memory).
+usage: python3 scene.py N_SIDE SHAPE_LIBRARY [lattice|shuffled] > scene.yaml"""
+import random
 import sys
 
 n, library = int(sys.argv[1]), sys.argv[2]
+order = sys.argv[3] if len(sys.argv) > 3 else "lattice"
 side = n * 0.01 + 1e-9  # m, n spheres of diameter 1 cm, a hair more: the lattice fills the box, centred
-print(f"""simulation: {{duration: "1 s", dt: "5 us", skin: "0.1 mm", seed: 1}}
-shapes: [{library}]
-bodies:
-  - generate: lattice
+
+
+def bodies_block():
+    if order == "lattice":
+        return f"""  - generate: lattice
     shapes: sphere
     count: {n ** 3}
     region: {{box: {{min: [0, 0, 0], max: [{side}, {side}, {side}]}}}}
-    density: 2700
+    density: 2700"""
+    sites = [(i, j, k) for k in range(n) for j in range(n) for i in range(n)]
+    random.Random(1).shuffle(sites)
+    at = lambda i: repr(0.005 + 0.01 * i + 0.5e-9)  # m, the lattice generator's centred site
+    return "\n".join(f"  - {{shape: sphere, position: [{at(i)}, {at(j)}, {at(k)}], density: 2700}}"
+                     for i, j, k in sites)
+
+
+print(f"""simulation: {{duration: "1 s", dt: "5 us", skin: "0.1 mm", seed: 1}}
+shapes: [{library}]
+bodies:
+{bodies_block()}
 drivers:
   - wall: {{name: floor, point: [0, 0, 0], normal: [0, 0, 1]}}
   - wall: {{name: left, point: [-0.0005, 0, 0], normal: [1, 0, 0]}}
