@@ -117,14 +117,16 @@ struct BodyCandidates {
   std::vector<std::vector<float>> gaps;                // m
 };
 
-BodyCandidates body_candidates(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed, double range) {
+// pose_of(b): body b's pose (a sphere's made on the spot).
+template <class PoseOf>
+BodyCandidates body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, double range) {
   BodyCandidates all;
   all.pair_gap.resize(near.size());
   all.features.resize(near.size());
   all.gaps.resize(near.size());
   parallel_for_dynamic(near.size(), [&](std::size_t k) {
-    const PosedBody& a = posed[near[k].i];
-    const PosedBody& b = posed[near[k].j];
+    const PosedBody& a = pose_of(near[k].i);
+    const PosedBody& b = pose_of(near[k].j);
     // Found into reused scratch, then copied: one exact allocation per pair, not one per doubling.
     thread_local std::vector<FeaturePair> found;
     thread_local std::vector<double> distances2;
@@ -200,27 +202,38 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
     bounding_[b] = s.bounding_radius * scale[b];
     core_reach_[b] = core_reach(s) * scale[b];
   }
-  world_vertices_.resize(vertex_offset_[n]);
-  posed_.resize(n);
   spheres_only_ = settings_.spheres_only >= 0 ? settings_.spheres_only == 1
                   : std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
   radius_.resize(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    const Shape& s = shapes_[shape[b]];
-    radius_[b] = s.radius * scale[b];
-    // A sphere's pose is its centre alone: everything else is set once here.
-    if (spheres_only_)
-      posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), (*bodies.position)[b], radius_[b], scale[b]};
+  for (std::size_t b = 0; b < n; ++b) radius_[b] = shapes_[shape[b]].radius * scale[b];
+  if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
+  world_vertices_.resize(vertex_offset_[n]);
+  posed_.resize(n);
+}
+
+// Spheres keep no pose unless a driver pair's kernel reads it each step (a driver other than a
+// wall, or the contact point's mass): 152 bytes a body (the pose and its vertex) otherwise freed.
+void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
+  if (!needed) {
+    posed_ = {};
+    world_vertices_ = {};
+    return;
   }
+  const std::size_t n = bodies.size();
+  const std::vector<Vec3>& position = *bodies.position;
+  if (posed_.size() != n) {  // everything but the centre is set once here
+    world_vertices_.resize(n);
+    posed_.resize(n);
+    for (std::size_t b = 0; b < n; ++b) {
+      posed_[b] = sphere_pose(bodies, b);
+      posed_[b].vertices = &world_vertices_[b];
+    }
+  }
+  parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
 }
 
 void ContactEngine::pose(const LocalBodies& bodies) {
-  const std::size_t n = bodies.size();
   const std::vector<Vec3>& position = *bodies.position;
-  if (spheres_only_) {  // the one vertex is the centre: no rotation to apply
-    parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
-    return;
-  }
   const std::vector<Quat>& orientation = *bodies.orientation;
   const std::vector<int>& shape = *bodies.shape;
   const std::vector<double>& scale = *bodies.scale;
@@ -274,9 +287,11 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
     drop_ghost_pairs(bodies, near);
     fresh_d.pairs = near_drivers(bodies, drivers, range_d);
-    mark_listed(bodies.size(), near, fresh_d.pairs);
-    pose(bodies);
-    BodyCandidates found = body_candidates(near, posed_, range_p);
+    if (!spheres_only_) mark_listed(bodies.size(), near, fresh_d.pairs);  // spheres: pose() is not called
+    if (!spheres_only_) pose(bodies);
+    BodyCandidates found =
+        spheres_only_ ? body_candidates(near, [&](std::uint32_t b) { return sphere_pose(bodies, b); }, range_p)
+                      : body_candidates(near, [&](std::uint32_t b) -> const PosedBody& { return posed_[b]; }, range_p);
     fresh.pairs = std::move(found.pairs);
     fresh.gap_at_build = std::move(found.pair_gap);
     fill_slots(found.features, &found.gaps, fresh);
@@ -288,8 +303,10 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
-  for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k)
-    drivers.candidates(posed_[fresh_d.pairs[k].i], fresh_d.pairs[k].j, range_d, per_pair[k]);
+  for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k) {
+    const std::uint32_t i = fresh_d.pairs[k].i;
+    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, range_d, per_pair[k]);
+  }
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_slots(per_pair, nullptr, fresh_d);
   carry_history(old_driver, fresh_d);
@@ -297,7 +314,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
-  mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
+  if (spheres_only_)
+    keep_sphere_poses(bodies, spheres_posed_each_step_ || (settings_.driver.contact_mass && !driver_list_.pairs.empty()));
+  if (!spheres_only_) mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
   mark_drivers(bodies, drivers);
