@@ -5,13 +5,21 @@
 # ones with the old and the new lists both held (the peak of a long run). Prints
 # "bodies peak_kB kB_per_body"; the per-body figure is peak / bodies, and the marginal cost
 # between two sizes is the slope.
-# usage: tools/bench/memory/run_memory.sh [POLYDEM] [N ...]   (N per side; default 15 30 45)
+# SHAPE=cube: the same lattice of rounded cubes (side 1 cm, faces parallel, face to face, each
+# pair's candidate feature pairs in the list) under contact_polyhedron.
+# usage: [SHAPE=cube] tools/bench/memory/run_memory.sh [POLYDEM] [N ...]   (N per side; default 15 30 45)
 # Rows measured so far: tools/bench/memory/results.csv (README, Benchmarks).
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 bin=$(realpath "${1:-build/polydem}")
 shift || true
 sides=("${@:-15 30 45}")
+shape=${SHAPE:-sphere}
+case "$shape" in
+  sphere) contact=contact_sphere ;;
+  cube) contact=contact_polyhedron ;;
+  *) echo "run_memory.sh: SHAPE must be sphere or cube, not '$shape'" >&2; exit 1 ;;
+esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for n in ${sides[@]}; do
@@ -21,7 +29,7 @@ simulation: {duration: "1 s", dt: "5 us", skin: "0.1 mm", seed: 1}
 shapes: [$PWD/shapes/platonic.shp]
 bodies:
   - generate: lattice
-    shapes: sphere
+    shapes: $shape
     count: $((n * n * n))
     region: {box: {min: [0, 0, 0.0005], max: [$side, $side, $(python3 -c "print($side + 0.0005)")]}}
     velocity: [0, 0, -0.5]
@@ -30,7 +38,7 @@ drivers:
   - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 1]}
 forces:
   - gravity_force: {gravity: [0, 0, -9.807]}
-  - contact_sphere:
+  - $contact:
       config:        {kn: 1.0e5, kt: 0.8e5, mu: 0.5, en: 0.3}
       config_driver: {kn: 1.0e5, kt: 0.8e5, mu: 0.5, en: 0.3}
 output: {csv_every: "1 s", checkpoint_every: "1 s", contacts: false}
