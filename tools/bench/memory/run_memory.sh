@@ -5,8 +5,9 @@
 # ones with the old and the new lists both held (the peak of a long run). Prints
 # "bodies peak_kB kB_per_body"; the per-body figure is peak / bodies, and the marginal cost
 # between two sizes is the slope.
-# SHAPE=cube: the same lattice of rounded cubes (side 1 cm, faces parallel, face to face, each
-# pair's candidate feature pairs in the list) under contact_polyhedron.
+# SHAPE=cube: a lattice of rounded cubes (side 1 cm) under contact_polyhedron, at the lattice
+# generator's spacing, the bounding diameter (16.6 mm): the cubes do not touch, so this is the
+# memory of the bodies and their poses, not of contacts.
 # usage: [SHAPE=cube] tools/bench/memory/run_memory.sh [POLYDEM] [N ...]   (N per side; default 15 30 45)
 # Rows measured so far: tools/bench/memory/results.csv (README, Benchmarks).
 set -euo pipefail
@@ -16,14 +17,14 @@ shift || true
 sides=("${@:-15 30 45}")
 shape=${SHAPE:-sphere}
 case "$shape" in
-  sphere) contact=contact_sphere ;;
-  cube) contact=contact_polyhedron ;;
+  sphere) contact=contact_sphere; pitch=0.01 ;;      # m, touching
+  cube) contact=contact_polyhedron; pitch=0.0166 ;;  # m, > 2 x the bounding radius 8.29 mm
   *) echo "run_memory.sh: SHAPE must be sphere or cube, not '$shape'" >&2; exit 1 ;;
 esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for n in ${sides[@]}; do
-  side=$(python3 -c "print($n * 0.01 + 0.001)")
+  side=$(python3 -c "print($n * $pitch + 0.001)")
   cat > "$work/scene.yaml" <<YAML
 simulation: {duration: "1 s", dt: "5 us", skin: "0.1 mm", seed: 1}
 shapes: [$PWD/shapes/platonic.shp]
