@@ -190,6 +190,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   free_results(body_list_);  // read by nothing from here: the new lists' results replace them
+  if (spheres_only_) body_list_.set_recording(false);  // a sphere list's records are not carried: freed
   free_results(driver_list_);
   PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
   body_list_ = PairList{};  // freed before the new lists are built
