@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "polydem/parallel.hpp"
+#include "contact/list_build.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
 #include "contact/sphere_wall.hpp"
@@ -100,87 +100,6 @@ double core_reach(const Shape& s) {
   return r;
 }
 
-// m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
-float gap_below(double core_distance2, double radii) {
-  const double gap = std::sqrt(core_distance2) - radii;
-  const float f = static_cast<float>(gap);
-  return static_cast<double>(f) > gap ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-
-// Candidates of the body pairs whose bounding spheres overlap: their feature pairs and, per
-// feature pair, the gap at the build (m, a lower bound). Pairs with no candidate cannot touch
-// before the next rebuild, so they stay out of the per-step loop (half the pairs in a pile).
-struct BodyCandidates {
-  std::vector<BodyPair> pairs;
-  std::vector<double> pair_gap;                        // m, smallest of the pair
-  std::vector<std::vector<FeaturePair>> features;
-  std::vector<std::vector<float>> gaps;                // m
-};
-
-BodyCandidates body_candidates(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed, double range) {
-  BodyCandidates all;
-  all.pair_gap.resize(near.size());
-  all.features.resize(near.size());
-  all.gaps.resize(near.size());
-  parallel_for_dynamic(near.size(), [&](std::size_t k) {
-    const PosedBody& a = posed[near[k].i];
-    const PosedBody& b = posed[near[k].j];
-    // Found into reused scratch, then copied: one exact allocation per pair, not one per doubling.
-    thread_local std::vector<FeaturePair> found;
-    thread_local std::vector<double> distances2;
-    found.clear();
-    distances2.clear();
-    all.pair_gap[k] = candidate_features(a, b, range, found, &distances2);
-    all.features[k].assign(found.begin(), found.end());
-    all.gaps[k].resize(distances2.size());
-    for (std::size_t c = 0; c < distances2.size(); ++c) all.gaps[k][c] = gap_below(distances2[c], a.radius + b.radius);
-  });
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < near.size(); ++k) {
-    if (all.features[k].empty()) continue;
-    all.pairs.push_back(near[k]);
-    all.pair_gap[kept] = all.pair_gap[k];
-    if (kept != k) {
-      all.features[kept] = std::move(all.features[k]);
-      all.gaps[kept] = std::move(all.gaps[k]);
-    }
-    ++kept;
-  }
-  all.pair_gap.resize(kept);
-  all.features.resize(kept);
-  all.gaps.resize(kept);
-  return all;
-}
-
-// Lays out per-pair candidate lists as the CSR slots of a PairList, each run sorted by key,
-// with each slot's gap at the build (`gaps` null: -inf, never skipped, as for moving drivers).
-void fill_slots(const std::vector<std::vector<FeaturePair>>& per_pair, const std::vector<std::vector<float>>* gaps,
-                PairList& list) {
-  list.slot_begin.assign(per_pair.size() + 1, 0);
-  for (std::size_t k = 0; k < per_pair.size(); ++k)
-    list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
-  list.slots.assign(list.slot_begin.back(), ContactSlot{});
-  list.records.assign(list.recording ? list.slot_begin.back() : 0, SlotRecord{});
-  list.active.assign(list.slot_begin.back(), 0);
-  list.features.resize(list.slot_begin.back());
-  list.slot_gap.assign(list.slot_begin.back(), -std::numeric_limits<float>::infinity());
-  parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
-    const auto& c = per_pair[k];
-    thread_local std::vector<std::uint32_t> order;
-    order.resize(c.size());
-    std::iota(order.begin(), order.end(), 0u);
-    const auto by_key = [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); };
-    if (!std::is_sorted(c.begin(), c.end(), by_key))  // body pairs come sorted (candidate_features' order)
-      std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return by_key(c[x], c[y]); });
-    const std::uint32_t base = list.slot_begin[k];
-    for (std::size_t r = 0; r < order.size(); ++r) {
-      list.features[base + r] = c[order[r]];
-      if (gaps) list.slot_gap[base + r] = (*gaps)[k][order[r]];
-    }
-  });
-  list.resize_results();
-}
-
 }  // namespace
 
 ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies,
@@ -200,27 +119,38 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
     bounding_[b] = s.bounding_radius * scale[b];
     core_reach_[b] = core_reach(s) * scale[b];
   }
-  world_vertices_.resize(vertex_offset_[n]);
-  posed_.resize(n);
   spheres_only_ = settings_.spheres_only >= 0 ? settings_.spheres_only == 1
                   : std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
   radius_.resize(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    const Shape& s = shapes_[shape[b]];
-    radius_[b] = s.radius * scale[b];
-    // A sphere's pose is its centre alone: everything else is set once here.
-    if (spheres_only_)
-      posed_[b] = PosedBody{&s, &world_vertices_[b], Mat3::Identity(), (*bodies.position)[b], radius_[b], scale[b]};
+  for (std::size_t b = 0; b < n; ++b) radius_[b] = shapes_[shape[b]].radius * scale[b];
+  if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
+  world_vertices_.resize(vertex_offset_[n]);
+  posed_.resize(n);
+}
+
+// Spheres keep no pose unless a driver pair's kernel reads it each step (a driver other than a
+// wall, or the contact point's mass): 152 bytes a body (the pose and its vertex) otherwise freed.
+void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
+  if (!needed) {
+    posed_ = {};
+    world_vertices_ = {};
+    return;
   }
+  const std::size_t n = bodies.size();
+  const std::vector<Vec3>& position = *bodies.position;
+  if (posed_.size() != n) {  // everything but the centre is set once here
+    world_vertices_.resize(n);
+    posed_.resize(n);
+    for (std::size_t b = 0; b < n; ++b) {
+      posed_[b] = sphere_pose(bodies, b);
+      posed_[b].vertices = &world_vertices_[b];
+    }
+  }
+  parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
 }
 
 void ContactEngine::pose(const LocalBodies& bodies) {
-  const std::size_t n = bodies.size();
   const std::vector<Vec3>& position = *bodies.position;
-  if (spheres_only_) {  // the one vertex is the centre: no rotation to apply
-    parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
-    return;
-  }
   const std::vector<Quat>& orientation = *bodies.orientation;
   const std::vector<int>& shape = *bodies.shape;
   const std::vector<double>& scale = *bodies.scale;
@@ -259,6 +189,9 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
+  free_results(body_list_);  // read by nothing from here: the new lists' results replace them
+  if (spheres_only_) body_list_.set_recording(false);  // a sphere list's records are not carried: freed
+  free_results(driver_list_);
   PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
   body_list_ = PairList{};  // freed before the new lists are built
   driver_list_ = PairList{};
@@ -266,38 +199,51 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   // A sphere list's records are written by the step's kernel, not carried: sized only once the
   // old lists are freed, so a rebuild at an output step holds no more than another.
   fresh.recording = !spheres_only_;
-  {  // the broad phase's pairs and the candidates are freed once the slots are laid out
+  {  // the broad phase's pairs are freed before the slots' state is sized
     std::vector<BodyPair> near;
     cells_.build_pairs(*bodies.position, bounding_, range_p, near);
     stats_.broad_tests += cells_.candidate_tests();
     stats_.broad_levels = cells_.levels();
     stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
+    cells_ = CellList{};  // its search arrays freed before the lists are sized (~100 bytes a sphere)
     drop_ghost_pairs(bodies, near);
     fresh_d.pairs = near_drivers(bodies, drivers, range_d);
-    mark_listed(bodies.size(), near, fresh_d.pairs);
-    pose(bodies);
-    BodyCandidates found = body_candidates(near, posed_, range_p);
-    fresh.pairs = std::move(found.pairs);
-    fresh.gap_at_build = std::move(found.pair_gap);
-    fill_slots(found.features, &found.gaps, fresh);
+    if (spheres_only_) {  // no listed_ or pose(): posed where read
+      body_candidates(near, [&](std::uint32_t b) { return sphere_pose(bodies, b); }, range_p, fresh);
+      fresh.gap_at_build = {};  // the sphere kernel's test is the distance itself: 12 bytes a pair freed
+      fresh.slot_gap = {};
+    } else {
+      mark_listed(bodies.size(), near, fresh_d.pairs);
+      pose(bodies);
+      body_candidates(near, [&](std::uint32_t b) -> const PosedBody& { return posed_[b]; }, range_p, fresh);
+    }
   }
+  size_slots(fresh);  // once the broad phase's pairs are freed
   carry_history(old_body, fresh);
   old_body = PairList{};
+  size_results(fresh);
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
   body_index_.build(body_list_.pairs, bodies.size(), true);
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
-  for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k)
-    drivers.candidates(posed_[fresh_d.pairs[k].i], fresh_d.pairs[k].j, range_d, per_pair[k]);
+  for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k) {
+    const std::uint32_t i = fresh_d.pairs[k].i;
+    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, range_d, per_pair[k]);
+  }
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
-  fill_slots(per_pair, nullptr, fresh_d);
+  fill_driver_slots(per_pair, fresh_d);
+  size_slots(fresh_d);
   carry_history(old_driver, fresh_d);
+  size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
-  mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
+  if (spheres_only_)
+    keep_sphere_poses(bodies, spheres_posed_each_step_ || (settings_.driver.contact_mass && !driver_list_.pairs.empty()));
+  else
+    mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
   mark_drivers(bodies, drivers);

@@ -121,6 +121,12 @@ class ContactEngine {
 
  private:
   void pose(const LocalBodies& bodies);
+  void keep_sphere_poses(const LocalBodies& bodies, bool needed);
+  // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.
+  PosedBody sphere_pose(const LocalBodies& bodies, std::size_t b) const {
+    const Vec3& x = (*bodies.position)[b];
+    return {&shapes_[(*bodies.shape)[b]], &x, Mat3::Identity(), x, radius_[b], (*bodies.scale)[b]};
+  }
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void reduce_bodies(const LocalBodies& bodies) const;
   void reduce_drivers(Drivers& drivers) const;
@@ -134,7 +140,7 @@ class ContactEngine {
   double band_particle_, band_driver_;    // m, interaction band beyond touching (cohesion)
   std::vector<std::uint32_t> vertex_offset_;
   std::vector<Vec3> world_vertices_;
-  std::vector<PosedBody> posed_;
+  std::vector<PosedBody> posed_;           // spheres: empty unless keep_sphere_poses keeps them
   std::vector<std::uint32_t> listed_;      // bodies in some pair: the only ones posed each step
   std::vector<double> bounding_;           // m, scaled bounding radius per body
   // m, per body, the farthest core point from the centre: gaps are core distances less the
@@ -147,8 +153,9 @@ class ContactEngine {
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
   // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
-  // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves).
-  bool spheres_posed_each_step_ = true;
+  // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves;
+  // false before the first, which needs none: keep_sphere_poses sizes posed_ there).
+  bool spheres_posed_each_step_ = false;
   PairList body_list_, driver_list_;
   // Each driver's placement and whether it was active when the lists were built: all the
   // rebuild trigger compares (no names, shapes or meshes copied at a rebuild).

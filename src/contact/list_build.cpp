@@ -1,0 +1,101 @@
+#include "contact/list_build.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace polydem {
+
+float gap_below(double core_distance2, double radii) {
+  const double gap = std::sqrt(core_distance2) - radii;
+  const float f = static_cast<float>(gap);
+  return static_cast<double>(f) > gap ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+void sorted_by_key(const std::vector<FeaturePair>& candidates, std::vector<std::uint32_t>& order) {
+  order.resize(candidates.size());
+  std::iota(order.begin(), order.end(), 0u);
+  const auto by_key = [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); };
+  if (!std::is_sorted(candidates.begin(), candidates.end(), by_key))
+    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return by_key(candidates[x], candidates[y]); });
+}
+
+void CandidateBlock::add(BodyPair p, const PosedBody& a, const PosedBody& b, double range,
+                         std::vector<FeaturePair>& found, std::vector<double>& distances2,
+                         std::vector<std::uint32_t>& order) {
+  found.clear();
+  distances2.clear();
+  const double smallest = candidate_features(a, b, range, found, &distances2);  // m
+  if (found.empty()) return;
+  pairs.push_back(p);
+  pair_gap.push_back(smallest);
+  count.push_back(std::uint32_t(found.size()));
+  sorted_by_key(found, order);
+  for (std::uint32_t c : order) {
+    features.push_back(found[c]);
+    gaps.push_back(gap_below(distances2[c], a.radius + b.radius));
+  }
+}
+
+void join_blocks(std::vector<CandidateBlock>& blocks, PairList& list) {
+  std::vector<std::size_t> first_pair(blocks.size() + 1, 0), first_slot(blocks.size() + 1, 0);
+  for (std::size_t blk = 0; blk < blocks.size(); ++blk) {
+    first_pair[blk + 1] = first_pair[blk] + blocks[blk].pairs.size();
+    first_slot[blk + 1] = first_slot[blk] + blocks[blk].features.size();
+  }
+  list.pairs.resize(first_pair.back());
+  list.gap_at_build.resize(first_pair.back());
+  list.slot_begin.assign(first_pair.back() + 1, 0);
+  list.features.resize(first_slot.back());
+  list.slot_gap.resize(first_slot.back());
+  parallel_for(blocks.size(), [&](std::size_t blk) {
+    CandidateBlock& from = blocks[blk];
+    std::copy(from.pairs.begin(), from.pairs.end(), list.pairs.begin() + first_pair[blk]);
+    std::copy(from.pair_gap.begin(), from.pair_gap.end(), list.gap_at_build.begin() + first_pair[blk]);
+    std::copy(from.features.begin(), from.features.end(), list.features.begin() + first_slot[blk]);
+    std::copy(from.gaps.begin(), from.gaps.end(), list.slot_gap.begin() + first_slot[blk]);
+    std::uint32_t end = std::uint32_t(first_slot[blk]);  // of the pair's run
+    for (std::size_t k = 0; k < from.count.size(); ++k) list.slot_begin[first_pair[blk] + k + 1] = end += from.count[k];
+    from = CandidateBlock{};
+  });
+}
+
+void free_results(PairList& list) {
+  for (auto* v : {&list.force_i, &list.torque_i, &list.torque_j}) *v = {};
+  list.touching = {};
+  list.linear_steps = {};
+  list.block_energy = {};
+  list.block_contacts = {};
+  list.pair_energy = {};
+  list.gap_at_build = {};
+  list.slot_gap = {};
+}
+
+void size_slots(PairList& list) {
+  const std::size_t n_slots = list.slot_begin.back();
+  list.slots.assign(n_slots, ContactSlot{});
+  list.records.assign(list.recording ? n_slots : 0, SlotRecord{});
+  list.active.assign(n_slots, 0);
+  list.touching.assign(list.size(), 0);
+}
+
+void size_results(PairList& list) {
+  std::vector<std::uint16_t> touching = std::move(list.touching);
+  list.resize_results();  // zeroes `touching` too
+  list.touching = std::move(touching);
+}
+
+void fill_driver_slots(const std::vector<std::vector<FeaturePair>>& per_pair, PairList& list) {
+  list.slot_begin.assign(per_pair.size() + 1, 0);
+  for (std::size_t k = 0; k < per_pair.size(); ++k)
+    list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
+  list.features.resize(list.slot_begin.back());
+  list.slot_gap.assign(list.slot_begin.back(), -std::numeric_limits<float>::infinity());
+  parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
+    thread_local std::vector<std::uint32_t> order;
+    sorted_by_key(per_pair[k], order);
+    for (std::size_t r = 0; r < order.size(); ++r) list.features[list.slot_begin[k] + r] = per_pair[k][order[r]];
+  });
+}
+
+}  // namespace polydem

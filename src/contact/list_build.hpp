@@ -1,0 +1,73 @@
+#pragma once
+// A rebuild's lists laid out: the body pairs' candidate feature pairs found block by block and
+// joined into a PairList's pairs, slot runs, keys and gaps, then the slots' state sized. No
+// vector per pair: at 91k spheres two allocations of 32 bytes or more a pair were the
+// rebuild's peak.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "contact/contact_lists.hpp"
+#include "polydem/parallel.hpp"
+
+namespace polydem {
+
+// m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
+float gap_below(double core_distance2, double radii);
+
+// The order of a pair's candidates by key (candidate_features gives body pairs sorted: kept as they are).
+void sorted_by_key(const std::vector<FeaturePair>& candidates, std::vector<std::uint32_t>& order);
+
+// The candidates of kCandidateBlock near pairs: the pairs with some candidate, each one's
+// smallest gap, its number of candidates, and the candidates in key order with their gaps.
+constexpr std::size_t kCandidateBlock = 64;
+struct CandidateBlock {
+  std::vector<BodyPair> pairs;
+  std::vector<double> pair_gap;  // m
+  std::vector<std::uint32_t> count;
+  std::vector<FeaturePair> features;
+  std::vector<float> gaps;  // m, lower bounds
+  // Adds pair p's candidates unless it has none (it cannot touch before the next rebuild).
+  void add(BodyPair p, const PosedBody& a, const PosedBody& b, double range, std::vector<FeaturePair>& found,
+           std::vector<double>& distances2, std::vector<std::uint32_t>& order);
+};
+
+// Lays the blocks out as `list`'s pairs, slot_begin, features, slot_gap and gap_at_build, in
+// block order (the near pairs' order), freeing each block once copied.
+void join_blocks(std::vector<CandidateBlock>& blocks, PairList& list);
+
+// Candidates of the body pairs whose bounding spheres overlap, laid out in `list` (pairs with
+// none stay out of the per-step loop: half the pairs in a pile). pose_of(b): body b's pose (a
+// sphere's made on the spot). The blocks are found in parallel; the result is the same for
+// any thread count.
+template <class PoseOf>
+void body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, double range, PairList& list) {
+  std::vector<CandidateBlock> blocks((near.size() + kCandidateBlock - 1) / kCandidateBlock);
+  in_team(near.size() >= kParallelMinItems, [&] {
+    std::vector<FeaturePair> found;
+    std::vector<double> distances2;  // m^2
+    std::vector<std::uint32_t> order;
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t blk = 0; blk < blocks.size(); ++blk)
+      for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k)
+        blocks[blk].add(near[k], pose_of(near[k].i), pose_of(near[k].j), range, found, distances2, order);
+  });
+  join_blocks(blocks, list);
+}
+
+// Frees what active_part does not read (the last step's results, the gaps at the build: ~100
+// bytes a pair), before it copies the active part: a rebuild's peak held the whole old list.
+void free_results(PairList& list);
+
+// Sizes the per-slot state (springs, records, active flags) and the pairs' contact counts of a
+// list whose pairs, runs and keys are laid out: what carry_history fills.
+void size_slots(PairList& list);
+// Then the per-pair results, keeping the counts: sized once the old list is freed (a
+// rebuild's peak held both, 98 bytes a pair).
+void size_results(PairList& list);
+
+// Lays out per-pair candidate lists as the slots of a driver list, each run sorted by key,
+// gaps -inf (never skipped: drivers move).
+void fill_driver_slots(const std::vector<std::vector<FeaturePair>>& per_pair, PairList& list);
+
+}  // namespace polydem

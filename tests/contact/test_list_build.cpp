@@ -1,0 +1,111 @@
+// A rebuild lays its candidates out block by block (contact/list_build.hpp): the list must be
+// the one a pair-by-pair build gives (pairs with candidates, runs in key order, the gaps at the
+// build), whatever the thread count; and sizing the results after carry_history keeps the
+// contact counts it carried.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <omp.h>
+
+#include "../geometry/test_shapes.hpp"
+#include "contact/list_build.hpp"
+
+using namespace polydem;
+using namespace polydem::test;
+
+namespace {
+
+// Bodies of every kind, in random poses in a box where a third of the pairs are near.
+std::vector<Posed> random_bodies(const std::vector<Shape>& shapes, std::size_t n) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 3.0);
+  std::vector<Posed> bodies;
+  for (std::size_t b = 0; b < n; ++b)
+    bodies.emplace_back(shapes[b % shapes.size()], 1.0, Vec3(u(rng), u(rng), u(rng)), random_rotation(rng));
+  return bodies;
+}
+
+// The list built pair by pair: what the blocks must join into.
+PairList reference(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed, double range) {
+  PairList list;
+  list.slot_begin.push_back(0);
+  for (const BodyPair& p : near) {
+    std::vector<FeaturePair> found;
+    std::vector<double> d2;  // m^2
+    const double smallest = candidate_features(posed[p.i], posed[p.j], range, found, &d2);
+    if (found.empty()) continue;
+    std::vector<std::uint32_t> order;
+    sorted_by_key(found, order);
+    for (std::uint32_t c : order) {
+      list.features.push_back(found[c]);
+      list.slot_gap.push_back(gap_below(d2[c], posed[p.i].radius + posed[p.j].radius));
+    }
+    list.pairs.push_back(p);
+    list.gap_at_build.push_back(smallest);
+    list.slot_begin.push_back(std::uint32_t(list.features.size()));
+  }
+  return list;
+}
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+std::vector<std::uint64_t> keys(const std::vector<FeaturePair>& features) {  // FeaturePair has padding
+  std::vector<std::uint64_t> out;
+  for (const FeaturePair& f : features) out.push_back(feature_key(f));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("body candidates joined from blocks equal the pair-by-pair list at 1 and 2 threads") {
+  const std::vector<Shape> shapes = {make_sphere(0.3), make_cube(0.5, 0.05), make_octahedron(0.6, 0.04),
+                                     make_hex_prism(0.5, 0.3, 0.05), make_tetrahedron(0.4, 0.05)};
+  const std::vector<Posed> bodies = random_bodies(shapes, 60);
+  std::vector<PosedBody> posed;
+  for (const Posed& b : bodies) posed.push_back(b.body());
+  const double range = 0.05;  // m
+  std::vector<BodyPair> near;  // bounding spheres within range: some pairs have no candidate
+  for (std::uint32_t i = 0; i < posed.size(); ++i)
+    for (std::uint32_t j = i + 1; j < posed.size(); ++j)
+      if ((posed[i].position - posed[j].position).norm() <
+          posed[i].shape->bounding_radius + posed[j].shape->bounding_radius + range)
+        near.push_back({i, j});
+  REQUIRE(near.size() > 4 * kCandidateBlock);  // several blocks, in parallel
+  const PairList want = reference(near, posed, range);
+  REQUIRE(want.size() < near.size());          // pairs without candidates are dropped
+  REQUIRE(want.features.size() > want.size());  // runs of several candidates
+  const int threads_before = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    PairList got;
+    body_candidates(near, [&](std::uint32_t b) -> const PosedBody& { return posed[b]; }, range, got);
+    CHECK(same_bytes(got.pairs, want.pairs));
+    CHECK(same_bytes(got.slot_begin, want.slot_begin));
+    CHECK(keys(got.features) == keys(want.features));
+    CHECK(same_bytes(got.slot_gap, want.slot_gap));
+    CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+  }
+  omp_set_num_threads(threads_before);
+}
+
+TEST_CASE("a list's results sized after carry_history keep the contact counts it carried") {
+  PairList old;
+  old.pairs = {{0, 1}, {1, 2}};
+  old.slot_begin = {0, 2, 3};
+  old.features = {FeaturePair{PairType::vertex_face, 0, 1}, FeaturePair{PairType::edge_edge, 1, 2},
+                  FeaturePair{PairType::vertex_vertex, 0, 0}};
+  size_slots(old);
+  old.active = {1, 1, 1};
+  PairList fresh = old;  // the same keys: every history carried
+  fresh.active.assign(3, 0);
+  size_slots(fresh);
+  carry_history(old, fresh);
+  size_results(fresh);
+  CHECK(fresh.touching == std::vector<std::uint16_t>{2, 1});
+  CHECK(fresh.force_i.size() == 2);
+  CHECK(fresh.linear_steps.size() == 2);
+  CHECK(fresh.block_energy.size() == 1);
+}
