@@ -60,11 +60,18 @@ TEST_CASE("accuracy: sphere-sphere restitution, masses 1 : 2.74, at 0.1 and 0.3 
 
 TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical", "[validation][second_order]") {
   const double at_auto = oblique_impact(0.1), at_03 = oblique_impact(0.3);
-  std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
-  // The sphere takes the exact normal step (the default): its Coulomb cap reads the sampled
-  // force, measured 1.56e-3 and 9.2e-3 (9e-4 and 1.6e-3 with the end-of-step dashpot).
+  const double worst_auto = oblique_impact_worst_phase(0.1), worst_03 = oblique_impact_worst_phase(0.3);
+  std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3; worst of 16 touch places %.2e and %.2e\n", at_auto,
+              at_03, worst_auto, worst_03);
+  // The sphere takes the exact normal step (the default), its Coulomb cap the force at n+1
+  // where it slips: measured 1.10e-3 and 2.70e-3, at the worst of 16 touch places 2.11e-3 and
+  // 1.16e-2 (the cap on the sampled force: 1.56e-3 and 9.25e-3, worst 1.83e-3 and 1.44e-2;
+  // the end-of-step dashpot throughout: 9e-4 and 1.6e-3). The goal at 0.3, 1%, is not reached
+  // at every touch place.
   CHECK(at_auto <= 2e-3);
-  CHECK(at_03 <= 0.01);
+  CHECK(at_03 <= 5e-3);
+  CHECK(worst_auto <= 3e-3);
+  CHECK(worst_03 <= 0.015);
 }
 
 TEST_CASE("accuracy: damping_mass: contact, a cube landing on a corner rebounds there at en", "[validation][second_order]") {
