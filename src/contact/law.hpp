@@ -184,7 +184,8 @@ template <class Normal, bool kLone>
   const double nu_w = k.weight * c;  // N s/m
   NormalForce out;
   if constexpr (Normal::kCurved) {
-    if (overlap > 0.0) out.fp = normal_damped(spring, nu_w, vn_e);
+    const double nu = k.weight * nu_pair;  // N s/m
+    if (overlap > 0.0) out.fp = std::max(spring + Normal::cell_dashpot(nu, overlap, -vn_e, dt, h.gap >= 0.0), 0.0);
   } else {
     // N, unclamped and signed: the spring at -dn is `spring` inside the overlap (one evaluation).
     const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;
