@@ -25,8 +25,9 @@ inline double critical_step(const Scene& scene, const ShapeLibrary& lib, const s
 // in its step the touch falls (the start gap is that share of the stroke 0.5 m/s x dt, plus
 // 1 nm); negative: a gap of 0.1 um (the sweep's one start).
 template <class SetStep>
-double sphere_wall_error(double en, bool exact, const SetStep& step, double phase = -1.0) {
-  Scene scene = base_scene(law(kKn, en), true);
+double sphere_wall_error(const ContactParams& config, bool exact, const SetStep& step, double phase = -1.0) {
+  const double en = config.en;
+  Scene scene = base_scene(config, true);
   scene.simulation.exact_step = exact;
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
   std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -0.5})};
@@ -41,7 +42,7 @@ double sphere_wall_error(double en, bool exact, const SetStep& step, double phas
 
 // The same at dt = fraction x critical.
 inline double binary_impact(double fraction, double en = kEn, bool exact = false) {
-  return sphere_wall_error(en, exact, [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+  return sphere_wall_error(law(kKn, en), exact, [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
     scene.simulation.dt = fraction * critical_step(scene, lib, specs);
   });
 }
@@ -52,7 +53,7 @@ inline double binary_impact_worst_phase(double fraction, double en, bool exact =
   double worst = 0.0;
   for (int k = 0; k < phases; ++k)
     worst = std::max(worst, sphere_wall_error(
-                                en, exact,
+                                law(kKn, en), exact,
                                 [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
                                   scene.simulation.dt = fraction * critical_step(scene, lib, specs);
                                 },
@@ -65,7 +66,7 @@ inline double binary_impact_at_auto_worst_phase(double en) {
   double worst = 0.0;
   for (int k = 0; k < 16; ++k)
     worst = std::max(worst, sphere_wall_error(
-                                en, true,
+                                law(kKn, en), true,
                                 [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
                                   scene.simulation.dt.reset();
                                   scene.simulation.dt = Simulation(scene, lib, specs).dt();  // the step auto took
@@ -76,10 +77,28 @@ inline double binary_impact_at_auto_worst_phase(double en) {
 
 // The same at `dt: auto` with `simulation: accuracy` (the step chosen for that error).
 inline double binary_impact_at_accuracy(double accuracy, double en = kEn) {
-  return sphere_wall_error(en, true, [&](Scene& scene, const ShapeLibrary&, const std::vector<BodySpec>&) {
+  return sphere_wall_error(law(kKn, en), true, [&](Scene& scene, const ShapeLibrary&, const std::vector<BodySpec>&) {
     scene.simulation.dt.reset();
     scene.simulation.accuracy = accuracy;
   });
+}
+
+// Hertz with Tsuji's dashpot (E 1e8 Pa, Poisson 0.3, as test_hertz_impact.cpp), sphere on a
+// wall at 0.5 m/s, dt = fraction x critical: the worst restitution error over `phases` touch
+// places in the step (one: the 0.1 um gap).
+inline double hertz_impact(double fraction, double en, int phases = 16) {
+  ContactParams config;
+  config.hertz = true;
+  config.young = 1e8;  // Pa
+  config.poisson = 0.3;
+  config.en = en;
+  const auto set_step = [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+    scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  };
+  if (phases == 1) return sphere_wall_error(config, false, set_step);
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k) worst = std::max(worst, sphere_wall_error(config, false, set_step, double(k) / phases));
+  return worst;
 }
 
 // Spheres of radius 5 and 7 mm (masses 1 : 2.74) meeting at 0.5 m/s: error of the restitution.
@@ -100,13 +119,15 @@ inline double sphere_pair_impact(double fraction, bool exact = false) {
 
 // Sphere on a wall at 45 deg, mu 0.3: error of v_t' and R w' against the RK4 reference, / v_t;
 // with the linear law's exact normal step (the default for spheres) or the end-of-step dashpot.
-inline double oblique_impact(double fraction, bool exact = true) {
+// `phase` as in sphere_wall_error (negative: a gap of 0.1 um).
+inline double oblique_impact(double fraction, bool exact = true, double phase = -1.0) {
   const double mu = 0.3, v = 0.3 * std::sqrt(0.5);  // m/s, both components
   Scene scene = base_scene(law(kKn, kEn, mu, kKn), true);
   scene.simulation.exact_step = exact;
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
-  const std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
+  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
   scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * v * *scene.simulation.dt;
   Simulation sim(scene, lib, specs);
   const MeasuredImpact r = run_impact(
       sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
@@ -118,6 +139,13 @@ inline double oblique_impact(double fraction, bool exact = true) {
     return reference.extrapolated(v, v, ClampedImpact{z, std::sqrt(kKn / m), v, m}.release_time(), change);
   }();
   return std::max(std::abs(r.velocity.x() - ref.vt), std::abs(kRadius * r.angular_velocity.y() - ref.spin)) / v;
+}
+
+// The largest error over `phases` touch places in the step (oblique_impact, the default step).
+inline double oblique_impact_worst_phase(double fraction, int phases = 16) {
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k) worst = std::max(worst, oblique_impact(fraction, true, double(k) / phases));
+  return worst;
 }
 
 // Cube landing on a corner off its centre (test_cube_landing.cpp): error of the contact-point

@@ -36,6 +36,10 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
       {"binary impact, worst of 16 touch phases", [](double f) { return binary_impact_worst_phase(f, kEn); }, 16},
       {"sphere-sphere 1:2.74", [](double f) { return sphere_pair_impact(f, true); }},
       {"oblique impact 45 deg", [](double f) { return oblique_impact(f, true); }},
+      {"oblique impact 45 deg, worst of 16 touch phases", [](double f) { return oblique_impact_worst_phase(f); }, 16},
+      {"Hertz en 0.1, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.1); }, 16},
+      {"Hertz en 0.5, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.5); }, 16},
+      {"Hertz en 0.9, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.9); }, 16},
       {"cube corner landing", cube_landing},
       {"cube corner, damping_mass: contact", [](double f) { return cube_corner_error(f, true); }},
       {"free top", free_top}};

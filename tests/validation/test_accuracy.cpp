@@ -60,11 +60,39 @@ TEST_CASE("accuracy: sphere-sphere restitution, masses 1 : 2.74, at 0.1 and 0.3 
 
 TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical", "[validation][second_order]") {
   const double at_auto = oblique_impact(0.1), at_03 = oblique_impact(0.3);
-  std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
-  // The sphere takes the exact normal step (the default): its Coulomb cap reads the sampled
-  // force, measured 1.56e-3 and 9.2e-3 (9e-4 and 1.6e-3 with the end-of-step dashpot).
+  const double worst_auto = oblique_impact_worst_phase(0.1), worst_03 = oblique_impact_worst_phase(0.3);
+  std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3; worst of 16 touch places %.2e and %.2e\n", at_auto,
+              at_03, worst_auto, worst_03);
+  // The sphere takes the exact normal step (the default), its Coulomb cap the force at n+1
+  // where it slips: measured 1.10e-3 and 2.70e-3, at the worst of 16 touch places 2.11e-3 and
+  // 1.16e-2 (the cap on the sampled force: 1.56e-3 and 9.25e-3, worst 1.83e-3 and 1.44e-2;
+  // the end-of-step dashpot throughout: 9e-4 and 1.6e-3). The goal at 0.3, 1%, is not reached
+  // at every touch place.
   CHECK(at_auto <= 2e-3);
-  CHECK(at_03 <= 0.01);
+  CHECK(at_03 <= 5e-3);
+  CHECK(worst_auto <= 3e-3);
+  CHECK(worst_03 <= 0.015);
+}
+
+// Hertz with Tsuji's dashpot: the dashpot's impulse over each Verlet cell in closed form
+// (normal_hertz.hpp, cell_dashpot). Sampling it was order 1.25, 1.4% off at 0.1 x critical for
+// en 0.5 at one touch place. Measured at the worst of 16 touch places (error at 0.1, at 0.3,
+// order between 0.1 and 0.05): en 0.1 3.53e-3, 4.49e-2, 2.33; en 0.5 8.33e-4, 1.01e-2, 1.77;
+// en 0.9 3.79e-4, 1.03e-2, 1.25. Not yet the linear rows' 0.2% / 1% and order 1.8: the clamp's
+// let-go (a kink) takes no push and en 0.1's fast decay is stiff for the step. Bounds: 1.3 x.
+TEST_CASE("accuracy: Hertz sphere-wall restitution wherever in the step it touches, at 0.1 and 0.3 x critical", "[validation][second_order]") {
+  struct Row {
+    double en, at_auto, at_03, order;
+  };
+  for (const Row& row : {Row{0.1, 4.5e-3, 0.06, 2.0}, Row{0.5, 1.1e-3, 0.013, 1.6}, Row{0.9, 5e-4, 0.013, 1.1}}) {
+    auto run = [&row](double fraction) { return hertz_impact(fraction, row.en); };
+    const double at_auto = run(0.1), at_03 = run(0.3), order = observed_order(run);
+    std::printf("Hertz en %.1f, worst touch place: error %.2e at 0.1, %.2e at 0.3, order %.2f\n", row.en, at_auto, at_03, order);
+    INFO("en = " << row.en);
+    CHECK(at_auto <= row.at_auto);
+    CHECK(at_03 <= row.at_03);
+    CHECK(order >= row.order);
+  }
 }
 
 TEST_CASE("accuracy: damping_mass: contact, a cube landing on a corner rebounds there at en", "[validation][second_order]") {

@@ -48,6 +48,18 @@ struct NormalHertz {
     return 2.0 * law.alpha_n * std::sqrt(2.0 * m_eff * law.e_star * std::sqrt(r_star));
   }
   [[gnu::always_inline]] static double damping(double nu_pair, double x) { return nu_pair * std::sqrt(std::sqrt(x)); }
+  // N, the dashpot's force at the sample of overlap x (m), rate r (m/s, > 0 closing, at the
+  // sample), nu (N s/m, the pair's times the weight): its impulse over the sample's Verlet cell
+  // (half a step either side) divided by dt (s). The dashpot nu x^1/4 dx/dt is the time
+  // derivative of 4/5 nu x^5/4, so that impulse is 4/5 nu (x^5/4 at the cell's ends), the ends'
+  // overlaps x +- r dt/2 (not below 0), and 0 at the start of the step where the overlap starts:
+  // its cell takes the impulse from the touch. Sampling nu x^1/4 r instead misses O(dt^1.25)
+  // where the overlap starts, x^1/4 being steep there (order 1.25).
+  [[gnu::always_inline]] static double cell_dashpot(double nu, double x, double r, double dt, bool onset) {
+    const auto grown = [](double y) { return y > 0.0 ? y * std::sqrt(std::sqrt(y)) : 0.0; };  // m^5/4
+    const double half = 0.5 * r * dt;  // m
+    return 0.8 * nu * (grown(x + half) - (onset ? 0.0 : grown(x - half))) / dt;
+  }
   // N/m, the tangent stiffnesses at the largest overlap of an impact of mass m (kg) at v (m/s)
   // on a contact of curvature r_star (m): the stability limit takes these.
   static double impact_stiffness(const LawParams& law, double m, double v, double r_star) {

@@ -17,26 +17,36 @@ namespace polydem {
 // trapezoid rule velocity Verlet applies) minus the change of its energy, which reduces to
 // (|trial| - cap)(old . trial/|trial| + cap)/(2k): cap times the slip when sliding steadily,
 // the stored energy when the cap drops to 0, and 0 while sticking.
-[[gnu::always_inline]] inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+// `at_slip(cap)`: the cap to take where the spring passes `cap` (the same unit): a finer one
+// (law.hpp: the force at n+1 under the exact step) that costs nothing while it sticks.
+template <class AtSlip>
+[[gnu::always_inline]] inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap,
+                                                   const AtSlip& at_slip) {
   const Vec3 old = spring;
   spring += increment;
   const double trial2 = spring.squaredNorm();
   if (trial2 <= cap * cap) return 0.0;  // sticking, the common case: no square root
+  cap = at_slip(cap);
+  if (trial2 <= cap * cap) return 0.0;
   const double trial = std::sqrt(trial2);
   const double along = old.dot(spring) / trial;  // old spring along the trial direction
   spring *= cap / trial;
   return (trial - cap) * (along + cap) / (2.0 * stiffness);
 }
+[[gnu::always_inline]] inline double capped_spring(Vec3& spring, const Vec3& increment, double stiffness, double cap) {
+  return capped_spring(spring, increment, stiffness, cap, [](double c) { return c; });
+}
 
-// Rotate ft into the plane normal to n keeping its length, add -kt_w vt dt, cap |ft| <= ft_max.
-// Returns J, the slip.
+// Rotate ft into the plane normal to n keeping its length, add -kt_w vt dt, cap |ft| <= ft_max
+// (at_slip: capped_spring). Returns J, the slip.
+template <class AtSlip>
 [[gnu::always_inline]] inline double tangential_spring(Vec3& ft, const Vec3& n, const Vec3& vt, double kt_w,
-                                                       double ft_max, double dt) {
+                                                       double ft_max, double dt, const AtSlip& at_slip) {
   const double length2 = ft.squaredNorm();
   ft -= ft.dot(n) * n;
   const double in_plane2 = ft.squaredNorm();
   if (in_plane2 > 0.0) ft *= std::sqrt(length2 / in_plane2);
-  return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max);
+  return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max, at_slip);
 }
 
 // J, energy held by a spring of stiffness k (0 for k = 0: that spring is off).
