@@ -1,6 +1,8 @@
 #include "contact/hertz_restitution.hpp"
 
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 namespace polydem {
@@ -45,9 +47,9 @@ double hertz_restitution_for_damping_ratio(double alpha) {
   return 0.0;  // never released: fully damped
 }
 
-double hertz_damping_ratio_for_restitution(double en) {
-  if (!(en > 0.0 && en <= 1.0)) throw std::invalid_argument("hertz_damping_ratio_for_restitution: en not in (0, 1]");
-  if (en == 1.0) return 0.0;
+namespace {
+
+double solve_damping_ratio(double en) {
   double lo = 0.0, hi = 0.5;
   while (hertz_restitution_for_damping_ratio(hi) > en) {
     lo = hi;
@@ -58,6 +60,21 @@ double hertz_damping_ratio_for_restitution(double en) {
     (hertz_restitution_for_damping_ratio(mid) > en ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+double hertz_damping_ratio_for_restitution(double en) {
+  if (!(en > 0.0 && en <= 1.0)) throw std::invalid_argument("hertz_damping_ratio_for_restitution: en not in (0, 1]");
+  if (en == 1.0) return 0.0;
+  // Solved once per en: each solve integrates ~40 impacts (~0.3 s), and every law built with
+  // that en (each run, each pair kind, each test's scene) asks again.
+  static std::mutex guard;
+  static std::map<double, double> solved;
+  const std::lock_guard<std::mutex> lock(guard);
+  const auto known = solved.find(en);
+  if (known != solved.end()) return known->second;
+  return solved[en] = solve_damping_ratio(en);
 }
 
 }  // namespace polydem
