@@ -3,13 +3,13 @@
 # corpus tests/fuzz/corpus/NAME, on one core. New inputs go to build-asan/fuzz/NAME/corpus,
 # findings (crash, leak, timeout > 10 s, > 2 GB) to build-asan/fuzz/NAME/crashes; the run goes
 # on after a finding. A finding, once fixed, is saved in tests/fuzz/crashes/NAME, which CI replays.
-# usage: tools/fuzz.sh [SECONDS] [TARGET...]   (default: 60 s; scene shp stl vti checkpoint)
+# usage: tools/fuzz.sh [SECONDS] [TARGET...]   (default: 60 s; scene body_table shp stl vti checkpoint)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene shp stl vti checkpoint)
+[ ${#targets[@]} -gt 0 ] || targets=(scene body_table shp stl vti checkpoint)
 bash tools/build_asan.sh "${targets[@]/#/fuzz_}"
 for t in "${targets[@]}"; do
   work="build-asan/fuzz/$t"

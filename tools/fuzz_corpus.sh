@@ -7,11 +7,16 @@ here="$(cd "$(dirname "$0")/../tests/fuzz" && pwd)"
 root="$here/../.."
 polydem="${1:-$root/build/polydem}"
 corpus="$here/corpus"
-rm -rf "$corpus" && mkdir -p "$corpus"/{scene,shp,stl,vti,checkpoint}
+rm -rf "$corpus" && mkdir -p "$corpus"/{scene,body_table,shp,stl,vti,checkpoint}
 for f in "$root"/samples/*/scene.yaml; do cp "$f" "$corpus/scene/$(basename "$(dirname "$f")").yaml"; done
 cp "$root/tests/app/drop.yaml" "$corpus/scene/drop.yaml"
 cp "$here/checkpoint_scene.yaml" "$corpus/scene/checkpoint_scene.yaml"
 cp "$root"/shapes/*.shp "$corpus/shp/"
+printf '%s\n' "# a table of every column" "shape, x, y, z, qw, qx, qy, qz, vx, vy, vz, wx, wy, wz, density, scale, group" \
+  "cube, 0, 0, 0.1, 1, 0, 0, 0, 0, 0, -1, 0, 0, 0, 2700, 1, 0" "sphere, 0.02, 0, 0.1, 0.5, 0.5, 0.5, 0.5, 0, 0, 0, 1, 2, 3, 1500, 1.5, 2" \
+  > "$corpus/body_table/all_columns.csv"
+printf '%s\n' "shape,x,y,z" "octahedron,1e-3,-2.5e-2,+3" "tetra,0,0,0" > "$corpus/body_table/required.csv"
+printf 'shape,x,y,z,density\r\ncube,0,0,0,2700\r\nrock,1,2,3,-1\r\n' > "$corpus/body_table/crlf_bad.csv"
 cp "$root/samples/silo/meshes/plate_D50.stl" "$corpus/stl/"   # binary (the hopper: 300 kB, too big a seed)
 cat > "$corpus/stl/tetra_ascii.stl" <<'STL'
 solid t

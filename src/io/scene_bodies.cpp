@@ -1,6 +1,7 @@
-// The `bodies:` list: explicit bodies and `generate: random | lattice` entries.
+// The `bodies:` list: explicit bodies, `generate: random | lattice` entries and body tables.
 #include <cmath>
 
+#include "io/scene_body_table.hpp"
 #include "io/scene_parts.hpp"
 #include "polydem/error.hpp"
 
@@ -10,6 +11,7 @@ namespace {
 const std::vector<std::string> kBodyKeys = {
     "shape",   "position", "orientation", "velocity", "angular_velocity",
     "density", "scale",    "group"};
+const std::vector<std::string> kTableKeys = {"file", "density", "scale", "group"};
 const std::vector<std::string> kGeneratorKeys = {"generate", "shapes",  "count",
                                                  "region",   "scale",   "orientation",
                                                  "velocity", "density", "group"};
@@ -136,8 +138,12 @@ void read_bodies(const YAML::Node& list, int line, Scene& scene) {
     if (!item.IsMap())
       throw InputError(
           input_message(scene.path, item_line, "bodies",
-                        "each body is a mapping like `- shape: cube` or `- generate: random`"));
-    if (item["generate"])
+                        "each body is a mapping like `- shape: cube`, `- generate: random` or "
+                        "`- file: bodies.csv`"));
+    if (item["file"])
+      read_body_table(YamlMap(item, "body table", scene.path, item_line, kTableKeys), scene.folder,
+                      scene.bodies);
+    else if (item["generate"])
       scene.generators.push_back(read_generator(item, scene.path, item_line));
     else
       scene.bodies.push_back(read_body(item, scene.path, item_line));

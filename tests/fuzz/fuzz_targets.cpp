@@ -68,6 +68,21 @@ void scene(const std::uint8_t* data, std::size_t size) {
   expect_clean([&] { load_scene(path); });
 }
 
+// The input is a body table (`- file: table.csv`) of a fixed scene that names the shipped
+// library, its bodies expanded against it (so unknown shapes are reached too).
+void body_table(const std::uint8_t* data, std::size_t size) {
+  static const std::string scene_path = [] {
+    const std::string text =
+        "simulation: {duration: 1, dt: \"1 us\"}\nshapes: [../../shapes/platonic.shp]\n"
+        "bodies:\n  - {file: table.csv, density: 2000}\n";
+    return write_input("table_scene.yaml", reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+  }();
+  static const ShapeLibrary library =
+      load_shape_library({std::string(POLYDEM_SOURCE_DIR) + "/shapes/platonic.shp"});
+  write_input("table.csv", data, size);
+  expect_clean([&] { expand_bodies(load_scene(scene_path), library); });
+}
+
 void shp(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   expect_clean([&] { read_shp(in, "fuzz.shp"); });
@@ -100,7 +115,7 @@ void checkpoint(const std::uint8_t* data, std::size_t size) {
 
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {
-      {"scene", scene}, {"shp", shp}, {"stl", stl}, {"vti", vti}, {"checkpoint", checkpoint}};
+      {"scene", scene}, {"body_table", body_table}, {"shp", shp}, {"stl", stl}, {"vti", vti}, {"checkpoint", checkpoint}};
   return all;
 }
 

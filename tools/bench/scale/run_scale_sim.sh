@@ -38,7 +38,7 @@ for order in lattice shuffled; do
   first=""
   for size in "${sizes[@]}"; do
     n=${size%%:*} steps=${size##*:}
-    python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" "$order" > "$work/scene.yaml"
+    python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" "$order" "$work/bodies.csv" > "$work/scene.yaml"
     read -r ir1 l11 ll1 <<< "$(counts "$work/scene.yaml" "$steps")"
     read -r ir2 l12 ll2 <<< "$(counts "$work/scene.yaml" $((2 * steps)))"
     row=$(python3 - "$n" "$steps" "$ir1" "$l11" "$ll1" "$ir2" "$l12" "$ll2" "${first:-0}" <<'EOF'

@@ -2,14 +2,16 @@
 lattice, the lowest layer on the floor, between four walls 0.5 mm clear of the outer spheres,
 at rest under gravity (a settled bed's 3 contacts a sphere, no settling run needed).
 ORDER `lattice` (default) numbers the spheres layer by layer, so neighbours sit near in memory;
-`shuffled` lists the same sites as explicit bodies in a seeded random order, as a pour leaves
-them (a body's neighbours anywhere in memory).
-usage: python3 scene.py N_SIDE SHAPE_LIBRARY [lattice|shuffled] > scene.yaml"""
+`shuffled` lists the same sites in a seeded random order, as a pour leaves them (a body's
+neighbours anywhere in memory), in a body table TABLE (a CSV the scene names; its path as
+the scene will read it, relative to the scene's folder or absolute).
+usage: python3 scene.py N_SIDE SHAPE_LIBRARY [lattice | shuffled TABLE] > scene.yaml"""
 import random
 import sys
 
 n, library = int(sys.argv[1]), sys.argv[2]
 order = sys.argv[3] if len(sys.argv) > 3 else "lattice"
+table = sys.argv[4] if order == "shuffled" else None
 side = n * 0.01 + 1e-9  # m, n spheres of diameter 1 cm, a hair more: the lattice fills the box, centred
 
 
@@ -23,8 +25,10 @@ def bodies_block():
     sites = [(i, j, k) for k in range(n) for j in range(n) for i in range(n)]
     random.Random(1).shuffle(sites)
     at = lambda i: repr(0.005 + 0.01 * i + 0.5e-9)  # m, the lattice generator's centred site
-    return "\n".join(f"  - {{shape: sphere, position: [{at(i)}, {at(j)}, {at(k)}], density: 2700}}"
-                     for i, j, k in sites)
+    with open(table, "w") as out:
+        out.write("shape,x,y,z\n")
+        out.writelines(f"sphere,{at(i)},{at(j)},{at(k)}\n" for i, j, k in sites)
+    return f"  - {{file: {table}, density: 2700}}"
 
 
 print(f"""simulation: {{duration: "1 s", dt: "5 us", skin: "0.1 mm", seed: 1}}
