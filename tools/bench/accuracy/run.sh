@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Work-precision diagram: five cases with known answers (sphere-wall and sphere-sphere impacts,
-# oblique impact, cube corner landing, free asymmetric top) across time steps; wall time and
+# Work-precision diagram: cases with known answers (sphere-wall and sphere-sphere impacts,
+# oblique impact, cube corner and flat landings, free asymmetric top) across time steps; wall time and
 # error per run. Writes tools/bench/accuracy/results.csv (machine, commit, case, dt_fraction,
 # wall_s, error), or OUT_CSV, and accuracy.png (log-log error against run time, one line per
 # case; reference.csv, an earlier commit's run, dashed beside it).
