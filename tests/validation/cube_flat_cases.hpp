@@ -4,7 +4,7 @@
 // frictionless wall, its four vertex-face contacts one patch (SPEC: the face rebounds with en).
 //  - flat: no torque, so the answer is the 1-D restitution at the contact: vz' = en v0;
 //  - tilted 1e-3 rad about x at 0.1 m/s: one edge touches ~9 um before the other (the overlap
-//    peaks near 13 um, so both take part); its answer is the same landing at 0.002 x critical,
+//    peaks near 13 um: both take part); its answer is the same landing at 0.002 x critical,
 //    the step error alone (the patch's physics is test_cube_landing's and the flat row's).
 // Each at dt = fraction x critical (`polydem check`), at `phases` places of the touch in its
 // step (gap = phase x v0 dt + 1 nm), the worst returned.
@@ -23,16 +23,14 @@ struct CubeRebound {
   double vz = 0.0, spin = 0.0;  // m/s, rad/s (about x) after the impact
 };
 
-// One landing at dt = fraction x critical, touching at `phase` of its step; `contact_mass`:
-// damping_mass: contact (the exact step) instead of the pair's mass.
-inline CubeRebound cube_face_landing(double fraction, double tilt, double speed, double phase, bool contact_mass = false) {
+// One landing at dt = fraction x critical, touching at `phase` of its step.
+inline CubeRebound cube_face_landing(double fraction, double tilt, double speed, double phase) {
   const Shape cube = cube_shape(kCubeSide, kCubeRounding);
   const ShapeLibrary lib = library({cube});
   const Quat q(Eigen::AngleAxisd(tilt, Vec3::UnitX()));
   double lowest = 1e9;
   for (const Vec3& p : cube.vertices) lowest = std::min(lowest, (q * p).z());
   Scene scene = base_scene(law(kKn, kEn), true);
-  scene.forces.contact.config_driver.damping_contact_mass = contact_mass;
   std::vector<BodySpec> specs = {body("cube", {0, 0, -lowest + cube.radius + 1e-7}, {0, 0, -speed}, q)};
   scene.simulation.dt = fraction * critical_step(scene, lib, specs);
   specs[0].position.z() = -lowest + cube.radius + 1e-9 + phase * speed * *scene.simulation.dt;
@@ -44,10 +42,10 @@ inline CubeRebound cube_face_landing(double fraction, double tilt, double speed,
 }
 
 // Flat: relative error of vz' / v0 against en, worst of `phases` touch places.
-inline double cube_flat_error(double fraction, int phases = 8, bool contact_mass = false) {
+inline double cube_flat_error(double fraction, int phases = 8) {
   double worst = 0.0;
   for (int k = 0; k < phases; ++k) {
-    const CubeRebound r = cube_face_landing(fraction, 0.0, kFlatSpeed, double(k) / phases, contact_mass);
+    const CubeRebound r = cube_face_landing(fraction, 0.0, kFlatSpeed, double(k) / phases);
     worst = std::max(worst, std::abs(r.vz / kFlatSpeed / kEn - 1.0));
   }
   return worst;

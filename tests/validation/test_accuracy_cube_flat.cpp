@@ -16,8 +16,7 @@ TEST_CASE("accuracy: cube landing flat rebounds at en, at 0.1 and 0.3 x critical
   const double at_auto = cube_flat_error(0.1), at_03 = cube_flat_error(0.3), at_005 = cube_flat_error(0.05);
   const double order = std::log2(at_auto / at_005);
   std::printf("cube flat, worst of 8 touch places: error %.2e at 0.1, %.2e at 0.3, order %.2f\n", at_auto, at_03, order);
-  // Measured 3.1e-4 at 0.1, 4.7e-3 at 0.3, order 2.29 (the same at every touch place: the
-  // patch's onset is placed in its step, what is left is the dashpot's).
+  // Measured 3.1e-4 at 0.1, 4.7e-3 at 0.3, order 2.29, the same at each of the 8 touch places.
   CHECK(at_auto <= 3e-3);
   CHECK(at_03 <= 0.015);
   CHECK(order >= 1.8);
