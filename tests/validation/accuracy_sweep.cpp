@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accuracy_cases.hpp"
+#include "cube_flat_cases.hpp"
 
 using namespace polydem;
 using namespace polydem::test;
@@ -42,6 +43,8 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
       {"Hertz en 0.9, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.9); }, 16},
       {"cube corner landing", cube_landing},
       {"cube corner, damping_mass: contact", [](double f) { return cube_corner_error(f, true); }},
+      {"cube flat, worst of 8 touch places", [](double f) { return cube_flat_error(f); }, 8},
+      {"cube tilted 1e-3 rad, worst of 8 touch places", [](double f) { return cube_tilted_error(f); }, 8},
       {"free top", free_top}};
   for (const auto& [name, run, runs] : cases) {
     for (double fraction : {0.5, 0.4, 0.3, 0.25, 0.2, 0.18, 0.15, 0.1, 0.07, 0.05, 0.03, 0.02, 0.01, 0.005, 0.002}) {

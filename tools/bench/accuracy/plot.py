@@ -50,8 +50,9 @@ def main(path, png, reference=None):
     cases, commit = read(path)
     fig, ax = plt.subplots(figsize=(7, 5))
     colours = {}
-    for name, runs in cases.items():
-        line, = ax.loglog([r[1] for r in runs], [max(r[2], 1e-9) for r in runs], "o-", label=f"{name} ({commit})")
+    for k, (name, runs) in enumerate(cases.items()):  # tab20: no colour shared by two of up to 20 cases
+        line, = ax.loglog([r[1] for r in runs], [max(r[2], 1e-9) for r in runs], "o-", color=plt.cm.tab20(k % 20),
+                          label=f"{name} ({commit})")
         colours[name] = line.get_color()
         for f, w, e in runs[::3]:
             ax.annotate(f"{f:g}", (w, max(e, 1e-9)), fontsize=7, textcoords="offset points", xytext=(3, 3))

@@ -1,0 +1,66 @@
+#pragma once
+// The cube-flat rows of the accuracy sweep (accuracy_sweep.cpp, tools/bench/accuracy) and of
+// test_accuracy_cube_flat.cpp: a rounded cube (9 mm, rounding 0.5 mm) landing on its face on a
+// frictionless wall, its four vertex-face contacts one patch (SPEC: the face rebounds with en).
+//  - flat: no torque, so the answer is the 1-D restitution at the contact: vz' = en v0;
+//  - tilted 1e-3 rad about x at 0.1 m/s: one edge touches ~9 um before the other (the overlap
+//    peaks near 13 um: both take part); its answer is the same landing at 0.002 x critical,
+//    the step error alone (the patch's physics is test_cube_landing's and the flat row's).
+// Each at dt = fraction x critical (`polydem check`), at `phases` places of the touch in its
+// step (gap = phase x v0 dt + 1 nm), the worst returned.
+#include <algorithm>
+#include <cmath>
+
+#include "accuracy_cases.hpp"
+
+namespace polydem::validation::accuracy {
+
+constexpr double kCubeSide = 0.009, kCubeRounding = 0.0005;  // m
+constexpr double kTilt = 1e-3;                               // rad, the tilted landing's
+constexpr double kFlatSpeed = 0.01, kTiltSpeed = 0.1;        // m/s
+
+struct CubeRebound {
+  double vz = 0.0, spin = 0.0;  // m/s, rad/s (about x) after the impact
+};
+
+// One landing at dt = fraction x critical, touching at `phase` of its step.
+inline CubeRebound cube_face_landing(double fraction, double tilt, double speed, double phase) {
+  const Shape cube = cube_shape(kCubeSide, kCubeRounding);
+  const ShapeLibrary lib = library({cube});
+  const Quat q(Eigen::AngleAxisd(tilt, Vec3::UnitX()));
+  double lowest = 1e9;
+  for (const Vec3& p : cube.vertices) lowest = std::min(lowest, (q * p).z());
+  Scene scene = base_scene(law(kKn, kEn), true);
+  std::vector<BodySpec> specs = {body("cube", {0, 0, -lowest + cube.radius + 1e-7}, {0, 0, -speed}, q)};
+  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  specs[0].position.z() = -lowest + cube.radius + 1e-9 + phase * speed * *scene.simulation.dt;
+  Simulation sim(scene, lib, specs);
+  const MeasuredImpact out = run_impact(
+      sim, speed, [&] { return 0.0; }, [&] { return sim.drivers[0].force.z(); }, [&] { return sim.bodies.velocity[0].z(); });
+  if (out.restitution < 0.0) return {1e9, 1e9};  // never let go: every error check fails
+  return {out.velocity.z(), out.angular_velocity.x()};
+}
+
+// Flat: relative error of vz' / v0 against en, worst of `phases` touch places.
+inline double cube_flat_error(double fraction, int phases = 8) {
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k) {
+    const CubeRebound r = cube_face_landing(fraction, 0.0, kFlatSpeed, double(k) / phases);
+    worst = std::max(worst, std::abs(r.vz / kFlatSpeed / kEn - 1.0));
+  }
+  return worst;
+}
+
+// Tilted: max(|vz' - ref|, half side x |w' - ref|) / v0 against the landing at 0.002 x
+// critical (computed once), worst of `phases` touch places.
+inline double cube_tilted_error(double fraction, int phases = 8) {
+  static const CubeRebound ref = cube_face_landing(0.002, kTilt, kTiltSpeed, 0.0);
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k) {
+    const CubeRebound r = cube_face_landing(fraction, kTilt, kTiltSpeed, double(k) / phases);
+    worst = std::max(worst, std::max(std::abs(r.vz - ref.vz), 0.5 * kCubeSide * std::abs(r.spin - ref.spin)) / kTiltSpeed);
+  }
+  return worst;
+}
+
+}  // namespace polydem::validation::accuracy
