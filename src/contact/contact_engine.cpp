@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "polydem/parallel.hpp"
+#include "polydem/release.hpp"
 #include "contact/list_build.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
@@ -132,8 +133,8 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
 // wall, or the contact point's mass): 152 bytes a body (the pose and its vertex) otherwise freed.
 void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
   if (!needed) {
-    posed_ = {};
-    world_vertices_ = {};
+    release(posed_);
+    release(world_vertices_);
     return;
   }
   const std::size_t n = bodies.size();
@@ -210,8 +211,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     fresh_d.pairs = near_drivers(bodies, drivers, range_d);
     if (spheres_only_) {  // no listed_ or pose(): posed where read
       body_candidates(near, [&](std::uint32_t b) { return sphere_pose(bodies, b); }, range_p, fresh);
-      fresh.gap_at_build = {};  // the sphere kernel's test is the distance itself: 12 bytes a pair freed
-      fresh.slot_gap = {};
+      release(fresh.gap_at_build);  // the sphere kernel's test is the distance itself: 12 bytes a pair freed
+      release(fresh.slot_gap);
     } else {
       mark_listed(bodies.size(), near, fresh_d.pairs);
       pose(bodies);

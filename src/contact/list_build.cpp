@@ -4,6 +4,8 @@
 #include <limits>
 #include <numeric>
 
+#include "polydem/release.hpp"
+
 namespace polydem {
 
 float gap_below(double core_distance2, double radii) {
@@ -61,14 +63,14 @@ void join_blocks(std::vector<CandidateBlock>& blocks, PairList& list) {
 }
 
 void free_results(PairList& list) {
-  for (auto* v : {&list.force_i, &list.torque_i, &list.torque_j}) *v = {};
-  list.touching = {};
-  list.linear_steps = {};
-  list.block_energy = {};
-  list.block_contacts = {};
-  list.pair_energy = {};
-  list.gap_at_build = {};
-  list.slot_gap = {};
+  for (auto* v : {&list.force_i, &list.torque_i, &list.torque_j}) release(*v);
+  release(list.touching);
+  release(list.linear_steps);
+  release(list.block_energy);
+  release(list.block_contacts);
+  release(list.pair_energy);
+  release(list.gap_at_build);
+  release(list.slot_gap);
 }
 
 void size_slots(PairList& list) {

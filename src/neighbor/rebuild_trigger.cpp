@@ -4,6 +4,7 @@
 #include <string>
 
 #include "polydem/parallel.hpp"
+#include "polydem/release.hpp"
 
 namespace polydem {
 namespace {
@@ -30,7 +31,7 @@ void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Qu
                                 std::to_string(q.size()) + " orientations");
   }
   x_built = x;
-  if (points) q_built = {};
+  if (points) release(q_built);
   else q_built = q;
   displacement_.assign(x.size(), 0.0);
   exceeded_.store(false, std::memory_order_relaxed);

@@ -19,6 +19,7 @@
 #include "sim/checkpoint.hpp"
 #include "sim/checkpoint_pieces.hpp"
 #include "sim/contact_table.hpp"
+#include "sim/last_good.hpp"
 #include "sim/probes.hpp"
 #include "sim/run_limits.hpp"
 #include "sim/thread_governor.hpp"
@@ -315,28 +316,6 @@ std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
   return buf;
 }
 
-// The moving state of the last finiteness check, all a blow-up report writes: 104 bytes a body
-// where a copy of Bodies is 272 (shape, scale and group are constant: the run's own are read).
-struct LastGood {
-  std::vector<Vec3> position, velocity, angular_velocity;  // m, m/s, rad/s
-  std::vector<Quat> orientation;
-  void keep(const Bodies& b) {
-    position = b.position;
-    velocity = b.velocity;
-    angular_velocity = b.angular_velocity;
-    orientation = b.orientation;
-  }
-  // The bodies as they were: the constant fields from `now`, the moving ones kept.
-  Bodies with_constants_of(const Bodies& now) const {
-    Bodies then = now;
-    then.position = position;
-    then.velocity = velocity;
-    then.angular_velocity = angular_velocity;
-    then.orientation = orientation;
-    return then;
-  }
-};
-
 [[noreturn]] void fail_non_finite(const Simulation& sim, const std::string& what, const LastGood& last_good,
                                   std::int64_t good_step, const std::string& dir, bool first_check_after_resume) {
   const std::string good = dir + "/bodies_last_good.vtu";
@@ -396,6 +375,9 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     vtk.due(sim.time(), dt);
     csv.due(sim.time(), dt);
   }
+  // What is due now is written: the contacts' records, kept since the set-up's first step,
+  // are freed until a step whose state is written (56 bytes a sphere list's slot).
+  sim.engine().record_contacts(false);
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
   auto previous_term = std::signal(SIGTERM, on_interrupt);  // batch schedulers send it before killing

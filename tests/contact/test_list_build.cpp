@@ -109,3 +109,27 @@ TEST_CASE("a list's results sized after carry_history keep the contact counts it
   CHECK(fresh.linear_steps.size() == 2);
   CHECK(fresh.block_energy.size() == 1);
 }
+
+// `v = {}` keeps a vector's buffer: what a rebuild frees must give its memory back.
+TEST_CASE("a list's results, gaps and records are freed, not only emptied, before a rebuild copies its active part") {
+  PairList list;
+  list.pairs = {{0, 1}, {1, 2}, {2, 3}};
+  list.slot_begin = {0, 1, 2, 3};
+  list.features.assign(3, FeaturePair{PairType::vertex_vertex, 0, 0});
+  list.gap_at_build.assign(3, 0.0);
+  list.slot_gap.assign(3, 0.0f);
+  list.recording = true;
+  size_slots(list);
+  size_results(list);
+  list.pair_energy.resize(3);
+  REQUIRE(list.force_i.capacity() >= 3);
+  REQUIRE(list.records.capacity() >= 3);
+  free_results(list);
+  list.set_recording(false);
+  for (std::size_t c : {list.force_i.capacity(), list.torque_i.capacity(), list.torque_j.capacity(),
+                        list.touching.capacity(), list.linear_steps.capacity(), list.block_energy.capacity(),
+                        list.block_contacts.capacity(), list.pair_energy.capacity(), list.gap_at_build.capacity(),
+                        list.slot_gap.capacity(), list.records.capacity()})
+    CHECK(c == 0);
+  CHECK(list.slots.size() == 3);  // the histories stay: active_part reads them
+}

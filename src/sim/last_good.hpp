@@ -1,0 +1,43 @@
+#pragma once
+// What the run loop keeps of the state at each finiteness check, to write it
+// (bodies_last_good.vtu) when a later step blows up.
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "polydem/bodies.hpp"
+#include "polydem/release.hpp"
+
+namespace polydem {
+
+// The moving state of the last finiteness check, all a blow-up report writes: 104 bytes a body
+// where a copy of Bodies is 272 (shape, scale and group are constant: the run's own are read),
+// 72 while every orientation is exactly the identity (spheres: Rotor::sphere never turns one).
+struct LastGood {
+  std::vector<Vec3> position, velocity, angular_velocity;  // m, m/s, rad/s
+  std::vector<Quat> orientation;  // empty while every body's is the identity
+  void keep(const Bodies& b) {
+    position = b.position;
+    velocity = b.velocity;
+    angular_velocity = b.angular_velocity;
+    if (std::all_of(b.orientation.begin(), b.orientation.end(), is_identity)) release(orientation);
+    else orientation = b.orientation;
+  }
+  // The bodies as they were: the constant fields from `now`, the moving ones kept.
+  Bodies with_constants_of(const Bodies& now) const {
+    Bodies then = now;
+    then.position = position;
+    then.velocity = velocity;
+    then.angular_velocity = angular_velocity;
+    if (orientation.empty()) then.orientation.assign(position.size(), Quat::Identity());
+    else then.orientation = orientation;
+    return then;
+  }
+  // Bit for bit (a -0 is kept as it was).
+  static bool is_identity(const Quat& q) {
+    const Quat one = Quat::Identity();
+    return std::memcmp(q.coeffs().data(), one.coeffs().data(), sizeof(double) * 4) == 0;
+  }
+};
+
+}  // namespace polydem
