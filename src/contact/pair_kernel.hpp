@@ -22,6 +22,7 @@ struct BodyView {
   const Vec3* velocity_end;       // m/s, predicted for the end of the step (Bodies::velocity_end)
   const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;       // kg
+  bool any_sphere = true;   // some body is a sphere: else no body pair takes the exact step (no shape read per pair)
 };
 
 // True when the two bodies are farther apart than `band` along the line of their centres:
@@ -191,7 +192,8 @@ template <class Parts, class Partner>
   const Shape* shape_j = partner.shape(p.j);  // null: a driver, of infinite mass
   const bool exact_step =
       law.exact_step &&
-      (law.contact_mass || (bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
+      (law.contact_mass ||
+       (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     const std::uint32_t s = scratch.found[c].slot;
