@@ -122,6 +122,8 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   }
   spheres_only_ = settings_.spheres_only >= 0 ? settings_.spheres_only == 1
                   : std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
+  // Of this body set, as vertex_offset_ (a new set builds a new engine).
+  any_sphere_ = std::any_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
   radius_.resize(n);
   for (std::size_t b = 0; b < n; ++b) radius_[b] = shapes_[shape[b]].radius * scale[b];
   if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
@@ -333,7 +335,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
-                      bodies.angular_velocity_end->data(), bodies.mass->data()};
+                      bodies.angular_velocity_end->data(), bodies.mass->data(), any_sphere_};
   if (settings_.pair_energies) {  // a rank's share: its pairs' energies, summed again across ranks
 #pragma omp single
     {

@@ -158,6 +158,7 @@ class ContactEngine {
   RebuildTrigger trigger_;
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
+  bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
   // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
   // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves;

@@ -22,6 +22,7 @@ struct BodyView {
   const Vec3* velocity_end;       // m/s, predicted for the end of the step (Bodies::velocity_end)
   const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;       // kg
+  bool any_sphere = true;   // some body is a sphere: else no body pair takes the exact step (no shape read per pair)
 };
 
 // True when the two bodies are farther apart than `band` along the line of their centres:
@@ -118,11 +119,13 @@ inline void drop_shadowed(const PairList& list, double radii, bool a_convex, boo
 
 // The rigid motion of one side of a pair, read once per pair: a point p moves at v + w x (p - pivot).
 // `_end`: the same predicted for the end of the step (the dashpots read them; a driver's are its own).
+// References into the partner's own arrays, not copies: a copy per pair cost ~36 instructions of
+// moves through the stack (the kernels read each once).
 struct RigidMotion {
-  Vec3 velocity;          // m/s, of the pivot
-  Vec3 angular_velocity;  // rad/s
-  Vec3 pivot;             // m
-  Vec3 velocity_end, angular_velocity_end;  // m/s, rad/s
+  const Vec3& velocity;          // m/s, of the pivot
+  const Vec3& angular_velocity;  // rad/s
+  const Vec3& pivot;             // m
+  const Vec3 &velocity_end, &angular_velocity_end;  // m/s, rad/s
   Vec3 at(const Vec3& p) const { return velocity + angular_velocity.cross(p - pivot); }
   Vec3 at_end(const Vec3& p) const { return velocity_end + angular_velocity_end.cross(p - pivot); }
 };
@@ -189,7 +192,8 @@ template <class Parts, class Partner>
   const Shape* shape_j = partner.shape(p.j);  // null: a driver, of infinite mass
   const bool exact_step =
       law.exact_step &&
-      (law.contact_mass || (bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
+      (law.contact_mass ||
+       (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     const ContactPoint& g = scratch.found[c].geometry;
     const std::uint32_t s = scratch.found[c].slot;
