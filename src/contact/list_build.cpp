@@ -64,7 +64,7 @@ void free_results(PairList& list) {
   for (auto* v : {&list.force_i, &list.torque_i, &list.torque_j}) *v = {};
   list.touching = {};
   list.linear_steps = {};
-  list.block_energy = {};
+  list.energy = {};
   list.block_contacts = {};
   list.pair_energy = {};
   list.gap_at_build = {};

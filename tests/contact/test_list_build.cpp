@@ -107,5 +107,5 @@ TEST_CASE("a list's results sized after carry_history keep the contact counts it
   CHECK(fresh.touching == std::vector<std::uint16_t>{2, 1});
   CHECK(fresh.force_i.size() == 2);
   CHECK(fresh.linear_steps.size() == 2);
-  CHECK(fresh.block_energy.size() == 1);
+  CHECK(fresh.block_contacts.size() == 1);
 }
