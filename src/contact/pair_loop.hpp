@@ -15,8 +15,9 @@ namespace polydem {
 // Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
 // and each block's contact count in list.block_contacts (sized by resize_results); adds every
 // pair's energy to list.energy exactly (each thread its own sum, merged: any order gives the
-// same bits; the reader takes and clears it). kNoWait: the threads go on without meeting at the loop's end (the next
-// loop reads none of this list's results; a later barrier comes before anything that does).
+// same bits; the reader takes and clears it). kNoWait: the threads go on without meeting after
+// their merge (the next loop reads none of this list's results; a later barrier comes before
+// anything that does).
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
