@@ -5,6 +5,7 @@
 // Stored: |ft|^2/(2 kt_w); slip under the cap dissipates (capped_spring). Active when mu > 0
 // and kt_w > 0 (a sub-contact at the band edge has w = 0). Stability: kt on the tangential
 // contact-point mass (sim/time_step.cpp).
+#include <algorithm>
 #include <cmath>
 
 #include "contact/law/types.hpp"
