@@ -296,9 +296,11 @@ template <class Parts, bool kLone = false>
       const Vec3 vt_end = k.v_end - k.v_end.dot(k.normal) * k.normal;  // m/s, what the dashpot reads
       damper = tangential_dashpot(vt_end, vt, nu_t_w, ft_max, out.dissipated, dt);
     }
-    out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt,
+    // The linear spring is on within reach, Hertz's (kt ~ x^1/2) within the overlap.
+    const double dt_on = spring_on_time(Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
+    out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt_on,
                                     [&](double cap) { return at_end ? cap : law.mu * fp_at_slip(); });
-    out.dissipated += out.sliding;
+    out.dissipated += out.sliding + started_spring_work(h.ft, vt, dt - dt_on);
   } else if constexpr (Normal::kCurved) {
     // Hertz in the cohesion band (x = 0, so kt = 0): the tangential spring lets go.
     if (overlap == 0.0 && h.ft.squaredNorm() > 0.0) {

@@ -5,7 +5,8 @@
 //   v_t' = v_t - mu (1 + e) v_n,   R w' = R^2 mu J_n / I = 5/2 mu (1 + e) v_n,
 // valid while the contact point keeps slipping: v_t > 7/2 mu (1 + e) v_n, and from the first
 // step on: the cap jumps to mu nu v_n at touching (dashpot), so the spring must load as fast,
-// kt v_t dt >= mu nu v_n; otherwise a short stick (finite kt, not a law error) costs impulse.
+// kt v_t tau >= mu nu v_n over the time tau it is on in that step (from the touch: law.hpp);
+// otherwise a short stick (finite kt, not a law error) costs impulse.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -25,9 +26,9 @@ struct Outgoing {
   Vec3 spin;      // rad/s
 };
 
-// Wall z = 0 (normal +z), sphere approaching with v = (vt, 0, -vn), no spin. Touching at mid-step.
+// Wall z = 0 (normal +z), sphere approaching with v = (vt, 0, -vn), no spin. Touching a tenth into a step.
 Outgoing oblique_impact(const LawParams& law, double vt, double vn, double dt) {
-  Vec3 x(0, 0, kRadius + 10.5 * vn * dt), v(vt, 0, -vn), w = Vec3::Zero(), a = Vec3::Zero(),
+  Vec3 x(0, 0, kRadius + 10.1 * vn * dt), v(vt, 0, -vn), w = Vec3::Zero(), a = Vec3::Zero(),
       alpha = Vec3::Zero();
   ContactHistory h;
   bool touched = false;
@@ -65,7 +66,7 @@ TEST_CASE("oblique sliding impact on a wall: v_t' = v_t - mu (1+e) v_n, R w' = 5
     const double dt = 2 * kPi * std::sqrt(kMass / law.kn) / 200.0;  // s, T/200
     const double nu = 2 * law.alpha_n * std::sqrt(law.kn * kMass);  // N s/m
     REQUIRE(vt > 3.5 * p.mu * (1 + en) * vn);  // sliding all along
-    REQUIRE(p.kt * vt * dt >= p.mu * nu * vn);  // sliding from the first step
+    REQUIRE(p.kt * vt * 0.9 * dt >= p.mu * nu * vn);  // sliding from the first step (on for 0.9 dt)
     const Outgoing out = oblique_impact(law, vt, vn, dt);
     INFO("en = " << en);
     CHECK(out.velocity.z() == Approx(en * vn).epsilon(0.005));

@@ -78,7 +78,7 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
   const Pile p;
   const int kSteps = steps_to_contacts(p, 150, 300);  // through the pour into a settling pile
   const Outcome one = run(p, kSteps, nullptr);
-  REQUIRE(one.energy.contacts > 100);
+  REQUIRE(one.energy.contacts > 50);  // a pile: 86 at the end (e9e841f: springs start at the touch; 100+ before)
   REQUIRE(one.rebuilds > 5);
   for (int n : {2, 3}) {
     ThreadRanks all(n);

@@ -64,14 +64,19 @@ TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical
   std::printf("oblique 45 deg: error %.2e at 0.1, %.2e at 0.3; worst of 16 touch places %.2e and %.2e\n", at_auto,
               at_03, worst_auto, worst_03);
   // The sphere takes the exact normal step (the default), its Coulomb cap the force at n+1
-  // where it slips: measured 1.10e-3 and 2.70e-3, at the worst of 16 touch places 2.11e-3 and
-  // 1.16e-2 (the cap on the sampled force: 1.56e-3 and 9.25e-3, worst 1.83e-3 and 1.44e-2;
-  // the end-of-step dashpot throughout: 9e-4 and 1.6e-3). The goal at 0.3, 1%, is not reached
-  // at every touch place.
+  // where it slips, and its tangential spring starts at the touch inside the step where the
+  // overlap starts (law.hpp): measured 1.17e-3 and 7.32e-3, at the worst of 16 touch places
+  // 1.37e-3 and 9.24e-3. The spring on for the whole first step (its increment -kt vt dt from a
+  // touch late in the step) was 1.10e-3 and 2.70e-3 at this place but 2.11e-3 and 1.16e-2 at
+  // the worst, the touch at 13/16 of the step. The goals: 0.2% at 0.1, 1% at 0.3.
   CHECK(at_auto <= 2e-3);
-  CHECK(at_03 <= 5e-3);
-  CHECK(worst_auto <= 3e-3);
-  CHECK(worst_03 <= 0.015);
+  CHECK(at_03 <= 1e-2);
+  CHECK(worst_auto <= 2e-3);
+  CHECK(worst_03 <= 1e-2);
+  // Order: between 0.1 and 0.05 the worst place levels off (4.9e-4 at 0.05, 1.2e-4 at 0.025:
+  // order 1.50 there), so the order is taken between 0.3 and 0.1, where the error is well
+  // above that: measured 1.74 (1.55 with the spring on for the whole first step).
+  CHECK(std::log(worst_03 / worst_auto) / std::log(3.0) >= 1.6);
 }
 
 // Hertz with Tsuji's dashpot: the dashpot's impulse over each Verlet cell in closed form
@@ -111,6 +116,11 @@ TEST_CASE("accuracy: cube corner landing against the rigid-body impulse at 0.1 a
   std::printf("cube corner: error %.2e at 0.1, %.2e at 0.3\n", at_auto, at_03);
   CHECK(at_auto <= 3e-3);
   CHECK(at_03 <= 0.015);
+  // Order between 0.3 and 0.1 (measured 1.32e-2 and 2.49e-3: 1.52): below 0.1 the error meets
+  // the floor of the reference, the rigid-body impulse of an instantaneous impact against a
+  // contact of finite duration (5.6e-4, README), and halving the step from 0.1 gives 1.08e-3
+  // (order 1.21). Not yet the issue's 1.8: the pair's mass on the end-of-step dashpot.
+  CHECK(std::log(at_03 / at_auto) / std::log(3.0) >= 1.4);
 }
 
 TEST_CASE("accuracy: dt: auto on spheres, the exact step's step for 1e-3, rebounds within it wherever it touches", "[validation][step_accuracy]") {

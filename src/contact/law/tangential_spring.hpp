@@ -5,6 +5,7 @@
 // Stored: |ft|^2/(2 kt_w); slip under the cap dissipates (capped_spring). Active when mu > 0
 // and kt_w > 0 (a sub-contact at the band edge has w = 0). Stability: kt on the tangential
 // contact-point mass (sim/time_step.cpp).
+#include <algorithm>
 #include <cmath>
 
 #include "contact/law/types.hpp"
@@ -47,6 +48,22 @@ template <class AtSlip>
   const double in_plane2 = ft.squaredNorm();
   if (in_plane2 > 0.0) ft *= std::sqrt(length2 / in_plane2);
   return capped_spring(ft, -kt_w * dt * vt, kt_w, ft_max, at_slip);
+}
+
+// s, how long a spring on within gap `edge` (m) has been on over the step that took the gap from
+// gap_last to dn (m) at the normal velocity vn (m/s, < 0 closing): dt, but where it starts, the
+// time since the edge was crossed (the drift is a straight line). Counted from the step's start,
+// a spring that starts late in its step would hold kt vt dt, not kt vt tau: an O(dt) error in
+// ft (oblique 45 deg at 0.3 x critical, touch at 13/16 of the step: 1.16e-2 -> 6.4e-3).
+[[gnu::always_inline]] inline double spring_on_time(double edge, double gap_last, double dn, double vn, double dt) {
+  if (gap_last < edge || dn >= edge || vn >= 0.0) [[likely]] return dt;
+  return std::min((edge - dn) / -vn, dt);
+}
+// J, what the kicks' trapezoid takes from the bodies beyond what a spring ft (N) that started
+// from zero this step stores, when it was loaded over `off` (s) less than the step the bodies
+// moved at vt (m/s): -ft.vt off / 2 (0 where it did not start). The ledger counts it dissipated.
+[[gnu::always_inline]] inline double started_spring_work(const Vec3& ft, const Vec3& vt, double off) {
+  return off > 0.0 ? -0.5 * ft.dot(vt) * off : 0.0;
 }
 
 // J, energy held by a spring of stiffness k (0 for k = 0: that spring is off).
