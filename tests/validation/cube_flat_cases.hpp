@@ -23,14 +23,16 @@ struct CubeRebound {
   double vz = 0.0, spin = 0.0;  // m/s, rad/s (about x) after the impact
 };
 
-// One landing at dt = fraction x critical, touching at `phase` of its step.
-inline CubeRebound cube_face_landing(double fraction, double tilt, double speed, double phase) {
+// One landing at dt = fraction x critical, touching at `phase` of its step; `contact_mass`:
+// the wall's law takes damping_mass: contact.
+inline CubeRebound cube_face_landing(double fraction, double tilt, double speed, double phase, bool contact_mass = false) {
   const Shape cube = cube_shape(kCubeSide, kCubeRounding);
   const ShapeLibrary lib = library({cube});
   const Quat q(Eigen::AngleAxisd(tilt, Vec3::UnitX()));
   double lowest = 1e9;
   for (const Vec3& p : cube.vertices) lowest = std::min(lowest, (q * p).z());
   Scene scene = base_scene(law(kKn, kEn), true);
+  scene.forces.contact.config_driver.damping_contact_mass = contact_mass;
   std::vector<BodySpec> specs = {body("cube", {0, 0, -lowest + cube.radius + 1e-7}, {0, 0, -speed}, q)};
   scene.simulation.dt = fraction * critical_step(scene, lib, specs);
   specs[0].position.z() = -lowest + cube.radius + 1e-9 + phase * speed * *scene.simulation.dt;
@@ -42,10 +44,10 @@ inline CubeRebound cube_face_landing(double fraction, double tilt, double speed,
 }
 
 // Flat: relative error of vz' / v0 against en, worst of `phases` touch places.
-inline double cube_flat_error(double fraction, int phases = 8) {
+inline double cube_flat_error(double fraction, int phases = 8, bool contact_mass = false) {
   double worst = 0.0;
   for (int k = 0; k < phases; ++k) {
-    const CubeRebound r = cube_face_landing(fraction, 0.0, kFlatSpeed, double(k) / phases);
+    const CubeRebound r = cube_face_landing(fraction, 0.0, kFlatSpeed, double(k) / phases, contact_mass);
     worst = std::max(worst, std::abs(r.vz / kFlatSpeed / kEn - 1.0));
   }
   return worst;
