@@ -19,6 +19,14 @@ enum Col { kShape, kX, kY, kZ, kQw, kQx, kQy, kQz, kVx, kVy, kVz, kWx, kWy, kWz,
 // Columns that come together: a position, a quaternion, a velocity, an angular velocity.
 const std::vector<std::vector<Col>> kTogether = {{kX, kY, kZ}, {kQw, kQx, kQy, kQz}, {kVx, kVy, kVz}, {kWx, kWy, kWz}};
 
+// "shape, x, y, z (required), qw, ...": the columns a header may name.
+std::string column_list() {
+  std::string out;
+  for (std::size_t c = 0; c < kColumns.size(); ++c)
+    out.append(c ? ", " : "").append(kColumns[c]).append(c == kZ ? " (required)" : "");
+  return out;
+}
+
 std::string_view trimmed(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
@@ -53,9 +61,7 @@ class Header {
       const auto known = std::find(kColumns.begin(), kColumns.end(), name);
       if (known == kColumns.end())
         throw InputError(input_message(at.file, at.line, name.empty() ? "header" : name,
-                                       "unknown column" + did_you_mean(name, kColumns) +
-                                           "; columns: shape, x, y, z (required), qw, qx, qy, "
-                                           "qz, vx, vy, vz, wx, wy, wz, density, scale, group"));
+                                       "unknown column" + did_you_mean(name, kColumns) + "; columns: " + column_list()));
       int& slot = index_[std::size_t(known - kColumns.begin())];
       if (slot >= 0) throw InputError(input_message(at.file, at.line, name, "column given twice"));
       slot = static_cast<int>(c);
