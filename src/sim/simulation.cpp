@@ -84,10 +84,10 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
   if (link && link->ranks() > 1) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
   const bool contacts = scene.forces.contact.present;
+  const ImpactModel model = contacts ? impact_model(cs, bodies, library_.shapes, !drivers.empty()) : ImpactModel{};
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_),
-                                    scene.simulation.accuracy,
-                                    contacts ? impact_model(cs, bodies, library_.shapes, !drivers.empty()) : ImpactModel{});
+                                    scene.simulation.accuracy, model);
   if (!contacts && !scene.simulation.dt)
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
                                    "'auto' needs a contact law to estimate the critical step; give a number"));

@@ -7,9 +7,10 @@
 
 namespace polydem {
 
-// Which measured cases bound a scene's impacts: their errors' largest at each step.
+// Which measured cases bound a scene's impacts: their errors' largest at each step. Spheres
+// neither exact nor Hertz take the end-of-step dashpot's sphere-wall rows.
 struct ImpactModel {
-  bool exact = false;      // every contact takes the linear law's exact step: its sphere-wall rows, else the end-of-step dashpot's
+  bool exact = false;      // every contact takes the linear law's exact step: its sphere-wall rows
   bool polyhedra = false;  // a body is not a sphere: the cube landings (flat, tilted, corner)
   bool hertz = false;      // a law is Hertz: its sphere-wall rows (en 0.1-0.9)
   bool friction = false;   // a law has mu > 0 and kt > 0: the oblique impact's rows
