@@ -118,7 +118,7 @@ void print_counts(const Simulation& sim) {
   std::printf("chosen time step:   %.4g s (%.3g x critical)%s\n", t.chosen, t.chosen / t.critical,
               sim.scene().simulation.dt ? "" : (sim.scene().simulation.accuracy ? " [auto, accuracy]" : " [auto]"));
   if (sim.scene().forces.contact.present)
-    std::printf("  %s\n", impact_error_note(t.chosen, t.critical, t.exact).c_str());
+    std::printf("  %s\n", impact_error_note(t.chosen, t.critical, t.model).c_str());
   const double steps = sim.scene().simulation.duration / t.chosen;
   std::printf("steps for %.4g s: %.0f\n", sim.scene().simulation.duration, steps);
 }
@@ -126,7 +126,7 @@ void print_counts(const Simulation& sim) {
 // " (expected restitution error ...)" after the dt of the start-up line, "" without a contact law.
 std::string dt_note(const Simulation& sim) {
   if (!sim.scene().forces.contact.present) return "";
-  return " (" + impact_error_note(sim.dt(), sim.time_step().critical, sim.time_step().exact) + ")";
+  return " (" + impact_error_note(sim.dt(), sim.time_step().critical, sim.time_step().model) + ")";
 }
 
 void warn_unsafe_step(const Simulation& sim) {

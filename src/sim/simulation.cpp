@@ -48,6 +48,22 @@ bool exact_everywhere(const ContactSettings& cs, const Bodies& bodies, const std
   return true;
 }
 
+// Which measured impacts bound the scene's (sim/step_accuracy.hpp): from its bodies' shapes
+// and the laws its contacts take (between bodies where there are two, on drivers where there
+// are drivers; Hertz's tangential spring is Mindlin's, kt unused).
+ImpactModel impact_model(const ContactSettings& cs, const Bodies& bodies, const std::vector<Shape>& shapes,
+                         bool drivers) {
+  ImpactModel model;
+  model.exact = exact_everywhere(cs, bodies, shapes, drivers);
+  for (std::size_t b = 0; b < bodies.size(); ++b) model.polyhedra |= !shapes[bodies.shape[b]].is_sphere();
+  for (const LawParams* law : {bodies.size() > 1 ? &cs.particle : nullptr, drivers ? &cs.driver : nullptr}) {
+    if (!law) continue;
+    model.hertz |= law->normal == NormalModel::hertz;
+    model.friction |= law->mu > 0.0 && (law->kt > 0.0 || law->normal == NormalModel::hertz);
+  }
+  return model;
+}
+
 // The line of a given key ("simulation.dt"), else of its block ("simulation"), else 0.
 int scene_line(const Scene& scene, const std::string& key) {
   auto it = scene.key_locs.find(key);
@@ -68,10 +84,10 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
   if (link && link->ranks() > 1) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
   const bool contacts = scene.forces.contact.present;
+  const ImpactModel model = contacts ? impact_model(cs, bodies, library_.shapes, !drivers.empty()) : ImpactModel{};
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
                                     scene.simulation.dt, expected_impact_speed(bodies, library_.shapes, drivers, gravity_),
-                                    scene.simulation.accuracy,
-                                    contacts && exact_everywhere(cs, bodies, library_.shapes, !drivers.empty()));
+                                    scene.simulation.accuracy, model);
   if (!contacts && !scene.simulation.dt)
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
                                    "'auto' needs a contact law to estimate the critical step; give a number"));

@@ -1,10 +1,12 @@
 #include "sim/step_accuracy.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <span>
+#include <vector>
 
 #include "sim/time_step.hpp"
 
@@ -16,8 +18,9 @@ struct Point {
   double fraction, error;  // dt / critical, relative restitution error
 };
 
-// The default step (end-of-step dashpot): tools/bench/accuracy/results.csv, "binary impact"
-// (sphere on a wall, en 0.5, 0.5 m/s), measured at e9b1677; increasing in both columns.
+// Spheres off the exact step (undamped, or `exact_step` off in tests), the end-of-step dashpot:
+// tools/bench/accuracy/results.csv, "binary impact" (sphere on a wall, en 0.5, 0.5 m/s),
+// measured at e9b1677; increasing in both columns.
 constexpr std::array<Point, 13> kSphereWall = {{{0.002, 3.88329e-07},
                                                 {0.005, 2.48912e-06},
                                                 {0.01, 1.04713e-05},
@@ -57,33 +60,126 @@ constexpr std::array<Point, 18> kExactSphereWall = {{{0.002, 1.27e-09},
                                                 {0.4, 0.0137},
                                                 {0.5, 2.3}}};
 
+// Polyhedra (the pair's mass, the end-of-step dashpot): the largest error of the cube landing
+// flat and tilted 1e-3 rad (worst of 8 touch places) and on a corner (from 0.05 up: below, its
+// answer's floor, 5.6e-4); `tests_validation "[.accuracy_models]"` at 49fd0f7, which also says
+// how the points bound the measured errors (between neighbouring steps they jump by up to 2x).
+constexpr std::array<Point, 61> kCubes = {{
+    {0.002, 6.60e-07}, {0.005, 4.77e-06}, {0.01, 2.28e-05}, {0.02, 9.48e-05}, {0.03, 1.72e-04},
+    {0.04, 3.26e-04}, {0.05, 1.18e-03}, {0.055, 1.29e-03}, {0.06, 1.42e-03}, {0.065, 1.55e-03},
+    {0.07, 1.71e-03}, {0.075, 1.86e-03}, {0.08, 2.02e-03}, {0.085, 2.16e-03}, {0.09, 2.29e-03},
+    {0.095, 2.50e-03}, {0.1, 2.71e-03}, {0.105, 2.92e-03}, {0.11, 3.13e-03}, {0.115, 3.33e-03},
+    {0.12, 3.51e-03}, {0.125, 3.67e-03}, {0.13, 3.84e-03}, {0.135, 4.25e-03}, {0.14, 4.36e-03},
+    {0.145, 4.80e-03}, {0.15, 4.89e-03}, {0.155, 4.96e-03}, {0.16, 5.40e-03}, {0.165, 5.88e-03},
+    {0.17, 5.88e-03}, {0.175, 6.38e-03}, {0.18, 6.51e-03}, {0.185, 6.77e-03}, {0.19, 7.31e-03},
+    {0.195, 7.31e-03}, {0.2, 7.61e-03}, {0.205, 8.19e-03}, {0.21, 8.19e-03}, {0.215, 8.29e-03},
+    {0.22, 8.93e-03}, {0.225, 9.51e-03}, {0.23, 9.51e-03}, {0.235, 9.51e-03}, {0.24, 1.01e-02},
+    {0.245, 1.07e-02}, {0.25, 1.07e-02}, {0.255, 1.07e-02}, {0.26, 1.08e-02}, {0.265, 1.16e-02},
+    {0.27, 1.23e-02}, {0.275, 1.29e-02}, {0.28, 1.29e-02}, {0.285, 1.29e-02}, {0.29, 1.29e-02},
+    {0.295, 1.32e-02}, {0.3, 1.32e-02}, {0.35, 1.71e-02}, {0.4, 1.96e-02}, {0.45, 2.57e-02},
+    {0.5, 3.00e-02}}};
+
+// Hertz (Tsuji's dashpot): the largest sphere-wall restitution error of en 0.1, 0.5, 0.9 at the
+// worst of 16 touch places, the same way.
+constexpr std::array<Point, 61> kHertz = {{
+    {0.002, 6.69e-07}, {0.005, 4.37e-06}, {0.01, 1.77e-05}, {0.02, 8.42e-05}, {0.03, 2.15e-04},
+    {0.04, 4.19e-04}, {0.05, 8.04e-04}, {0.055, 1.08e-03}, {0.06, 1.19e-03}, {0.065, 1.41e-03},
+    {0.07, 1.81e-03}, {0.075, 2.10e-03}, {0.08, 2.22e-03}, {0.085, 2.76e-03}, {0.09, 3.06e-03},
+    {0.095, 3.53e-03}, {0.1, 3.67e-03}, {0.105, 4.11e-03}, {0.11, 4.53e-03}, {0.115, 5.41e-03},
+    {0.12, 5.60e-03}, {0.125, 6.02e-03}, {0.13, 6.55e-03}, {0.135, 7.18e-03}, {0.14, 7.95e-03},
+    {0.145, 9.02e-03}, {0.15, 9.32e-03}, {0.155, 9.72e-03}, {0.16, 1.08e-02}, {0.165, 1.18e-02},
+    {0.17, 1.21e-02}, {0.175, 1.38e-02}, {0.18, 1.38e-02}, {0.185, 1.54e-02}, {0.19, 1.57e-02},
+    {0.195, 1.76e-02}, {0.2, 1.76e-02}, {0.205, 1.97e-02}, {0.21, 1.98e-02}, {0.215, 2.11e-02},
+    {0.22, 2.31e-02}, {0.225, 2.31e-02}, {0.23, 2.49e-02}, {0.235, 2.68e-02}, {0.24, 2.69e-02},
+    {0.245, 2.86e-02}, {0.25, 3.16e-02}, {0.255, 3.16e-02}, {0.26, 3.24e-02}, {0.265, 3.48e-02},
+    {0.27, 3.75e-02}, {0.275, 3.75e-02}, {0.28, 3.86e-02}, {0.285, 4.09e-02}, {0.29, 4.42e-02},
+    {0.295, 4.49e-02}, {0.3, 4.49e-02}, {0.35, 6.60e-02}, {0.4, 8.70e-02}, {0.45, 1.14e-01},
+    {0.5, 1.43e-01}}};
+
+// Friction: the oblique impact at 45 deg (mu 0.3, kt = kn; max(v_t', R w') error / v_t) at the
+// worst of 16 touch places, the same way.
+constexpr std::array<Point, 61> kOblique = {{
+    {0.002, 1.22e-06}, {0.005, 5.63e-06}, {0.01, 1.62e-05}, {0.02, 5.84e-05}, {0.03, 1.67e-04},
+    {0.04, 2.66e-04}, {0.05, 4.87e-04}, {0.055, 4.87e-04}, {0.06, 4.87e-04}, {0.065, 6.58e-04},
+    {0.07, 1.02e-03}, {0.075, 1.02e-03}, {0.08, 1.46e-03}, {0.085, 1.46e-03}, {0.09, 1.70e-03},
+    {0.095, 1.70e-03}, {0.1, 2.52e-03}, {0.105, 2.52e-03}, {0.11, 2.52e-03}, {0.115, 2.52e-03},
+    {0.12, 2.80e-03}, {0.125, 3.25e-03}, {0.13, 3.25e-03}, {0.135, 3.25e-03}, {0.14, 3.56e-03},
+    {0.145, 4.58e-03}, {0.15, 4.58e-03}, {0.155, 4.58e-03}, {0.16, 4.58e-03}, {0.165, 4.76e-03},
+    {0.17, 5.37e-03}, {0.175, 5.74e-03}, {0.18, 7.22e-03}, {0.185, 7.22e-03}, {0.19, 7.22e-03},
+    {0.195, 7.22e-03}, {0.2, 7.22e-03}, {0.205, 7.22e-03}, {0.21, 7.22e-03}, {0.215, 7.58e-03},
+    {0.22, 7.58e-03}, {0.225, 8.38e-03}, {0.23, 9.41e-03}, {0.235, 1.17e-02}, {0.24, 1.27e-02},
+    {0.245, 1.27e-02}, {0.25, 1.29e-02}, {0.255, 1.29e-02}, {0.26, 1.30e-02}, {0.265, 1.35e-02},
+    {0.27, 1.35e-02}, {0.275, 1.35e-02}, {0.28, 1.35e-02}, {0.285, 1.35e-02}, {0.29, 1.35e-02},
+    {0.295, 1.35e-02}, {0.3, 1.35e-02}, {0.35, 2.38e-02}, {0.4, 3.29e-02}, {0.45, 3.67e-02},
+    {0.5, 3.67e-02}}};
+
 // The log-log line through a and b at x (x and y either fractions or errors).
 double log_line(double ax, double ay, double bx, double by, double x) {
   const double t = std::log(x / ax) / std::log(bx / ax);
   return ay * std::pow(by / ay, t);
 }
 
-// The model of the exact step or of the default step.
-std::span<const Point> sphere_wall(bool exact) {
-  if (exact) return kExactSphereWall;
-  return kSphereWall;
-}
-
-}  // namespace
-
-double expected_restitution_error(double fraction, bool exact) {
-  const std::span<const Point> table = sphere_wall(exact);
+// A table's error at `fraction`: log-log between its points, slope 2 below the first,
+// infinity above the last.
+double table_error(std::span<const Point> table, double fraction) {
   const Point& first = table.front();
   if (fraction <= first.fraction) return first.error * (fraction / first.fraction) * (fraction / first.fraction);
   for (std::size_t k = 1; k < table.size(); ++k) {
     const Point &a = table[k - 1], &b = table[k];
-    if (fraction <= b.fraction) return log_line(a.fraction, a.error, b.fraction, b.error, fraction);
+    if (fraction == b.fraction) return b.error;  // a measured point as measured (the line may round it)
+    if (fraction < b.fraction) return log_line(a.fraction, a.error, b.fraction, b.error, fraction);
   }
   return std::numeric_limits<double>::infinity();
 }
 
-double accuracy_fraction(double accuracy, bool exact) {
-  const std::span<const Point> table = sphere_wall(exact);
+// A measured case's errors and its name in the note.
+struct Case {
+  std::span<const Point> table;
+  const char* name;
+};
+
+// The cases that bound `model`'s impacts.
+std::vector<Case> model_cases(ImpactModel model) {
+  std::vector<Case> cases;
+  if (model.exact) cases.push_back({kExactSphereWall, "exact-step sphere-wall impacts"});
+  if (model.polyhedra) cases.push_back({kCubes, "cube landings"});
+  if (model.hertz) cases.push_back({kHertz, "Hertz sphere-wall impacts"});
+  if (cases.empty()) cases.push_back({kSphereWall, "end-of-step sphere-wall impact"});
+  if (model.friction) cases.push_back({kOblique, "oblique impact"});
+  return cases;
+}
+
+// The largest of `model`'s tables at each fraction any of them has: log-log between these
+// points it is at least each table's line (their largest is convex there); one table: itself.
+std::vector<Point> envelope(ImpactModel model) {
+  const std::vector<Case> cases = model_cases(model);
+  std::vector<double> fractions;
+  for (const Case& c : cases)
+    for (const Point& p : c.table) fractions.push_back(p.fraction);
+  std::sort(fractions.begin(), fractions.end());
+  fractions.erase(std::unique(fractions.begin(), fractions.end()), fractions.end());
+  std::vector<Point> out;
+  for (double f : fractions) {
+    double worst = 0.0;
+    for (const Case& c : cases) worst = std::max(worst, table_error(c.table, f));
+    out.push_back({f, worst});
+  }
+  return out;
+}
+
+// x rounded up in its second significant digit, so that the printed figure (%.1e) is still a
+// bound; within 1e-9 of a digit counts as on it (a step inverted from the model sits there).
+double round_up(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1);
+  return std::ceil(x / unit - 1e-9) * unit;
+}
+
+}  // namespace
+
+double expected_restitution_error(double fraction, ImpactModel model) { return table_error(envelope(model), fraction); }
+
+double accuracy_fraction(double accuracy, ImpactModel model) {
+  const std::vector<Point> table = envelope(model);
   const Point& first = table.front();
   if (accuracy <= first.error) return first.fraction * std::sqrt(accuracy / first.error);
   for (std::size_t k = 1; k < table.size(); ++k) {
@@ -94,19 +190,24 @@ double accuracy_fraction(double accuracy, bool exact) {
   return kUnsafeFraction;
 }
 
-double auto_fraction(bool exact) { return exact ? accuracy_fraction(kAutoAccuracy, true) : kAutoFraction; }
+double auto_fraction(bool exact) {
+  return exact ? accuracy_fraction(kAutoAccuracy, ImpactModel{.exact = true}) : kAutoFraction;
+}
 
-std::string impact_error_note(double dt, double critical, bool exact) {
+std::string impact_error_note(double dt, double critical, ImpactModel model) {
   if (!std::isfinite(critical) || !(critical > 0.0)) return "";
-  const double fraction = dt / critical, error = expected_restitution_error(fraction, exact);
-  char line[200];
-  if (std::isfinite(error))
-    std::snprintf(line, sizeof(line), "expected restitution error of an impact at this step: %.1e (%.3g x critical)",
-                  error, fraction);
-  else
+  const double fraction = dt / critical, error = expected_restitution_error(fraction, model);
+  std::string names;
+  for (const Case& c : model_cases(model)) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  char line[300];
+  if (std::isfinite(error)) {
+    std::snprintf(line, sizeof(line), "expected restitution error of an impact at this step: %.1e (%.3g x critical; %s)",
+                  round_up(error), fraction, names.c_str());
+  } else {
+    const Point last = envelope(model).back();
     std::snprintf(line, sizeof(line), "expected restitution error of an impact at this step: above %.2g (%.3g x "
-                  "critical, beyond the largest measured %.2g)", sphere_wall(exact).back().error, fraction,
-                  sphere_wall(exact).back().fraction);
+                  "critical, beyond the largest measured %.2g; %s)", last.error, fraction, last.fraction, names.c_str());
+  }
   return line;
 }
 

@@ -109,7 +109,7 @@ const char* step_mode_name(StepMode mode) {
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt, double impact_speed,
-                                    std::optional<double> accuracy, bool exact) {
+                                    std::optional<double> accuracy, ImpactModel model) {
   Compliance worst;
   double lightest = std::numeric_limits<double>::infinity();  // kg
   double heaviest = 0.0, rounding = 0.0;  // kg, m (largest rounding radius: the stiffest Hertz contact)
@@ -140,11 +140,11 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
   e.critical = limit.dt;
   e.critical_normal = normal.dt;
   e.mode = limit.mode;
-  e.exact = exact;
+  e.model = model;
   if (given_dt)
     e.chosen = *given_dt;
   else
-    e.chosen = (accuracy ? accuracy_fraction(*accuracy, exact) : auto_fraction(exact)) * limit.dt;
+    e.chosen = (accuracy ? accuracy_fraction(*accuracy, model) : auto_fraction(model.exact)) * limit.dt;
   return e;
 }
 

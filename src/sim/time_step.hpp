@@ -7,6 +7,7 @@
 #include "contact/law.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/shape.hpp"
+#include "sim/step_accuracy.hpp"
 
 namespace polydem {
 
@@ -23,7 +24,7 @@ struct TimeStepEstimate {
   StepMode mode = StepMode::kNormal;
   double impact_speed = 0.0;  // m/s, the fastest impact expected (expected_impact_speed)
   double kn_particle = 0.0, kn_driver = 0.0;  // N/m, normal stiffness the limits took (Hertz: at that impact)
-  bool exact = false;  // the expected error is the exact step's model (step_accuracy.hpp): every contact takes it, or `accuracy`
+  ImpactModel model;  // which measured impacts bound the scene's (step_accuracy.hpp)
 };
 
 // m/s, the fastest impact a scene expects, for laws whose stiffness grows with the overlap
@@ -47,12 +48,11 @@ constexpr double kUnsafeFraction = 0.3;
 // contact point of any body; pairs of bodies halve it, a driver does not. Each law's normal
 // part gives its stiffness at an impact at `impact_speed` (m/s; two bodies close at twice it).
 // The step: given_dt, else the fraction of the limit whose expected restitution error is
-// within `accuracy` (accuracy_fraction), else auto_fraction(exact) of the limit; `exact`: every
-// contact takes the linear law's exact step.
+// within `accuracy` under `model` (accuracy_fraction), else auto_fraction(model.exact) of the limit.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt, double impact_speed = kMinImpactSpeed,
-                                    std::optional<double> accuracy = std::nullopt, bool exact = false);
+                                    std::optional<double> accuracy = std::nullopt, ImpactModel model = {});
 
 // A warning line ("" when none) for a given step above kUnsafeFraction of the critical one.
 std::string unsafe_step_warning(const TimeStepEstimate& t);

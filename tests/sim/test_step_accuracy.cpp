@@ -12,6 +12,10 @@
 
 using namespace polydem;
 
+namespace {
+const ImpactModel kExact{.exact = true};
+}  // namespace
+
 TEST_CASE("step accuracy: the model passes through the measured sphere-wall errors", "[step_accuracy]") {
   // tools/bench/accuracy/results.csv, binary impact at e9b1677.
   CHECK(expected_restitution_error(0.1) == Approx(0.00194553).epsilon(1e-9));
@@ -28,15 +32,15 @@ TEST_CASE("step accuracy: the model passes through the measured sphere-wall erro
 
 TEST_CASE("step accuracy: with the exact step, the worst sphere-wall errors of en 0.1-0.95 and the touch's phase", "[step_accuracy]") {
   // tests/validation/accuracy_sweep.cpp "[.accuracy_model]": the exact step's worst error.
-  CHECK(expected_restitution_error(0.1, true) == Approx(1.65e-04).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.3, true) == Approx(4.92e-03).epsilon(1e-9));
-  CHECK(expected_restitution_error(0.001, true) == Approx(1.27e-09 / 4).epsilon(1e-9));
-  CHECK(impact_error_note(1e-6, 1e-5, true) == "expected restitution error of an impact at this step: 1.6e-04 (0.1 x critical)");
+  CHECK(expected_restitution_error(0.1, kExact) == Approx(1.65e-04).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.3, kExact) == Approx(4.92e-03).epsilon(1e-9));
+  CHECK(expected_restitution_error(0.001, kExact) == Approx(1.27e-09 / 4).epsilon(1e-9));
+  CHECK(impact_error_note(1e-6, 1e-5, kExact) == "expected restitution error of an impact at this step: 1.7e-04 (0.1 x critical; exact-step sphere-wall impacts)");
 }
 
 TEST_CASE("step accuracy: dt: auto keeps 1e-3 where every contact takes the exact step, 0.1 x critical elsewhere", "[step_accuracy]") {
   const double f = auto_fraction(true);
-  CHECK(expected_restitution_error(f, true) == Approx(kAutoAccuracy).epsilon(1e-9));
+  CHECK(expected_restitution_error(f, kExact) == Approx(kAutoAccuracy).epsilon(1e-9));
   CHECK(f == Approx(0.18 * std::pow(0.2 / 0.18, std::log(1e-3 / 0.000978) / std::log(0.00145 / 0.000978))).epsilon(1e-9));
   CHECK(auto_fraction(false) == kAutoFraction);
 }
@@ -44,39 +48,67 @@ TEST_CASE("step accuracy: dt: auto keeps 1e-3 where every contact takes the exac
 TEST_CASE("step accuracy: error grows with the step and the fraction inverts it", "[step_accuracy]") {
   double previous = 0.0;
   for (double f = 1e-3; f <= 0.5; f *= 1.05) {
-    const double e = expected_restitution_error(f, true);
+    const double e = expected_restitution_error(f, kExact);
     CHECK(e > previous);
     CHECK(expected_restitution_error(f) > 0.0);
     previous = e;
   }
   double previous_fraction = 0.0;
   for (double a = kMinAccuracy; a <= kMaxAccuracy; a *= 1.1) {
-    const double f = accuracy_fraction(a, true);
+    const double f = accuracy_fraction(a, kExact);
     INFO("accuracy " << a << ", fraction " << f);
     CHECK(f >= previous_fraction);
     CHECK(f <= kUnsafeFraction);
-    CHECK(expected_restitution_error(f, true) <= a * (1 + 1e-12));
-    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, true) == Approx(a).epsilon(1e-9));
+    CHECK(expected_restitution_error(f, kExact) <= a * (1 + 1e-12));
+    if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, kExact) == Approx(a).epsilon(1e-9));
     previous_fraction = f;
   }
-  CHECK(accuracy_fraction(1.65e-04, true) == Approx(0.1).epsilon(1e-9));
-  CHECK(accuracy_fraction(0.1, true) == kUnsafeFraction);  // beyond 0.3 x critical: capped
+  CHECK(accuracy_fraction(1.65e-04, kExact) == Approx(0.1).epsilon(1e-9));
+  CHECK(accuracy_fraction(0.1, kExact) == kUnsafeFraction);  // beyond 0.3 x critical: capped
 }
 
-// Polyhedra (the pair's mass) take the end-of-step dashpot, 1.9e-3 at 0.1 x critical and 3.7e-4
-// at 0.05 (README): `accuracy` must step them by that model, not by the spheres' exact step.
-TEST_CASE("step accuracy: without the exact step, accuracy inverts the default step's model", "[step_accuracy]") {
-  CHECK(accuracy_fraction(1.9e-3, false) == Approx(0.1).epsilon(0.02));  // README's figures, rounded
-  CHECK(accuracy_fraction(3.7e-4, false) == Approx(0.05).epsilon(0.02));
-  const double f = accuracy_fraction(1e-3, false);
+// Polyhedra (the pair's mass) take the end-of-step dashpot: `accuracy` must step them by the
+// cube landings' model, not by the spheres' exact step.
+TEST_CASE("step accuracy: without the exact step, accuracy inverts the scene's model", "[step_accuracy]") {
+  const double f = accuracy_fraction(1e-3, {});
   CHECK(f > 0.05);
   CHECK(f < 0.1);
   CHECK(expected_restitution_error(f) == Approx(1e-3).epsilon(1e-9));
-  CHECK(accuracy_fraction(1e-3, true) > 0.18);  // the exact step allows 2.5 times more
+  CHECK(accuracy_fraction(1e-3, kExact) > 0.18);  // the exact step allows 2.5 times more
+  const ImpactModel cubes{.polyhedra = true};
+  CHECK(accuracy_fraction(1e-3, cubes) < f);  // the cube corner is further off than a sphere
 }
 
-TEST_CASE("step accuracy: the note names the error and the fraction", "[step_accuracy]") {
-  CHECK(impact_error_note(1e-6, 1e-5) == "expected restitution error of an impact at this step: 1.9e-03 (0.1 x critical)");
+TEST_CASE("step accuracy: a scene's model is the largest of its cases' and inverts", "[step_accuracy]") {
+  const ImpactModel models[] = {kExact, {.exact = true, .friction = true}, {.polyhedra = true},
+                                {.polyhedra = true, .friction = true}, {.hertz = true}, {.friction = true}};
+  for (const ImpactModel& m : models) {
+    ImpactModel without_friction = m;
+    without_friction.friction = false;
+    double previous = 0.0;
+    for (double f = 1e-3; f <= 0.5; f *= 1.05) {  // at least each of its parts, never falling
+      const double e = expected_restitution_error(f, m);
+      CHECK(e >= expected_restitution_error(f, without_friction) * (1 - 1e-12));  // up to round-off
+      CHECK(e >= previous);
+      previous = e;
+    }
+    double previous_fraction = 0.0;
+    for (double a = kMinAccuracy; a <= kMaxAccuracy; a *= 1.1) {
+      const double f = accuracy_fraction(a, m);
+      INFO("accuracy " << a << ", fraction " << f);
+      CHECK(f >= previous_fraction);
+      CHECK(expected_restitution_error(f, m) <= a * (1 + 1e-12));
+      if (f < kUnsafeFraction) CHECK(expected_restitution_error(f, m) == Approx(a).epsilon(1e-9));
+      previous_fraction = f;
+    }
+  }
+  // Friction adds the oblique impact: above the frictionless spheres at dt: auto.
+  CHECK(expected_restitution_error(auto_fraction(true), {.exact = true, .friction = true}) > kAutoAccuracy);
+}
+
+TEST_CASE("step accuracy: the note names the error, rounded up, and the fraction", "[step_accuracy]") {
+  CHECK(impact_error_note(1e-6, 1e-5) == "expected restitution error of an impact at this step: 2.0e-03 (0.1 x critical; end-of-step sphere-wall impact)");
+  CHECK(impact_error_note(accuracy_fraction(1e-3, {}), 1.0).find(": 1.0e-03 (") != std::string::npos);
   CHECK(impact_error_note(6e-6, 1e-5).find("above 0.14 (0.6 x critical") != std::string::npos);
   CHECK(impact_error_note(1e-6, INFINITY).empty());
 }

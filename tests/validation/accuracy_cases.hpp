@@ -86,12 +86,16 @@ inline double binary_impact_at_accuracy(double accuracy, double en = kEn) {
 // Hertz with Tsuji's dashpot (E 1e8 Pa, Poisson 0.3, as test_hertz_impact.cpp), sphere on a
 // wall at 0.5 m/s, dt = fraction x critical: the worst restitution error over `phases` touch
 // places in the step (one: the 0.1 um gap).
-inline double hertz_impact(double fraction, double en, int phases = 16) {
+inline ContactParams hertz_law(double en) {
   ContactParams config;
   config.hertz = true;
   config.young = 1e8;  // Pa
   config.poisson = 0.3;
   config.en = en;
+  return config;
+}
+inline double hertz_impact(double fraction, double en, int phases = 16) {
+  const ContactParams config = hertz_law(en);
   const auto set_step = [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
     scene.simulation.dt = fraction * critical_step(scene, lib, specs);
   };
