@@ -380,14 +380,16 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   }
 }
 
-// Energies are summed block by block in order: repeatable whatever the thread count.
+// Energies are summed exactly (contact/exact_sum.hpp): the same bits whatever the thread count.
 void ContactEngine::add_totals() {
-  stats_.energy = EnergyParts{};
+  ExactEnergy energy;  // J
   stats_.contacts = 0;
-  for (const PairList* list : {&body_list_, &driver_list_}) {
-    for (const EnergyParts& e : list->block_energy) stats_.energy += e;
+  for (PairList* list : {&body_list_, &driver_list_}) {
+    energy.add(list->energy);
+    list->energy = ExactEnergy{};  // taken: the next step's loops add to zero
     for (std::uint32_t c : list->block_contacts) stats_.contacts += c;  // counted by the blocks: one thread sums few
   }
+  stats_.energy = energy.value();
 }
 
 // Sums the active slots in order: the same bits for any thread count.

@@ -40,7 +40,7 @@ RunError non_finite_position(std::size_t b) {
 
 RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies,
                            ContactSettings settings)
-    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()), pair_counts_(link.ranks()) {
+    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()) {
   const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
   halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), settings_.skin + band);
   settings_.spheres_only = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) {
@@ -190,29 +190,19 @@ long RankContacts::first_non_finite(const Bodies& bodies) const {
   return least_over_ranks(link_, mine);
 }
 
-// One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'
-// pair counts at rebuilds only (the lists, so the counts, hold until the next).
+// One gather of the touching driver pairs' reactions, one sum of the ranks' exact energies;
+// the owned bodies' work (the next cut's weights) at rebuilds only (the lists hold until the next).
 void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
-  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_, rebuilt);
+  if (rebuilt) owned_work_ = owned_work(engine_->body_pairs(), engine_->driver_pairs(), store_);
   std::vector<char> bytes;
   append_section(bytes, reaction_shares());
-  append_section(bytes, mine.counts);
-  append_section(bytes, mine.pairs);
-  append_section(bytes, std::vector<std::uint64_t>{mine.contacts});
   std::vector<ReactionShare> reactions;
-  std::vector<EnergyShare> energies(link_.ranks());
-  const std::vector<std::vector<char>> all = link_.all_gather(bytes);
-  for (int r = 0; r < link_.ranks(); ++r) {
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
     std::size_t at = 0;
-    for (const ReactionShare& x : read_section<ReactionShare>(all[r], at)) reactions.push_back(x);
-    energies[r].counts = read_section<PairCounts>(all[r], at);
-    if (rebuilt) pair_counts_[r] = energies[r].counts;
-    else energies[r].counts = pair_counts_[r];
-    energies[r].pairs = read_section<PairEnergy>(all[r], at);
-    energies[r].contacts = read_section<std::uint64_t>(all[r], at).at(0);
+    for (const ReactionShare& x : read_section<ReactionShare>(from, at)) reactions.push_back(x);
   }
   add_reactions(std::move(reactions), drivers);
-  const RankEnergy total = total_energy(energies, n_bodies_);
+  const RankEnergy total = total_energy(link_, engine_->body_pairs(), engine_->driver_pairs(), store_);
   energy_ = total.energy;
   contacts_ = total.contacts;
 }

@@ -4,9 +4,8 @@
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
 // to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
-// reactions (summed in the one-process pair order) and the pair energies (summed in the
-// one-process blocks of kPairBlock pairs; where each pair falls follows from the owned
-// bodies' pair counts, sent at rebuilds). At a rebuild each rank sends the owned bodies that
+// reactions (summed in the one-process pair order), one all-reduce the ranks' exact energy
+// sums (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
 // reads the loads summed over the ranks and a sample of the centres. Every rank keeps arrays
@@ -109,7 +108,7 @@ class RankContacts {
   std::size_t cuts_ = 0;
   double load_share_ = 0.0;
   GhostPlan plan_;
-  std::vector<std::vector<PairCounts>> pair_counts_;  // per rank, sent at the last rebuild
+  std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)
   RotorGroups owned_rotors_;
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;

@@ -107,7 +107,7 @@ TEST_CASE("a list's results sized after carry_history keep the contact counts it
   CHECK(fresh.touching == std::vector<std::uint16_t>{2, 1});
   CHECK(fresh.force_i.size() == 2);
   CHECK(fresh.linear_steps.size() == 2);
-  CHECK(fresh.block_energy.size() == 1);
+  CHECK(fresh.block_contacts.size() == 1);
 }
 
 // `v = {}` keeps a vector's buffer: what a rebuild frees must give its memory back.
@@ -127,7 +127,7 @@ TEST_CASE("a list's results, gaps and records are freed, not only emptied, befor
   free_results(list);
   list.set_recording(false);
   for (std::size_t c : {list.force_i.capacity(), list.torque_i.capacity(), list.torque_j.capacity(),
-                        list.touching.capacity(), list.linear_steps.capacity(), list.block_energy.capacity(),
+                        list.touching.capacity(), list.linear_steps.capacity(),
                         list.block_contacts.capacity(), list.pair_energy.capacity(), list.gap_at_build.capacity(),
                         list.slot_gap.capacity(), list.records.capacity()})
     CHECK(c == 0);
