@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "contact/exact_sum.hpp"
 #include "contact/law.hpp"
 #include "geometry/features.hpp"
 #include "neighbor/broad_phase.hpp"
@@ -57,9 +56,10 @@ struct PairList {
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
-  ExactEnergy energy;                      // J, this step's pairs, summed exactly (energy ledger)
   std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
-  std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
+  // J, per pair: its energies summed in step order since the ledger last took them
+  // (ContactEngine::flush_energy): the same bits whatever thread or rank steps the pair.
+  std::vector<EnergyParts> pending;
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
@@ -75,7 +75,7 @@ struct PairList {
     touching.assign(pairs.size(), 0);
     linear_steps.assign(pairs.size(), LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
-    energy = ExactEnergy{};
+    pending.assign(pairs.size(), EnergyParts{});
     block_contacts.assign((pairs.size() + kPairBlock - 1) / kPairBlock, 0);
   }
 };

@@ -4,13 +4,11 @@ namespace polydem {
 
 namespace {
 
-// Adds the energies and sub-contacts of the pairs of `list` whose lower body this rank owns.
-void collect(const PairList& list, const LocalStore& store, ExactEnergy& energy, std::uint64_t& contacts) {
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    if (store.ghost[list.pairs[k].i]) continue;
-    contacts += list.touching[k];
-    energy.add(list.pair_energy[k]);
-  }
+std::uint64_t count_owned(const PairList& list, const LocalStore& store) {
+  std::uint64_t contacts = 0;
+  for (std::size_t k = 0; k < list.size(); ++k)
+    if (!store.ghost[list.pairs[k].i]) contacts += list.touching[k];
+  return contacts;
 }
 
 // Adds each pair's candidate feature pairs to both its bodies (twice to a driver pair's body).
@@ -24,18 +22,13 @@ void add_work(const PairList& list, bool driver, std::vector<std::uint32_t>& wor
 
 }  // namespace
 
-RankEnergy total_energy(const RankLink& link, const PairList& body_pairs, const PairList& driver_pairs,
-                        const LocalStore& store) {
-  ExactEnergy mine;  // J
-  std::uint64_t contacts = 0;
-  collect(body_pairs, store, mine, contacts);
-  collect(driver_pairs, store, mine, contacts);
-  std::vector<std::uint64_t> words = mine.words();
-  words.push_back(contacts);
-  words = link.sum(words);  // integers: exact in any order
-  const std::uint64_t total_contacts = words.back();
-  words.pop_back();
-  return {ExactEnergy::from_words(words, std::uint64_t(link.ranks())).value(), std::size_t(total_contacts)};
+EnergyParts sum_over_ranks(const RankLink& link, const ExactEnergy& mine) {
+  const std::vector<std::uint64_t> words = link.sum(mine.words());  // integers: exact in any order
+  return ExactEnergy::from_words(words, std::uint64_t(link.ranks())).value();
+}
+
+std::uint64_t owned_contacts(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store) {
+  return count_owned(body_pairs, store) + count_owned(driver_pairs, store);
 }
 
 std::vector<std::uint32_t> owned_work(const PairList& body_pairs, const PairList& driver_pairs,

@@ -36,11 +36,10 @@ std::size_t wall_pair_mismatches(const PairList& a, const PairList& b) {
   for (std::size_t s = 0; s < a.slots.size(); ++s)
     bad += !(a.active[s] == b.active[s] && same_history(a.slots[s].history, b.slots[s].history) &&
              same_bits(a.records[s].point, b.records[s].point) && same_bits(a.records[s].fn, b.records[s].fn));
-  for (std::size_t k = 0; k < a.pair_energy.size(); ++k)
-    bad += !(same_bits(a.pair_energy[k].net, b.pair_energy[k].net) &&
-             same_bits(a.pair_energy[k].sliding, b.pair_energy[k].sliding) &&
-             same_bits(a.pair_energy[k].rolling, b.pair_energy[k].rolling) &&
-             same_bits(a.pair_energy[k].patch, b.pair_energy[k].patch));
+  for (std::size_t k = 0; k < a.size(); ++k)
+    bad += !(same_bits(a.pending[k].net, b.pending[k].net) && same_bits(a.pending[k].sliding, b.pending[k].sliding) &&
+             same_bits(a.pending[k].rolling, b.pending[k].rolling) &&
+             same_bits(a.pending[k].patch, b.pending[k].patch));
   return bad;
 }
 
@@ -70,7 +69,6 @@ WallRun run_walls(const ContactParams& config, bool exact_step, int steps) {
   fast.driver = prepare_law(config, &config);
   fast.particle.exact_step = fast.driver.exact_step = exact_step;
   fast.skin = 0.0005;  // m
-  fast.pair_energies = true;  // each pair's energy kept, compared
   ContactSettings general = fast;
   general.spheres_only = 0;  // the general path for every pair
   Drivers drivers_fast = sim.drivers, drivers_general = sim.drivers;
