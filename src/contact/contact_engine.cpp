@@ -113,6 +113,7 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   const std::vector<int>& shape = *bodies.shape;
   const std::vector<double>& scale = *bodies.scale;
   vertex_offset_.assign(n + 1, 0);
+  for (const Shape& s : shapes_) boxes_.push_back(box_corners(s));
   bounding_.resize(n);
   core_reach_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
@@ -164,7 +165,10 @@ void ContactEngine::pose(const LocalBodies& bodies) {
     Vec3* v = world_vertices_.data() + vertex_offset_[b];
     PosedBody& posed = posed_[b];  // filled in place: no temporary pose to copy
     posed.rotation = orientation[b].toRotationMatrix();  // once per body and step
-    pose_vertices(s, scale[b], position[b], posed.rotation, v);
+    if (const std::optional<BoxCorners>& box = boxes_[shape[b]])
+      pose_box(*box, scale[b], position[b], posed.rotation, v);  // the same bits in a third of the arithmetic
+    else
+      pose_vertices(s, scale[b], position[b], posed.rotation, v);
     posed.shape = &s;
     posed.vertices = v;
     posed.position = position[b];

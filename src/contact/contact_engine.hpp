@@ -2,9 +2,11 @@
 // The contact stage of a step: poses the bodies, keeps the Verlet lists (rebuilt when a body
 // may have moved half the skin), evaluates every pair in parallel and sums the forces on
 // each body in a fixed order, so results do not depend on the thread count.
+#include <optional>
 #include <vector>
 
 #include "driver/drivers.hpp"
+#include "geometry/box_pose.hpp"
 #include "polydem/shape.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/exact_sum.hpp"
@@ -153,6 +155,7 @@ class ContactEngine {
   ContactSettings settings_;
   double band_particle_, band_driver_;    // m, interaction band beyond touching (cohesion)
   std::vector<std::uint32_t> vertex_offset_;
+  std::vector<std::optional<BoxCorners>> boxes_;  // per shape: its corners when it is a box (posed by pose_box)
   std::vector<Vec3> world_vertices_;
   std::vector<PosedBody> posed_;           // spheres: empty unless keep_sphere_poses keeps them
   std::vector<std::uint32_t> listed_;      // bodies in some pair: the only ones posed each step

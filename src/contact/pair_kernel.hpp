@@ -250,9 +250,15 @@ template <class Parts, class Partner>
                           exact_step,
                           law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
     const ContactForce f = contact_force<Parts>(law, kin, list.slots[s].history, dt);
-    list.records[s] = {g.point, f.force, f.fn};  // always recording: the hand-over reads the point
+    SlotRecord& record = list.records[s];  // always recording: the hand-over reads the point
+    record.point = g.point;  // member by member: an aggregate went through a copy on the stack
+    record.force = f.force;
+    record.fn = f.fn;
     totals.force_i += f.force;
-    totals.torque_i += lever.cross(f.force) + f.moment;
+    // Without rolling the moment is +0, and adding it changes no sum's bits (a -0 term becomes +0,
+    // which the sum, never -0 itself, absorbs alike).
+    if constexpr (Parts::rolling) totals.torque_i += lever.cross(f.force) + f.moment;
+    else totals.torque_i += lever.cross(f.force);
     totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
   }
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
