@@ -1,0 +1,112 @@
+#include "contact/candidate_memory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "neighbor/rebuild_trigger.hpp"
+#include "polydem/parallel.hpp"
+
+namespace polydem {
+namespace {
+
+// Relative margin of the motion test, on the scale of the lengths the distances are made of:
+// round-off must never keep a search that could have missed a candidate.
+constexpr double kMotionMargin = 1e-9;
+
+}  // namespace
+
+void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found) {
+  pairs.push_back(p);
+  offset.push_back(now.position[p.j] - now.position[p.i]);
+  turn_i.push_back(now.orientation[p.i]);
+  turn_j.push_back(now.orientation[p.j]);
+  features.insert(features.end(), found.begin(), found.end());
+  begin.push_back(std::uint32_t(features.size()));
+}
+
+void PairSearches::add(const PairSearches& from, std::size_t k) {
+  pairs.push_back(from.pairs[k]);
+  offset.push_back(from.offset[k]);
+  turn_i.push_back(from.turn_i[k]);
+  turn_j.push_back(from.turn_j[k]);
+  features.insert(features.end(), from.features.begin() + from.begin[k], from.features.begin() + from.begin[k + 1]);
+  begin.push_back(std::uint32_t(features.size()));
+}
+
+std::vector<std::int64_t> CandidateMemory::match(const std::vector<BodyPair>& near) const {
+  std::vector<std::int64_t> old(near.size(), -1);
+  const std::vector<BodyPair>& had = searches_.pairs;
+  const auto less = [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; };
+  std::size_t e = 0;
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    while (e < had.size() && less(had[e], near[k])) ++e;
+    if (e < had.size() && had[e] == near[k]) old[k] = std::int64_t(e);
+  }
+  return old;
+}
+
+bool CandidateMemory::still_found(std::size_t e, BodyPair p, const BodyMotion& now) const {
+  const Vec3& xi = now.position[p.i];
+  const Vec3& xj = now.position[p.j];
+  // Any core point of j moved relative to any of i by at most this since the search (m).
+  const double moved = ((xj - xi) - searches_.offset[e]).norm() +
+                       turn_bound(now.orientation[p.i], searches_.turn_i[e], now.reach[p.i]) +
+                       turn_bound(now.orientation[p.j], searches_.turn_j[e], now.reach[p.j]);
+  const double margin = kMotionMargin * (extra_ + xi.norm() + xj.norm() + now.reach[p.i] + now.reach[p.j]);  // m
+  return moved + margin <= extra_;  // false for a NaN state
+}
+
+void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed,
+                           const BodyMotion& now, double range, PairList& list) {
+  const std::vector<std::int64_t> old = match(near);
+  const std::size_t n_blocks = (near.size() + kCandidateBlock - 1) / kCandidateBlock;
+  std::vector<CandidateBlock> blocks(n_blocks);
+  std::vector<PairSearches> kept(n_blocks);
+  std::size_t recalled = 0;
+  in_team(near.size() >= kParallelMinItems, [&] {
+    std::vector<FeaturePair> wide, found;
+    std::vector<double> wide2, found2;  // m^2
+    std::vector<std::uint32_t> order;
+#pragma omp for schedule(dynamic, 1) reduction(+ : recalled)
+    for (std::size_t blk = 0; blk < n_blocks; ++blk) {
+      for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k) {
+        const BodyPair p = near[k];
+        const PosedBody& a = posed[p.i];
+        const PosedBody& b = posed[p.j];
+        const double cutoff = a.radius + b.radius + range;  // m, as candidate_features'
+        const double cutoff2 = cutoff * cutoff;
+        double nearest2 = std::numeric_limits<double>::infinity();  // m^2
+        found.clear();
+        found2.clear();
+        const auto keep = [&](FeaturePair f, double d2) {
+          if (d2 >= cutoff2) return;
+          found.push_back(f);
+          found2.push_back(d2);
+          nearest2 = std::min(nearest2, d2);
+        };
+        if (old[k] >= 0 && still_found(std::size_t(old[k]), p, now)) {
+          kept[blk].add(searches_, std::size_t(old[k]));
+          for (std::uint32_t c = kept[blk].begin[kept[blk].size() - 1]; c < kept[blk].features.size(); ++c)
+            keep(kept[blk].features[c], candidate_distance_sq(a, b, kept[blk].features[c], cutoff2));
+          ++recalled;
+        } else {
+          wide.clear();
+          wide2.clear();
+          candidate_features(a, b, range + extra_, wide, &wide2);
+          kept[blk].add(p, now, wide);
+          for (std::size_t c = 0; c < wide.size(); ++c) keep(wide[c], wide2[c]);
+        }
+        blocks[blk].add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
+      }
+    }
+  });
+  join_blocks(blocks, list);
+  searches_ = PairSearches{};
+  for (const PairSearches& from : kept)
+    for (std::size_t k = 0; k < from.size(); ++k) searches_.add(from, k);
+  recalled_ = recalled;
+  searched_ = near.size() - recalled;
+}
+
+}  // namespace polydem
