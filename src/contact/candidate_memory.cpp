@@ -16,12 +16,14 @@ constexpr double kMotionMargin = 1e-9;
 
 }  // namespace
 
-void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found) {
+void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found,
+                       const std::vector<double>& found2) {
   pairs.push_back(p);
   offset.push_back(now.position[p.j] - now.position[p.i]);
   turn_i.push_back(now.orientation[p.i]);
   turn_j.push_back(now.orientation[p.j]);
   features.insert(features.end(), found.begin(), found.end());
+  distance2.insert(distance2.end(), found2.begin(), found2.end());
   begin.push_back(std::uint32_t(features.size()));
 }
 
@@ -31,7 +33,19 @@ void PairSearches::add(const PairSearches& from, std::size_t k) {
   turn_i.push_back(from.turn_i[k]);
   turn_j.push_back(from.turn_j[k]);
   features.insert(features.end(), from.features.begin() + from.begin[k], from.features.begin() + from.begin[k + 1]);
+  distance2.insert(distance2.end(), from.distance2.begin() + from.begin[k], from.distance2.begin() + from.begin[k + 1]);
   begin.push_back(std::uint32_t(features.size()));
+}
+
+void PairSearches::append(const PairSearches& from) {
+  pairs.insert(pairs.end(), from.pairs.begin(), from.pairs.end());
+  offset.insert(offset.end(), from.offset.begin(), from.offset.end());
+  turn_i.insert(turn_i.end(), from.turn_i.begin(), from.turn_i.end());
+  turn_j.insert(turn_j.end(), from.turn_j.begin(), from.turn_j.end());
+  const std::uint32_t shift = std::uint32_t(features.size());
+  for (std::size_t k = 1; k < from.begin.size(); ++k) begin.push_back(shift + from.begin[k]);
+  features.insert(features.end(), from.features.begin(), from.features.end());
+  distance2.insert(distance2.end(), from.distance2.begin(), from.distance2.end());
 }
 
 std::vector<std::int64_t> CandidateMemory::match(const std::vector<BodyPair>& near) const {
@@ -46,15 +60,14 @@ std::vector<std::int64_t> CandidateMemory::match(const std::vector<BodyPair>& ne
   return old;
 }
 
-bool CandidateMemory::still_found(std::size_t e, BodyPair p, const BodyMotion& now) const {
+double CandidateMemory::motion(std::size_t e, BodyPair p, const BodyMotion& now) const {
   const Vec3& xi = now.position[p.i];
   const Vec3& xj = now.position[p.j];
   // Any core point of j moved relative to any of i by at most this since the search (m).
   const double moved = ((xj - xi) - searches_.offset[e]).norm() +
                        turn_bound(now.orientation[p.i], searches_.turn_i[e], now.reach[p.i]) +
                        turn_bound(now.orientation[p.j], searches_.turn_j[e], now.reach[p.j]);
-  const double margin = kMotionMargin * (extra_ + xi.norm() + xj.norm() + now.reach[p.i] + now.reach[p.j]);  // m
-  return moved + margin <= extra_;  // false for a NaN state
+  return moved + kMotionMargin * (extra_ + xi.norm() + xj.norm() + now.reach[p.i] + now.reach[p.j]);
 }
 
 void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed,
@@ -85,16 +98,21 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
           found2.push_back(d2);
           nearest2 = std::min(nearest2, d2);
         };
-        if (old[k] >= 0 && still_found(std::size_t(old[k]), p, now)) {
-          kept[blk].add(searches_, std::size_t(old[k]));
-          for (std::uint32_t c = kept[blk].begin[kept[blk].size() - 1]; c < kept[blk].features.size(); ++c)
-            keep(kept[blk].features[c], candidate_distance_sq(a, b, kept[blk].features[c], cutoff2));
+        const double moved = old[k] >= 0 ? motion(std::size_t(old[k]), p, now) : extra_;  // m
+        if (moved < extra_) {  // false for NaN
+          const std::size_t e = std::size_t(old[k]);
+          // A candidate that far then is beyond the cutoff now: no distance to take.
+          const double beyond2 = (cutoff + moved) * (cutoff + moved);  // m^2
+          for (std::uint32_t c = searches_.begin[e]; c < searches_.begin[e + 1]; ++c)
+            if (searches_.distance2[c] < beyond2)
+              keep(searches_.features[c], candidate_distance_sq(a, b, searches_.features[c], cutoff2));
+          kept[blk].add(searches_, e);
           ++recalled;
         } else {
           wide.clear();
           wide2.clear();
           candidate_features(a, b, range + extra_, wide, &wide2);
-          kept[blk].add(p, now, wide);
+          kept[blk].add(p, now, wide, wide2);
           for (std::size_t c = 0; c < wide.size(); ++c) keep(wide[c], wide2[c]);
         }
         blocks[blk].add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
@@ -103,8 +121,7 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
   });
   join_blocks(blocks, list);
   searches_ = PairSearches{};
-  for (const PairSearches& from : kept)
-    for (std::size_t k = 0; k < from.size(); ++k) searches_.add(from, k);
+  for (const PairSearches& from : kept) searches_.append(from);
   recalled_ = recalled;
   searched_ = near.size() - recalled;
 }

@@ -25,9 +25,11 @@ struct PairSearches {
   std::vector<Quat> turn_i, turn_j;  // orientations at the search
   std::vector<std::uint32_t> begin{0};  // pair k's candidates: [begin[k], begin[k + 1])
   std::vector<FeaturePair> features;  // within range + extra then
+  std::vector<double> distance2;       // m^2, per feature: its core distance^2 then
   std::size_t size() const { return pairs.size(); }
-  void add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found);
+  void add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found, const std::vector<double>& found2);
   void add(const PairSearches& from, std::size_t k);  // from's pair k, as it is
+  void append(const PairSearches& from);               // all of from's pairs
 };
 
 class CandidateMemory {
@@ -46,8 +48,9 @@ class CandidateMemory {
  private:
   // Index in searches_ of each near pair's search, -1 when none (both lists sorted by (i, j)).
   std::vector<std::int64_t> match(const std::vector<BodyPair>& near) const;
-  // True when pair p moved less than extra_ (with a margin) since its search e.
-  bool still_found(std::size_t e, BodyPair p, const BodyMotion& now) const;
+  // m, how far pair p's core points may have come closer since its search e, with a margin
+  // for round-off (NaN for a NaN state).
+  double motion(std::size_t e, BodyPair p, const BodyMotion& now) const;
 
   double extra_;  // m
   PairSearches searches_;
