@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "neighbor/rebuild_trigger.hpp"
 #include "polydem/parallel.hpp"
 
 namespace polydem {
@@ -13,6 +12,15 @@ namespace {
 // Relative margin of the motion test, on the scale of the lengths the distances are made of:
 // round-off must never keep a search that could have missed a candidate.
 constexpr double kMotionMargin = 1e-9;
+
+// At least sin(theta / 2), theta the angle of the turn from unit q_then to q_now: with
+// c = q_now . q_then = +-cos(theta / 2), |q_now -+ q_then|^2 = 2 (1 -+ c) >= 1 - c^2. Cheaper
+// than the relative quaternion (no product, one root).
+double half_turn_sine_bound(const Quat& q_now, const Quat& q_then) {
+  const double minus2 = (q_now.coeffs() - q_then.coeffs()).squaredNorm();
+  const double plus2 = (q_now.coeffs() + q_then.coeffs()).squaredNorm();
+  return std::sqrt(std::min(minus2, plus2));
+}
 
 }  // namespace
 
@@ -25,27 +33,6 @@ void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<Feat
   features.insert(features.end(), found.begin(), found.end());
   distance2.insert(distance2.end(), found2.begin(), found2.end());
   begin.push_back(std::uint32_t(features.size()));
-}
-
-void PairSearches::add(const PairSearches& from, std::size_t k) {
-  pairs.push_back(from.pairs[k]);
-  offset.push_back(from.offset[k]);
-  turn_i.push_back(from.turn_i[k]);
-  turn_j.push_back(from.turn_j[k]);
-  features.insert(features.end(), from.features.begin() + from.begin[k], from.features.begin() + from.begin[k + 1]);
-  distance2.insert(distance2.end(), from.distance2.begin() + from.begin[k], from.distance2.begin() + from.begin[k + 1]);
-  begin.push_back(std::uint32_t(features.size()));
-}
-
-void PairSearches::append(const PairSearches& from) {
-  pairs.insert(pairs.end(), from.pairs.begin(), from.pairs.end());
-  offset.insert(offset.end(), from.offset.begin(), from.offset.end());
-  turn_i.insert(turn_i.end(), from.turn_i.begin(), from.turn_i.end());
-  turn_j.insert(turn_j.end(), from.turn_j.begin(), from.turn_j.end());
-  const std::uint32_t shift = std::uint32_t(features.size());
-  for (std::size_t k = 1; k < from.begin.size(); ++k) begin.push_back(shift + from.begin[k]);
-  features.insert(features.end(), from.features.begin(), from.features.end());
-  distance2.insert(distance2.end(), from.distance2.begin(), from.distance2.end());
 }
 
 std::vector<std::int64_t> CandidateMemory::match(const std::vector<BodyPair>& near) const {
@@ -65,8 +52,8 @@ double CandidateMemory::motion(std::size_t e, BodyPair p, const BodyMotion& now)
   const Vec3& xj = now.position[p.j];
   // Any core point of j moved relative to any of i by at most this since the search (m).
   const double moved = ((xj - xi) - searches_.offset[e]).norm() +
-                       turn_bound(now.orientation[p.i], searches_.turn_i[e], now.reach[p.i]) +
-                       turn_bound(now.orientation[p.j], searches_.turn_j[e], now.reach[p.j]);
+                       2.0 * now.reach[p.i] * half_turn_sine_bound(now.orientation[p.i], searches_.turn_i[e]) +
+                       2.0 * now.reach[p.j] * half_turn_sine_bound(now.orientation[p.j], searches_.turn_j[e]);
   return moved + kMotionMargin * (extra_ + xi.norm() + xj.norm() + now.reach[p.i] + now.reach[p.j]);
 }
 
@@ -75,7 +62,8 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
   const std::vector<std::int64_t> old = match(near);
   const std::size_t n_blocks = (near.size() + kCandidateBlock - 1) / kCandidateBlock;
   std::vector<CandidateBlock> blocks(n_blocks);
-  std::vector<PairSearches> kept(n_blocks);
+  std::vector<PairSearches> made(n_blocks);  // the new searches, block by block
+  std::vector<std::int64_t> from(near.size());  // as remember() reads it
   std::size_t recalled = 0;
   in_team(near.size() >= kParallelMinItems, [&] {
     std::vector<FeaturePair> wide, found;
@@ -106,13 +94,14 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
           for (std::uint32_t c = searches_.begin[e]; c < searches_.begin[e + 1]; ++c)
             if (searches_.distance2[c] < beyond2)
               keep(searches_.features[c], candidate_distance_sq(a, b, searches_.features[c], cutoff2));
-          kept[blk].add(searches_, e);
+          from[k] = std::int64_t(e);
           ++recalled;
         } else {
           wide.clear();
           wide2.clear();
           candidate_features(a, b, range + extra_, wide, &wide2);
-          kept[blk].add(p, now, wide, wide2);
+          from[k] = -1 - std::int64_t(made[blk].size());
+          made[blk].add(p, now, wide, wide2);
           for (std::size_t c = 0; c < wide.size(); ++c) keep(wide[c], wide2[c]);
         }
         blocks[blk].add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
@@ -120,10 +109,45 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
     }
   });
   join_blocks(blocks, list);
-  searches_ = PairSearches{};
-  for (const PairSearches& from : kept) searches_.append(from);
+  remember(from, made);
   recalled_ = recalled;
   searched_ = near.size() - recalled;
+}
+
+void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) {
+  const auto source = [&](std::size_t k, std::size_t& e) -> const PairSearches& {
+    if (from[k] >= 0) {
+      e = std::size_t(from[k]);
+      return searches_;
+    }
+    e = std::size_t(-1 - from[k]);
+    return made[k / kCandidateBlock];
+  };
+  const std::size_t n = from.size();
+  PairSearches next;
+  next.begin.resize(n + 1);
+  for (std::size_t k = 0, e = 0; k < n; ++k) {
+    const PairSearches& s = source(k, e);
+    next.begin[k + 1] = next.begin[k] + (s.begin[e + 1] - s.begin[e]);
+  }
+  next.pairs.resize(n);
+  next.offset.resize(n);
+  next.turn_i.resize(n);
+  next.turn_j.resize(n);
+  next.features.resize(next.begin[n]);
+  next.distance2.resize(next.begin[n]);
+  parallel_for(n, [&](std::size_t k) {
+    std::size_t e = 0;
+    const PairSearches& s = source(k, e);
+    next.pairs[k] = s.pairs[e];
+    next.offset[k] = s.offset[e];
+    next.turn_i[k] = s.turn_i[e];
+    next.turn_j[k] = s.turn_j[e];
+    std::copy(s.features.begin() + s.begin[e], s.features.begin() + s.begin[e + 1], next.features.begin() + next.begin[k]);
+    std::copy(s.distance2.begin() + s.begin[e], s.distance2.begin() + s.begin[e + 1],
+              next.distance2.begin() + next.begin[k]);
+  });
+  searches_ = std::move(next);
 }
 
 }  // namespace polydem

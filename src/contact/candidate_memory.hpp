@@ -28,8 +28,6 @@ struct PairSearches {
   std::vector<double> distance2;       // m^2, per feature: its core distance^2 then
   std::size_t size() const { return pairs.size(); }
   void add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found, const std::vector<double>& found2);
-  void add(const PairSearches& from, std::size_t k);  // from's pair k, as it is
-  void append(const PairSearches& from);               // all of from's pairs
 };
 
 class CandidateMemory {
@@ -51,6 +49,9 @@ class CandidateMemory {
   // m, how far pair p's core points may have come closer since its search e, with a margin
   // for round-off (NaN for a NaN state).
   double motion(std::size_t e, BodyPair p, const BodyMotion& now) const;
+  // Keeps the near pairs' searches: pair k's is searches_'s from[k] when from[k] >= 0, else the
+  // new one -1 - from[k] of its block's `made`.
+  void remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made);
 
   double extra_;  // m
   PairSearches searches_;

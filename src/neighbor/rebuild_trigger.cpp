@@ -15,18 +15,14 @@ constexpr std::size_t kMinParallel = 1024;
 
 }  // namespace
 
-double turn_bound(const Quat& q_now, const Quat& q_built, double radius) {
+double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
+                          double bounding_radius) {
+  if (bounding_radius == 0.0) return dx.norm();  // a point (a sphere's core): turning moves it nowhere
   const Quat q_rel = q_now * q_built.conjugate();
   // sin(theta/2) = |vector part| of the unit relative rotation; dividing by the norm forgives
   // quaternions that drifted slightly off unit length.
   const double sin_half = q_rel.vec().norm() / q_rel.norm();
-  return 2.0 * radius * sin_half;
-}
-
-double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
-                          double bounding_radius) {
-  if (bounding_radius == 0.0) return dx.norm();  // a point (a sphere's core): turning moves it nowhere
-  return dx.norm() + turn_bound(q_now, q_built, bounding_radius);
+  return dx.norm() + 2.0 * bounding_radius * sin_half;
 }
 
 void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q, bool points) {

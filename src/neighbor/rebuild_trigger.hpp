@@ -13,8 +13,6 @@ namespace polydem {
 // centre moved by `dx` and the orientation went from q_built to q_now: |dx| + 2 R sin(theta/2),
 // theta the angle of q_now q_built^-1. The chord 2 R sin(theta/2) is the exact largest rotational
 // displacement, tighter than the arc R theta and free of trigonometry. R = 0: |dx| alone.
-// m, the chord 2 R sin(theta/2) alone: how far turning moved a point within R of the centre.
-double turn_bound(const Quat& q_now, const Quat& q_built, double radius);
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius);
 
