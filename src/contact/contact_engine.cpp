@@ -7,7 +7,7 @@
 
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
-#include "contact/list_build.hpp"
+#include "contact/candidate_memory.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
 #include "contact/sphere_wall.hpp"
@@ -95,6 +95,10 @@ struct DriverPartner {
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
+// Of the skin: how far beyond the range a body pair's candidate search looks, to be kept over
+// the next rebuilds (candidate_memory.hpp).
+constexpr double kSearchExtra = 1.0;
+
 // m, the farthest core vertex from the centre of mass, unscaled.
 double core_reach(const Shape& s) {
   double r = 0.0;
@@ -106,7 +110,7 @@ double core_reach(const Shape& s) {
 
 ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies,
                              ContactSettings settings)
-    : shapes_(shapes), settings_(settings) {
+    : shapes_(shapes), settings_(settings), memory_(kSearchExtra * settings.skin) {
   band_particle_ = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;
   band_driver_ = settings_.driver.cohesion ? settings_.driver.dncut : 0.0;
   const std::size_t n = bodies.size();
@@ -224,7 +228,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     } else {
       mark_listed(bodies.size(), near, fresh_d.pairs);
       pose(bodies);
-      body_candidates(near, [&](std::uint32_t b) -> const PosedBody& { return posed_[b]; }, range_p, fresh);
+      memory_.find(near, posed_, {bodies.position->data(), bodies.orientation->data(), core_reach_.data()}, range_p,
+                   fresh);
     }
   }
   size_slots(fresh);  // once the broad phase's pairs are freed

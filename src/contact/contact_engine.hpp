@@ -8,6 +8,7 @@
 #include "driver/drivers.hpp"
 #include "geometry/box_pose.hpp"
 #include "polydem/shape.hpp"
+#include "contact/candidate_memory.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/exact_sum.hpp"
 #include "contact/local_bodies.hpp"
@@ -165,6 +166,7 @@ class ContactEngine {
   std::vector<double> core_reach_;
   std::vector<double> radius_;             // m, scaled Minkowski radius per body
   CellList cells_;
+  CandidateMemory memory_;                 // the body pairs' last searches (not for spheres only)
   RebuildTrigger trigger_;
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path

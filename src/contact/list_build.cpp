@@ -28,6 +28,11 @@ void CandidateBlock::add(BodyPair p, const PosedBody& a, const PosedBody& b, dou
   found.clear();
   distances2.clear();
   const double smallest = candidate_features(a, b, range, found, &distances2);  // m
+  add_found(p, smallest, a.radius + b.radius, found, distances2, order);
+}
+
+void CandidateBlock::add_found(BodyPair p, double smallest, double radii, const std::vector<FeaturePair>& found,
+                               const std::vector<double>& distances2, std::vector<std::uint32_t>& order) {
   if (found.empty()) return;
   pairs.push_back(p);
   pair_gap.push_back(smallest);
@@ -35,7 +40,7 @@ void CandidateBlock::add(BodyPair p, const PosedBody& a, const PosedBody& b, dou
   sorted_by_key(found, order);
   for (std::uint32_t c : order) {
     features.push_back(found[c]);
-    gaps.push_back(gap_below(distances2[c], a.radius + b.radius));
+    gaps.push_back(gap_below(distances2[c], radii));
   }
 }
 

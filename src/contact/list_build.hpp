@@ -30,6 +30,10 @@ struct CandidateBlock {
   // Adds pair p's candidates unless it has none (it cannot touch before the next rebuild).
   void add(BodyPair p, const PosedBody& a, const PosedBody& b, double range, std::vector<FeaturePair>& found,
            std::vector<double>& distances2, std::vector<std::uint32_t>& order);
+  // The same for candidates found already: `smallest` their smallest gap (m), `radii` the
+  // pair's (m), distances2 their core distances^2 (m^2).
+  void add_found(BodyPair p, double smallest, double radii, const std::vector<FeaturePair>& found,
+                 const std::vector<double>& distances2, std::vector<std::uint32_t>& order);
 };
 
 // Lays the blocks out as `list`'s pairs, slot_begin, features, slot_gap and gap_at_build, in

@@ -267,6 +267,29 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
   pose_vertices(shape, scale, position, q.toRotationMatrix(), out);
 }
 
+double candidate_distance_sq(const PosedBody& A, const PosedBody& B, FeaturePair f, double cutoff2) {
+  const auto on_edge = [](const PosedBody& P, const PosedBody& E, std::uint32_t v, std::uint32_t e) {  // m^2
+    const Vec3& p0 = E.vertices[E.shape->edges[e][0]];
+    return point_segment_distance_sq(P.vertices[v], p0, E.vertices[E.shape->edges[e][1]] - p0);
+  };
+  const auto on_face = [&](const PosedBody& P, const PosedBody& F, std::uint32_t v, std::uint32_t face) {  // m^2
+    const Vec3 n = F.rotation * F.shape->face_normals[face];  // as collect_near's: the same bits
+    return face_distance_sq(P.vertices[v], F, int(face), n, cutoff2);
+  };
+  switch (f.type) {
+    case PairType::vertex_vertex: return (A.vertices[f.a] - B.vertices[f.b]).squaredNorm();
+    case PairType::vertex_edge: return on_edge(A, B, f.a, f.b);
+    case PairType::edge_vertex: return on_edge(B, A, f.b, f.a);
+    case PairType::vertex_face: return on_face(A, B, f.a, f.b);
+    case PairType::face_vertex: return on_face(B, A, f.b, f.a);
+    case PairType::edge_edge: break;
+  }
+  const Vec3& pa = A.vertices[A.shape->edges[f.a][0]];
+  const Vec3& pb = B.vertices[B.shape->edges[f.b][0]];
+  return segment_segment_distance_sq(pa, A.vertices[A.shape->edges[f.a][1]] - pa, pb,
+                                     B.vertices[B.shape->edges[f.b][1]] - pb);
+}
+
 double candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& pairs,
                           std::vector<double>* distances2) {
   const double cutoff = A.radius + B.radius + range;

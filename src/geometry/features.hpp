@@ -70,6 +70,10 @@ inline bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair 
 double candidate_features(const PosedBody& A, const PosedBody& B, double range, std::vector<FeaturePair>& out,
                           std::vector<double>* distances2 = nullptr);
 
+// m^2, the core distance^2 of candidate f as candidate_features finds it with this cutoff^2 (the
+// same arithmetic, so the same bits): to keep a remembered candidate only when it would be found.
+double candidate_distance_sq(const PosedBody& A, const PosedBody& B, FeaturePair f, double cutoff2);
+
 // Reference: every feature pair of the two bodies evaluated with feature_contact(max_gap = 0).
 std::vector<std::pair<FeaturePair, ContactPoint>> brute_force_contacts(const PosedBody& A, const PosedBody& B);
 

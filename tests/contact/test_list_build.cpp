@@ -1,13 +1,15 @@
 // A rebuild lays its candidates out block by block (contact/list_build.hpp): the list must be
 // the one a pair-by-pair build gives (pairs with candidates, runs in key order, the gaps at the
-// build), whatever the thread count; and sizing the results after carry_history keeps the
-// contact counts it carried.
+// build), whatever the thread count, also when the pairs' searches are remembered between
+// rebuilds (contact/candidate_memory.hpp); and sizing the results after carry_history keeps
+// the contact counts it carried.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 #include <omp.h>
 
 #include "../geometry/test_shapes.hpp"
+#include "contact/candidate_memory.hpp"
 #include "contact/list_build.hpp"
 
 using namespace polydem;
@@ -58,6 +60,17 @@ std::vector<std::uint64_t> keys(const std::vector<FeaturePair>& features) {  // 
   return out;
 }
 
+// Bounding spheres within range: some pairs have no candidate.
+std::vector<BodyPair> near_pairs(const std::vector<PosedBody>& posed, double range) {
+  std::vector<BodyPair> near;
+  for (std::uint32_t i = 0; i < posed.size(); ++i)
+    for (std::uint32_t j = i + 1; j < posed.size(); ++j)
+      if ((posed[i].position - posed[j].position).norm() <
+          posed[i].shape->bounding_radius + posed[j].shape->bounding_radius + range)
+        near.push_back({i, j});
+  return near;
+}
+
 }  // namespace
 
 TEST_CASE("body candidates joined from blocks equal the pair-by-pair list at 1 and 2 threads") {
@@ -67,12 +80,7 @@ TEST_CASE("body candidates joined from blocks equal the pair-by-pair list at 1 a
   std::vector<PosedBody> posed;
   for (const Posed& b : bodies) posed.push_back(b.body());
   const double range = 0.05;  // m
-  std::vector<BodyPair> near;  // bounding spheres within range: some pairs have no candidate
-  for (std::uint32_t i = 0; i < posed.size(); ++i)
-    for (std::uint32_t j = i + 1; j < posed.size(); ++j)
-      if ((posed[i].position - posed[j].position).norm() <
-          posed[i].shape->bounding_radius + posed[j].shape->bounding_radius + range)
-        near.push_back({i, j});
+  const std::vector<BodyPair> near = near_pairs(posed, range);
   REQUIRE(near.size() > 4 * kCandidateBlock);  // several blocks, in parallel
   const PairList want = reference(near, posed, range);
   REQUIRE(want.size() < near.size());          // pairs without candidates are dropped
@@ -87,6 +95,62 @@ TEST_CASE("body candidates joined from blocks equal the pair-by-pair list at 1 a
     CHECK(keys(got.features) == keys(want.features));
     CHECK(same_bytes(got.slot_gap, want.slot_gap));
     CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+  }
+  omp_set_num_threads(threads_before);
+}
+
+TEST_CASE("remembered searches give the list a new search gives, rebuild after rebuild, at 1 and 2 threads") {
+  const std::vector<Shape> shapes = {make_sphere(0.3), make_cube(0.5, 0.05), make_octahedron(0.6, 0.04),
+                                     make_hex_prism(0.5, 0.3, 0.05), make_tetrahedron(0.4, 0.05)};
+  const double range = 0.05, extra = 0.05;  // m
+  const int threads_before = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    std::vector<Posed> bodies = random_bodies(shapes, 60);
+    std::vector<double> reach;  // m, the farthest core vertex
+    for (const Posed& b : bodies) {
+      double r = 0.0;
+      for (const Vec3& v : b.shape->vertices) r = std::max(r, b.scale * v.norm());
+      reach.push_back(r);
+    }
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    CandidateMemory memory(extra);
+    std::size_t recalled = 0, searched_again = 0;
+    for (int rebuild = 0; rebuild < 8; ++rebuild) {
+      std::vector<PosedBody> posed;
+      std::vector<Vec3> x;
+      std::vector<Quat> q;
+      for (const Posed& b : bodies) {
+        posed.push_back(b.body());
+        x.push_back(b.position);
+        q.push_back(b.q);
+      }
+      const std::vector<BodyPair> near = near_pairs(posed, range);
+      const PairList want = reference(near, posed, range);
+      PairList got;
+      memory.find(near, posed, {x.data(), q.data(), reach.data()}, range, got);
+      CHECK(same_bytes(got.pairs, want.pairs));
+      CHECK(same_bytes(got.slot_begin, want.slot_begin));
+      CHECK(keys(got.features) == keys(want.features));
+      CHECK(same_bytes(got.slot_gap, want.slot_gap));
+      CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+      if (rebuild > 0) {
+        recalled += memory.recalled();
+        searched_again += memory.searched();
+      }
+      // Most bodies creep (their pairs' motion crosses `extra` after a few rebuilds); every
+      // seventh jumps; every fifth turns by up to 0.05 rad about a random axis.
+      for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const double step = b % 7 == 0 ? 0.3 : 0.006;  // m
+        Quat turn = Quat::Identity();
+        if (b % 5 == 0) turn = Quat(Eigen::AngleAxisd(0.05 * u(rng), random_unit(rng)));
+        bodies[b] = Posed(*bodies[b].shape, bodies[b].scale, bodies[b].position + step * Vec3(u(rng), u(rng), u(rng)),
+                          turn * bodies[b].q);
+      }
+    }
+    CHECK(recalled > 0);        // searches kept
+    CHECK(searched_again > 0);  // and made anew
   }
   omp_set_num_threads(threads_before);
 }

@@ -1,0 +1,153 @@
+#include "contact/candidate_memory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "polydem/parallel.hpp"
+
+namespace polydem {
+namespace {
+
+// Relative margin of the motion test, on the scale of the lengths the distances are made of:
+// round-off must never keep a search that could have missed a candidate.
+constexpr double kMotionMargin = 1e-9;
+
+// At least sin(theta / 2), theta the angle of the turn from unit q_then to q_now: with
+// c = q_now . q_then = +-cos(theta / 2), |q_now -+ q_then|^2 = 2 (1 -+ c) >= 1 - c^2. Cheaper
+// than the relative quaternion (no product, one root).
+double half_turn_sine_bound(const Quat& q_now, const Quat& q_then) {
+  const double minus2 = (q_now.coeffs() - q_then.coeffs()).squaredNorm();
+  const double plus2 = (q_now.coeffs() + q_then.coeffs()).squaredNorm();
+  return std::sqrt(std::min(minus2, plus2));
+}
+
+}  // namespace
+
+void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found,
+                       const std::vector<double>& found2) {
+  pairs.push_back(p);
+  offset.push_back(now.position[p.j] - now.position[p.i]);
+  turn_i.push_back(now.orientation[p.i]);
+  turn_j.push_back(now.orientation[p.j]);
+  features.insert(features.end(), found.begin(), found.end());
+  distance2.insert(distance2.end(), found2.begin(), found2.end());
+  begin.push_back(std::uint32_t(features.size()));
+}
+
+std::vector<std::int64_t> CandidateMemory::match(const std::vector<BodyPair>& near) const {
+  std::vector<std::int64_t> old(near.size(), -1);
+  const std::vector<BodyPair>& had = searches_.pairs;
+  const auto less = [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; };
+  std::size_t e = 0;
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    while (e < had.size() && less(had[e], near[k])) ++e;
+    if (e < had.size() && had[e] == near[k]) old[k] = std::int64_t(e);
+  }
+  return old;
+}
+
+double CandidateMemory::motion(std::size_t e, BodyPair p, const BodyMotion& now) const {
+  const Vec3& xi = now.position[p.i];
+  const Vec3& xj = now.position[p.j];
+  // Any core point of j moved relative to any of i by at most this since the search (m).
+  const double moved = ((xj - xi) - searches_.offset[e]).norm() +
+                       2.0 * now.reach[p.i] * half_turn_sine_bound(now.orientation[p.i], searches_.turn_i[e]) +
+                       2.0 * now.reach[p.j] * half_turn_sine_bound(now.orientation[p.j], searches_.turn_j[e]);
+  return moved + kMotionMargin * (extra_ + xi.norm() + xj.norm() + now.reach[p.i] + now.reach[p.j]);
+}
+
+void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed,
+                           const BodyMotion& now, double range, PairList& list) {
+  const std::vector<std::int64_t> old = match(near);
+  const std::size_t n_blocks = (near.size() + kCandidateBlock - 1) / kCandidateBlock;
+  std::vector<CandidateBlock> blocks(n_blocks);
+  std::vector<PairSearches> made(n_blocks);  // the new searches, block by block
+  std::vector<std::int64_t> from(near.size());  // as remember() reads it
+  std::size_t recalled = 0;
+  in_team(near.size() >= kParallelMinItems, [&] {
+    std::vector<FeaturePair> wide, found;
+    std::vector<double> wide2, found2;  // m^2
+    std::vector<std::uint32_t> order;
+#pragma omp for schedule(dynamic, 1) reduction(+ : recalled)
+    for (std::size_t blk = 0; blk < n_blocks; ++blk) {
+      for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k) {
+        const BodyPair p = near[k];
+        const PosedBody& a = posed[p.i];
+        const PosedBody& b = posed[p.j];
+        const double cutoff = a.radius + b.radius + range;  // m, as candidate_features'
+        const double cutoff2 = cutoff * cutoff;
+        double nearest2 = std::numeric_limits<double>::infinity();  // m^2
+        found.clear();
+        found2.clear();
+        const auto keep = [&](FeaturePair f, double d2) {
+          if (d2 >= cutoff2) return;
+          found.push_back(f);
+          found2.push_back(d2);
+          nearest2 = std::min(nearest2, d2);
+        };
+        const double moved = old[k] >= 0 ? motion(std::size_t(old[k]), p, now) : extra_;  // m
+        if (moved < extra_) {  // false for NaN
+          const std::size_t e = std::size_t(old[k]);
+          // A candidate that far then is beyond the cutoff now: no distance to take.
+          const double beyond2 = (cutoff + moved) * (cutoff + moved);  // m^2
+          for (std::uint32_t c = searches_.begin[e]; c < searches_.begin[e + 1]; ++c)
+            if (searches_.distance2[c] < beyond2)
+              keep(searches_.features[c], candidate_distance_sq(a, b, searches_.features[c], cutoff2));
+          from[k] = std::int64_t(e);
+          ++recalled;
+        } else {
+          wide.clear();
+          wide2.clear();
+          candidate_features(a, b, range + extra_, wide, &wide2);
+          from[k] = -1 - std::int64_t(made[blk].size());
+          made[blk].add(p, now, wide, wide2);
+          for (std::size_t c = 0; c < wide.size(); ++c) keep(wide[c], wide2[c]);
+        }
+        blocks[blk].add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
+      }
+    }
+  });
+  join_blocks(blocks, list);
+  remember(from, made);
+  recalled_ = recalled;
+  searched_ = near.size() - recalled;
+}
+
+void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) {
+  const auto source = [&](std::size_t k, std::size_t& e) -> const PairSearches& {
+    if (from[k] >= 0) {
+      e = std::size_t(from[k]);
+      return searches_;
+    }
+    e = std::size_t(-1 - from[k]);
+    return made[k / kCandidateBlock];
+  };
+  const std::size_t n = from.size();
+  PairSearches next;
+  next.begin.resize(n + 1);
+  for (std::size_t k = 0, e = 0; k < n; ++k) {
+    const PairSearches& s = source(k, e);
+    next.begin[k + 1] = next.begin[k] + (s.begin[e + 1] - s.begin[e]);
+  }
+  next.pairs.resize(n);
+  next.offset.resize(n);
+  next.turn_i.resize(n);
+  next.turn_j.resize(n);
+  next.features.resize(next.begin[n]);
+  next.distance2.resize(next.begin[n]);
+  parallel_for(n, [&](std::size_t k) {
+    std::size_t e = 0;
+    const PairSearches& s = source(k, e);
+    next.pairs[k] = s.pairs[e];
+    next.offset[k] = s.offset[e];
+    next.turn_i[k] = s.turn_i[e];
+    next.turn_j[k] = s.turn_j[e];
+    std::copy(s.features.begin() + s.begin[e], s.features.begin() + s.begin[e + 1], next.features.begin() + next.begin[k]);
+    std::copy(s.distance2.begin() + s.begin[e], s.distance2.begin() + s.begin[e + 1],
+              next.distance2.begin() + next.begin[k]);
+  });
+  searches_ = std::move(next);
+}
+
+}  // namespace polydem

@@ -1,0 +1,61 @@
+#pragma once
+// Body pairs' feature candidates kept from one rebuild to the next (issue 19: a pour rebuilds
+// every ~13 steps, mostly for the few bodies that fall). A pair's search looks `extra` beyond
+// the range; until the pair's relative motion since then reaches `extra`, every feature pair
+// within range now was found by it, so their exact distances now pick the list's candidates:
+// the same candidates, distances and bits as a new search, for the cost of those distances.
+#include <cstdint>
+#include <vector>
+
+#include "contact/list_build.hpp"
+
+namespace polydem {
+
+// What the motion bound reads of each local body.
+struct BodyMotion {
+  const Vec3* position;     // m
+  const Quat* orientation;
+  const double* reach;      // m, the farthest core point from the centre
+};
+
+// Searches of body pairs: the poses they were made at and what they found, pair by pair.
+struct PairSearches {
+  std::vector<BodyPair> pairs;
+  std::vector<Vec3> offset;  // m, x_j - x_i at the search
+  std::vector<Quat> turn_i, turn_j;  // orientations at the search
+  std::vector<std::uint32_t> begin{0};  // pair k's candidates: [begin[k], begin[k + 1])
+  std::vector<FeaturePair> features;  // within range + extra then
+  std::vector<double> distance2;       // m^2, per feature: its core distance^2 then
+  std::size_t size() const { return pairs.size(); }
+  void add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found, const std::vector<double>& found2);
+};
+
+class CandidateMemory {
+ public:
+  // extra: m, how far beyond the range a search looks.
+  explicit CandidateMemory(double extra) : extra_(extra) {}
+  // body_candidates(near, posed, range, list) with the same result, searching anew only the
+  // pairs whose last search is out of reach (or absent); remembers this rebuild's searches.
+  void find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed, const BodyMotion& now,
+            double range, PairList& list);
+  // Forgets every search: the bodies' indices or shapes changed.
+  void clear() { searches_ = PairSearches{}; }
+  std::size_t searched() const { return searched_; }  // pairs searched anew by the last find
+  std::size_t recalled() const { return recalled_; }  // pairs whose search was kept
+
+ private:
+  // Index in searches_ of each near pair's search, -1 when none (both lists sorted by (i, j)).
+  std::vector<std::int64_t> match(const std::vector<BodyPair>& near) const;
+  // m, how far pair p's core points may have come closer since its search e, with a margin
+  // for round-off (NaN for a NaN state).
+  double motion(std::size_t e, BodyPair p, const BodyMotion& now) const;
+  // Keeps the near pairs' searches: pair k's is searches_'s from[k] when from[k] >= 0, else the
+  // new one -1 - from[k] of its block's `made`.
+  void remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made);
+
+  double extra_;  // m
+  PairSearches searches_;
+  std::size_t searched_ = 0, recalled_ = 0;
+};
+
+}  // namespace polydem
