@@ -123,9 +123,9 @@ EnergyParts released_energy(const LawParams& law, const ContactHistory& h, doubl
 
 namespace law_detail {
 // N, the compressive normal force fp = max(spring - nu_w vn_e, 0) at n+1, vn_e the dashpot's
-// velocity (second_order.hpp), with the linear law's dashpot push where the overlap starts; and
-// `push`, the spring's part of that push and the push where the clamp lets go or the overlap
-// ends. The push is a correction of the spring's impulse: kept out of the dashpot's share (the
+// velocity (second_order.hpp), with the linear law's dashpot push where the overlap starts
+// (Hertz: onset_force and released_force, normal_hertz.hpp); and `push`, the spring's part of that push and the push where the clamp lets go
+// or the overlap ends. The push is a correction of the spring's impulse: kept out of the dashpot's share (the
 // ledger, the last force in h.fd), so an elastic contact dissipates nothing and a release is
 // seen once. kLone: the weight is 1 at n and n+1 (the sphere path), so nothing is divided by it.
 struct NormalForce {
@@ -185,7 +185,15 @@ template <class Normal, bool kLone>
   NormalForce out;
   if constexpr (Normal::kCurved) {
     const double nu = k.weight * nu_pair;  // N s/m
-    if (overlap > 0.0) out.fp = std::max(spring + Normal::cell_dashpot(nu, overlap, -vn_e, dt, h.gap >= 0.0), 0.0);
+    // Both corrections in fp, the dashpot's share, so the ledger counts their work: kept out, as
+    // the linear law's push, en 0.9's ledger after an impact at 0.3 x critical was 3.2% off, in
+    // fp 2.0% (2.7% before them; the kernel alone, worst of 16 touch places).
+    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
+      out.fp = Normal::onset_force(law, k.r_star, k.weight, nu, k.m_eff, overlap, -vn, dt);
+    } else if (overlap > 0.0) {
+      out.fp = std::max(spring + Normal::cell_dashpot(nu, overlap, -vn_e, dt), 0.0);
+      if (vn_e > 0.0) out.fp = Normal::released_force(law, k.r_star, k.weight, nu, overlap, -vn_e, dt, out.fp);
+    }
   } else {
     // N, unclamped and signed: the spring at -dn is `spring` inside the overlap (one evaluation).
     const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;

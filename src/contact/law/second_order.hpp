@@ -10,8 +10,8 @@
 //    damping, so the critical step of damping_linear.hpp stays a safe bound);
 //  - the force jumps (dashpot) or kinks (spring) where the overlap starts or the clamp lets go
 //    between two steps. The midpoint rule then misses an impulse of the order of the jump times
-//    dt, which the step where it happens adds back (the linear law; Hertz's force starts and
-//    ends smoothly, x^1.5 and x^1/4).
+//    dt, which the step where it happens adds back (the linear law here; Hertz's x^1/4 dashpot
+//    in NormalHertz::onset_force and released_force).
 // The impulses below come from integrating the force over the Verlet cells with the switch at
 // its interpolated time; derived in tests/contact/test_law_impact.cpp.
 #include <algorithm>
