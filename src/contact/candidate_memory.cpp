@@ -125,7 +125,7 @@ void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std:
   };
   const std::size_t n = from.size();
   PairSearches next;
-  next.begin.resize(n + 1);
+  next.begin.assign(n + 1, 0);  // assign, not resize: GCC 12 misreads resize of the one-element default (-Warray-bounds)
   for (std::size_t k = 0, e = 0; k < n; ++k) {
     const PairSearches& s = source(k, e);
     next.begin[k + 1] = next.begin[k] + (s.begin[e + 1] - s.begin[e]);
