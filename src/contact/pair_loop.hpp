@@ -11,16 +11,17 @@
 
 namespace polydem {
 
-// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list,
-// adds each pair's energy to its own list.pending[k] (in step order: the same bits whatever
-// thread runs it) and keeps each block's contact count in list.block_contacts (sized by
+// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
+// and each block's energy and contact count in list.block_energy and block_contacts (sized by
 // resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
 // loop reads none of this list's results; a later barrier comes before anything that does).
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
-  assert(list.block_contacts.size() == blocks && list.pending.size() == n);
+  assert(list.block_energy.size() == blocks && list.block_contacts.size() == blocks);
+  const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
   auto one_block = [&](std::size_t b, PairScratch& scratch) {
+    EnergyParts energy;  // J
     std::uint32_t contacts = 0;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
       const PairTotals t = kernel(std::uint32_t(k), scratch);
@@ -28,9 +29,11 @@ void all_pair_forces(PairList& list, const Kernel& kernel) {
       list.torque_i[k] = t.torque_i;
       list.torque_j[k] = t.torque_j;
       list.touching[k] = std::uint16_t(t.contacts);
-      list.pending[k] += t.energy;
+      energy += t.energy;
       contacts += std::uint32_t(t.contacts);
+      if (per_pair) list.pair_energy[k] = t.energy;
     }
+    list.block_energy[b] = energy;
     list.block_contacts[b] = contacts;
   };
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
