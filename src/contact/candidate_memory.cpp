@@ -64,12 +64,11 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
   std::vector<CandidateBlock> blocks(n_blocks);
   std::vector<PairSearches> made(n_blocks);  // the new searches, block by block
   std::vector<std::int64_t> from(near.size());  // as remember() reads it
-  std::size_t recalled = 0;
   in_team(near.size() >= kParallelMinItems, [&] {
     std::vector<FeaturePair> wide, found;
     std::vector<double> wide2, found2;  // m^2
     std::vector<std::uint32_t> order;
-#pragma omp for schedule(dynamic, 1) reduction(+ : recalled)
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t blk = 0; blk < n_blocks; ++blk) {
       for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k) {
         const BodyPair p = near[k];
@@ -95,7 +94,6 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
             if (searches_.distance2[c] < beyond2)
               keep(searches_.features[c], candidate_distance_sq(a, b, searches_.features[c], cutoff2));
           from[k] = std::int64_t(e);
-          ++recalled;
         } else {
           wide.clear();
           wide2.clear();
@@ -109,9 +107,11 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
     }
   });
   join_blocks(blocks, list);
+  // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang refuses a
+  // reduction over a lambda's captured reference)
+  recalled_ = std::size_t(std::count_if(from.begin(), from.end(), [](std::int64_t f) { return f >= 0; }));
   remember(from, made);
-  recalled_ = recalled;
-  searched_ = near.size() - recalled;
+  searched_ = near.size() - recalled_;
 }
 
 void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) {
