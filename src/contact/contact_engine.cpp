@@ -237,6 +237,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
   body_index_.build(body_list_.pairs, bodies.size(), true);
+  direct_.sums.assign(bodies.size(), BodySum{});
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
   for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k) {
@@ -355,7 +356,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
   // it) is the one before the sums read either list.
   if (spheres_only_) {
-    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_);
+    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, &direct_);
   } else {
     const BodyPartner partner{posed_.data(),          view.position,         view.velocity,
                               view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
@@ -365,7 +366,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       using Parts = decltype(parts);
       all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
         return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-      });
+      }, &direct_);
     });
   }
   if (!driver_list_.pairs.empty()) {

@@ -50,22 +50,16 @@ struct ForceSums {
     const Vec3 *force_i, *torque_i, *torque_j;
   };
   Side body, driver;
+  const BodySum* direct;  // the body pairs' sums made in their loop (DirectSums), or null: through `body`
   Vec3* force;
   Vec3* torque;
-  // Without branches on the pair's side or contact, which no predictor guesses (3 mispredictions
-  // a body and step on the sphere bed): each term is weighted by +1 (i), -1 (j) or 0 (not
-  // touching). The same bits: (-1) x + f is f - x, and f (which starts at +0, so is never -0)
-  // plus a +-0 term is f.
   [[gnu::always_inline]] void operator()(std::size_t b) const {
-    static constexpr double kSign[2][2] = {{0.0, 0.0}, {1.0, -1.0}};  // [touching][is j]
-    static constexpr double kOn[2] = {0.0, 1.0};                      // [touching]
-    const Vec3* const body_torque[2] = {body.torque_i, body.torque_j};  // [is j]
     Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-    for (std::uint32_t e = body.begin[b]; e < body.begin[b + 1]; ++e) {
-      const std::uint32_t k = body.entries[e] >> 1, is_j = body.entries[e] & 1u;
-      const std::uint32_t on = body.touching[k] != 0;
-      f += kSign[on][is_j] * body.force_i[k];
-      t += kOn[on] * body_torque[is_j][k];
+    if (direct) {
+      f = direct[b].force;
+      t = direct[b].torque;
+    } else {
+      sum_body_pairs(b, f, t);
     }
     for (std::uint32_t e = driver.begin[b]; e < driver.begin[b + 1]; ++e) {
       const std::uint32_t k = driver.entries[e] >> 1;
@@ -75,6 +69,21 @@ struct ForceSums {
     }
     force[b] += f;
     torque[b] += t;
+  }
+  // Without branches on the pair's side or contact, which no predictor guesses (3 mispredictions
+  // a body and step on the sphere bed): each term is weighted by +1 (i), -1 (j) or 0 (not
+  // touching). The same bits: (-1) x + f is f - x, and f (which starts at +0, so is never -0)
+  // plus a +-0 term is f.
+  [[gnu::always_inline]] void sum_body_pairs(std::size_t b, Vec3& f, Vec3& t) const {
+    static constexpr double kSign[2][2] = {{0.0, 0.0}, {1.0, -1.0}};  // [touching][is j]
+    static constexpr double kOn[2] = {0.0, 1.0};                      // [touching]
+    const Vec3* const body_torque[2] = {body.torque_i, body.torque_j};  // [is j]
+    for (std::uint32_t e = body.begin[b]; e < body.begin[b + 1]; ++e) {
+      const std::uint32_t k = body.entries[e] >> 1, is_j = body.entries[e] & 1u;
+      const std::uint32_t on = body.touching[k] != 0;
+      f += kSign[on][is_j] * body.force_i[k];
+      t += kOn[on] * body_torque[is_j][k];
+    }
   }
 };
 
@@ -179,6 +188,7 @@ class ContactEngine {
   std::vector<DriverAtBuild> drivers_at_build_;
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   BodyPairIndex body_index_, driver_index_;
+  DirectSums direct_;                      // the body pairs' sums when one thread runs their loop
   ContactStats stats_;
 };
 
@@ -187,6 +197,7 @@ inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) const {
            body_list_.torque_i.data(), body_list_.torque_j.data()},
           {driver_index_.begin.data(), driver_index_.entries.data(), driver_list_.touching.data(),
            driver_list_.force_i.data(), driver_list_.torque_i.data(), driver_list_.torque_j.data()},
+          direct_.on ? direct_.sums.data() : nullptr,
           bodies.force->data(),
           bodies.torque->data()};
 }

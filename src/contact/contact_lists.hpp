@@ -88,6 +88,18 @@ struct BodyPairIndex {
   void build(const std::vector<BodyPair>& pairs, std::size_t n_bodies, bool partner_is_body);
 };
 
+// A body's force (N) and torque (N m) from its body pairs, each added in increasing pair order
+// (BodyPairIndex's), as one thread meets them in the pair loop: the index's sum without the index.
+struct BodySum {
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+};
+// The body pairs' sums made in the pair loop when one thread runs it (`on`, set by the loop
+// each step; else the closing pass sums the pairs' results through the index).
+struct DirectSums {
+  std::vector<BodySum> sums;  // per body of the contact stage
+  bool on = false;
+};
+
 // The pairs of `list` with an active slot, and those slots alone: all carry_history reads of
 // an old list, held instead of it while the new one is built (a rebuild's memory peak).
 PairList active_part(const PairList& list);

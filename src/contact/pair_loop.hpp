@@ -15,19 +15,31 @@ namespace polydem {
 // and each block's energy and contact count in list.block_energy and block_contacts (sized by
 // resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
 // loop reads none of this list's results; a later barrier comes before anything that does).
+// With `direct` (body pairs) and a team of one thread, each pair's force and torques are added
+// to its bodies' sums instead (in pair order: the bits of the closing pass's sum, none of its
+// reads of the pairs' results at random); direct->on says which was done.
 template <bool kNoWait = false, class Kernel>
-void all_pair_forces(PairList& list, const Kernel& kernel) {
+void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
   assert(list.block_energy.size() == blocks && list.block_contacts.size() == blocks);
   const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
-  auto one_block = [&](std::size_t b, PairScratch& scratch) {
+  auto one_block = [&](std::size_t b, PairScratch& scratch, auto to_bodies) {
     EnergyParts energy;  // J
     std::uint32_t contacts = 0;
+    BodySum* const sums = to_bodies ? direct->sums.data() : nullptr;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
       const PairTotals t = kernel(std::uint32_t(k), scratch);
-      list.force_i[k] = t.force_i;
-      list.torque_i[k] = t.torque_i;
-      list.torque_j[k] = t.torque_j;
+      if constexpr (decltype(to_bodies)::value) {  // a pair out of reach adds +0: no sum's bits change
+        const BodyPair p = list.pairs[k];
+        sums[p.i].force += t.force_i;
+        sums[p.i].torque += t.torque_i;
+        sums[p.j].force -= t.force_i;
+        sums[p.j].torque += t.torque_j;
+      } else {
+        list.force_i[k] = t.force_i;
+        list.torque_i[k] = t.torque_i;
+        list.torque_j[k] = t.torque_j;
+      }
       list.touching[k] = std::uint16_t(t.contacts);
       energy += t.energy;
       contacts += std::uint32_t(t.contacts);
@@ -39,12 +51,22 @@ void all_pair_forces(PairList& list, const Kernel& kernel) {
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
   in_team(blocks >= 2, [&] {
     PairScratch scratch;
+    if (direct && omp_get_num_threads() == 1) {  // this thread alone: no other reads or writes `direct`
+      direct->on = true;
+      std::fill(direct->sums.begin(), direct->sums.end(), BodySum{});
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch, std::true_type{});
+      return;
+    }
+    if (direct) {
+#pragma omp master
+      direct->on = false;  // read after the barrier that ends the contact stage
+    }
     if constexpr (kNoWait) {
 #pragma omp for schedule(dynamic, 1) nowait
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch, std::false_type{});
     } else {
 #pragma omp for schedule(dynamic, 1)
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch, std::false_type{});
     }
   });
 }

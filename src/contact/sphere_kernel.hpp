@@ -6,9 +6,11 @@
 namespace polydem {
 
 // Runs sphere_pair_forces over every pair of `list` (sphere_loop.cpp), keeping its forces and
-// block energies as the general pair loop does. Inside a team the threads leave it without a
-// barrier (all_pair_forces<true>): the caller meets them before reading the results.
-void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list);
+// block energies as the general pair loop does (or each body's sums: `direct`, all_pair_forces).
+// Inside a team the threads leave it without a barrier (all_pair_forces<true>): the caller meets
+// them before reading the results.
+void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
+                      DirectSums* direct = nullptr);
 
 // Always inlined into the pair loop: the totals go straight into the list, not through memory.
 template <class Parts>
