@@ -6,6 +6,7 @@
 
 #include "contact/contact_mass.hpp"
 #include "contact/law.hpp"
+#include "contact/law_lanes.hpp"
 #include "geometry/shadowing.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/contact_regions.hpp"
@@ -162,6 +163,8 @@ struct RigidMotion {
 
 // Partner must provide:
 //   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
+//   and optionally unsigned contact_lanes(a, j, const int fa[2], const int fb[2], max_gap, ContactPoint[2]):
+//   two edge-edge pairs at once (edge_edge_lanes)
 //   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
 //   double moved(i, j): m, bound on how much closer two features got since the build
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
@@ -183,13 +186,7 @@ template <class Partner>
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
   bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
   const std::uint32_t end = list.slot_begin[k + 1];  // read once: the stores to `found` might alias it
-  for (std::uint32_t s = list.slot_begin[k]; s < end; ++s) {
-    if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
-    FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
-    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
-      scratch.found.pop_back();
-      continue;
-    }
+  const auto keep = [&](FoundContact& next, std::uint32_t s) {
     next.slot = s;
     shadowing |= shadows(list.features[s].type);
     shadowable |= may_be_shadowed(list.features[s].type);
@@ -197,6 +194,33 @@ template <class Partner>
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);  // 72 bytes: two lines at most
+  };
+  const auto near = [&](std::uint32_t s) { return list.slot_gap[s] - moved < band; };  // may touch by now
+  for (std::uint32_t s = list.slot_begin[k]; s < end; ++s) {
+    if (!near(s)) continue;
+    if constexpr (requires(const int f[2], ContactPoint g[2]) { partner.contact_lanes(a, p.j, f, f, band, g); }) {
+      // Edge-edge candidates (sorted last) two at a time: the next near one makes the second lane.
+      if (list.features[s].type == PairType::edge_edge) {
+        std::uint32_t s2 = s + 1;
+        while (s2 < end && !near(s2)) ++s2;
+        if (s2 < end && list.features[s2].type == PairType::edge_edge) {
+          const int fa[2] = {list.features[s].a, list.features[s2].a};
+          const int fb[2] = {int(list.features[s].b), int(list.features[s2].b)};
+          ContactPoint g[2];
+          const unsigned touch = partner.contact_lanes(a, p.j, fa, fb, band, g);
+          if (touch & 1u) keep(scratch.found.emplace_back(s, g[0]), s);
+          if (touch & 2u) keep(scratch.found.emplace_back(s2, g[1]), s2);
+          s = s2;
+          continue;
+        }
+      }
+    }
+    FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
+    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
+      scratch.found.pop_back();
+      continue;
+    }
+    keep(next, s);
   }
   if (shadowing && shadowable)  // rare: nothing to drop otherwise
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
@@ -224,33 +248,38 @@ template <class Parts, class Partner>
       law.exact_step &&
       (law.contact_mass ||
        (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
-  for (std::size_t c = 0; c < scratch.found.size(); ++c) {
+  // The law of one sub-contact c, as contact_force alone computes it.
+  const auto one_contact = [&](std::size_t c) {
     const ContactPoint& g = scratch.found[c].geometry;
-    const std::uint32_t s = scratch.found[c].slot;
-    const Vec3 lever = g.point - xi;  // m, from i's centre
+    const SubContactMotion motion = sub_contact_motion(g.point, xi, v_centre, w_rel, v_centre_end, w_rel_end);
     double m_dashpot = m_eff, nu_dashpot = nu;  // kg, N s/m: the normal dashpot's mass and coefficient
     if (law.contact_mass) {  // damping_mass: contact: a lone contact's point, or its patch's
       m_dashpot = scratch.found.size() == 1
-                      ? 1.0 / (point_inverse_mass(bodies.posed[p.i], bodies.mass[p.i], lever, g.normal) +
+                      ? 1.0 / (point_inverse_mass(bodies.posed[p.i], bodies.mass[p.i], motion.lever, g.normal) +
                                partner.point_inverse_mass(p.j, g.point, g.normal))
                       : scratch.patch_mass[c];
       nu_dashpot = Normal::pair_damping(law, m_dashpot, r_star);
     }
     ContactKinematics kin{g.normal,
                           g.gap,
-                          v_centre + w_rel.cross(lever),
-                          v_centre_end + w_rel_end.cross(lever),
+                          motion.v_rel,
+                          motion.v_end,
                           w_rel,
                           m_dashpot,
-                          Parts::rolling && law.rolling ? lever.norm() : 0.0,
+                          Parts::rolling && law.rolling ? motion.lever.norm() : 0.0,
                           scratch.weight[c],
                           nu_dashpot,
                           nu_t,
                           r_star,
                           exact_step,
                           law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
-    const ContactForce f = contact_force<Parts>(law, kin, list.slots[s].history, dt);
-    SlotRecord& record = list.records[s];  // always recording: the hand-over reads the point
+    return contact_force<Parts>(law, kin, list.slots[scratch.found[c].slot].history, dt);
+  };
+  // Adds sub-contact c's force f to the pair's totals and records it.
+  const auto add = [&](std::size_t c, const ContactForce& f) {
+    const ContactPoint& g = scratch.found[c].geometry;
+    const Vec3 lever = g.point - xi;  // m, from i's centre
+    SlotRecord& record = list.records[scratch.found[c].slot];  // always recording: the hand-over reads the point
     record.point = g.point;  // member by member: an aggregate went through a copy on the stack
     record.force = f.force;
     record.fn = f.fn;
@@ -260,7 +289,28 @@ template <class Parts, class Partner>
     if constexpr (Parts::rolling) totals.torque_i += lever.cross(f.force) + f.moment;
     else totals.torque_i += lever.cross(f.force);
     totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+  };
+  std::size_t c = 0;
+  // Two sub-contacts at a time where the law allows it (law_lanes.hpp), in their order.
+  constexpr bool kLanes = !Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
+  if constexpr (kLanes) {
+    if (scratch.found.size() >= 2 && !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) &&
+        law.mu > 0.0 && nu >= 0.0) {
+      const LaneConstants lc{xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt};
+      for (; c + 1 < scratch.found.size(); c += 2) {
+        ContactForce f[2];
+        const unsigned steady =
+            steady_lanes(lc, scratch.found[c].geometry, scratch.found[c + 1].geometry, scratch.weight[c],
+                         scratch.weight[c + 1], list.slots[scratch.found[c].slot].history,
+                         list.slots[scratch.found[c + 1].slot].history, f);
+        if (!(steady & 1u)) f[0] = one_contact(c);
+        if (!(steady & 2u)) f[1] = one_contact(c + 1);
+        add(c, f[0]);
+        add(c + 1, f[1]);
+      }
+    }
   }
+  for (; c < scratch.found.size(); ++c) add(c, one_contact(c));
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
   totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());
