@@ -31,11 +31,12 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
 }
 
 // Applies the law to sub-contacts a and b (points g, weights w, histories h) where steady. Bit l
-// of the result is set when lane l was: its force is in out[l] and its history h is advanced;
-// the other lane's h and out are left as they were.
+// of the result is set when lane l was: its force is in out[l], its torque about xi (N m) in
+// torque[l], and its history h is advanced; the other lane's h, out and torque are left as they were.
 [[gnu::always_inline]] inline unsigned steady_lanes(const LaneConstants& p, const ContactPoint& ga,
                                                     const ContactPoint& gb, double wa, double wb, ContactHistory& ha,
-                                                    ContactHistory& hb, ContactForce out[2]) {
+                                                    ContactHistory& hb, ContactForce out[2],
+                                                    Vec3 torque[2]) {
   using namespace lanes;
   const V3 n = load(ga.normal, gb.normal);
   const V2 dn = V2{ga.gap, gb.gap}, w = V2{wa, wb};
@@ -78,6 +79,7 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
   const Mask steady = (dn < zero) & (h_gap < zero) & ~((f_last > zero) & (u <= zero)) & (kt_w > zero) &
                       (trial2 <= ft_max * ft_max);
   const V3 force = fn * n + ft;
+  const V3 moment = cross(lever, force);
   const V2 dissipated_all = dissipated + (zero + zero);  // + the slip (0) and a started spring's work (0)
   ContactHistory* h[2] = {&ha, &hb};
   unsigned done = 0;
@@ -89,6 +91,7 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
     h[l]->gap = dn[l];
     h[l]->weight = w[l];
     out[l] = ContactForce{lane(force, l), Vec3::Zero(), fn[l], dissipated_all[l], 0.0, patch[l], 0.0, 0.0};
+    torque[l] = lane(moment, l);
   }
   return done;
 }

@@ -275,20 +275,23 @@ template <class Parts, class Partner>
                           law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
     return contact_force<Parts>(law, kin, list.slots[scratch.found[c].slot].history, dt);
   };
-  // Adds sub-contact c's force f to the pair's totals and records it.
-  const auto add = [&](std::size_t c, const ContactForce& f) {
-    const ContactPoint& g = scratch.found[c].geometry;
-    const Vec3 lever = g.point - xi;  // m, from i's centre
+  // Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
+  const auto add = [&](std::size_t c, const ContactForce& f, const Vec3& torque) {
     SlotRecord& record = list.records[scratch.found[c].slot];  // always recording: the hand-over reads the point
-    record.point = g.point;  // member by member: an aggregate went through a copy on the stack
+    record.point = scratch.found[c].geometry.point;  // member by member: an aggregate went through a copy on the stack
     record.force = f.force;
     record.fn = f.fn;
     totals.force_i += f.force;
-    // Without rolling the moment is +0, and adding it changes no sum's bits (a -0 term becomes +0,
-    // which the sum, never -0 itself, absorbs alike).
-    if constexpr (Parts::rolling) totals.torque_i += lever.cross(f.force) + f.moment;
-    else totals.torque_i += lever.cross(f.force);
+    totals.torque_i += torque;
     totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+  };
+  // The same for a contact through contact_force. Without rolling the moment is +0, and adding it
+  // changes no sum's bits (a -0 term becomes +0, which the sum, never -0 itself, absorbs alike).
+  const auto add_one = [&](std::size_t c) {
+    const ContactForce f = one_contact(c);
+    const Vec3 lever = scratch.found[c].geometry.point - xi;  // m, from i's centre
+    if constexpr (Parts::rolling) add(c, f, lever.cross(f.force) + f.moment);
+    else add(c, f, lever.cross(f.force));
   };
   std::size_t c = 0;
   // Two sub-contacts at a time where the law allows it (law_lanes.hpp), in their order.
@@ -299,18 +302,19 @@ template <class Parts, class Partner>
       const LaneConstants lc{xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt};
       for (; c + 1 < scratch.found.size(); c += 2) {
         ContactForce f[2];
+        Vec3 torque[2];
         const unsigned steady =
             steady_lanes(lc, scratch.found[c].geometry, scratch.found[c + 1].geometry, scratch.weight[c],
                          scratch.weight[c + 1], list.slots[scratch.found[c].slot].history,
-                         list.slots[scratch.found[c + 1].slot].history, f);
-        if (!(steady & 1u)) f[0] = one_contact(c);
-        if (!(steady & 2u)) f[1] = one_contact(c + 1);
-        add(c, f[0]);
-        add(c + 1, f[1]);
+                         list.slots[scratch.found[c + 1].slot].history, f, torque);
+        if (steady & 1u) add(c, f[0], torque[0]);
+        else add_one(c);
+        if (steady & 2u) add(c + 1, f[1], torque[1]);
+        else add_one(c + 1);
       }
     }
   }
-  for (; c < scratch.found.size(); ++c) add(c, one_contact(c));
+  for (; c < scratch.found.size(); ++c) add_one(c);
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
   totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());

@@ -64,7 +64,8 @@ TEST_CASE("law lanes: a steady lane has contact_force's bits, another lane is le
     const ContactHistory h0[2] = {random_history(d, w[0]), random_history(d, w[1])};
     ContactHistory h[2] = {h0[0], h0[1]};
     ContactForce f[2];
-    const unsigned done = steady_lanes(p, g[0], g[1], w[0], w[1], h[0], h[1], f);
+    Vec3 torque[2];
+    const unsigned done = steady_lanes(p, g[0], g[1], w[0], w[1], h[0], h[1], f, torque);
     for (int l = 0; l < 2; ++l) {
       if (!(done & (1u << l))) {
         ++left;
@@ -79,6 +80,7 @@ TEST_CASE("law lanes: a steady lane has contact_force's bits, another lane is le
       const ContactForce ref = contact_force<Parts>(law, kin, h_ref, dt);
       REQUIRE(same_bits(h[l], h_ref));
       REQUIRE(same_bits(f[l].force, ref.force));
+      REQUIRE(same_bits(torque[l], Vec3(m.lever.cross(ref.force))));
       REQUIRE(same_bits(f[l].moment, ref.moment));
       REQUIRE(same_bits(f[l].fn, ref.fn));
       REQUIRE(same_bits(f[l].dissipated, ref.dissipated));
