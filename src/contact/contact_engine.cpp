@@ -44,10 +44,6 @@ struct BodyPartner {
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
-  unsigned contact_lanes(const PosedBody& a, std::uint32_t j, const int fa[2], const int fb[2], double max_gap,
-                         ContactPoint out[2]) const {
-    return edge_edge_lanes(a, posed[j], fa, fb, max_gap, out);
-  }
   // Rigorous: a feature distance shrinks by at most the two bodies' displacement bounds.
   bool apart(const PairList& list, std::uint32_t k, double band) const {
     const BodyPair p = list.pairs[k];

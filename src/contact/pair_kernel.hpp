@@ -163,8 +163,6 @@ struct RigidMotion {
 
 // Partner must provide:
 //   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
-//   and optionally unsigned contact_lanes(a, j, const int fa[2], const int fb[2], max_gap, ContactPoint[2]):
-//   two edge-edge pairs at once (edge_edge_lanes)
 //   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
 //   double moved(i, j): m, bound on how much closer two features got since the build
 //   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
@@ -186,7 +184,13 @@ template <class Partner>
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
   bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
   const std::uint32_t end = list.slot_begin[k + 1];  // read once: the stores to `found` might alias it
-  const auto keep = [&](FoundContact& next, std::uint32_t s) {
+  for (std::uint32_t s = list.slot_begin[k]; s < end; ++s) {
+    if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
+    FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
+    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
+      scratch.found.pop_back();
+      continue;
+    }
     next.slot = s;
     shadowing |= shadows(list.features[s].type);
     shadowable |= may_be_shadowed(list.features[s].type);
@@ -194,33 +198,6 @@ template <class Partner>
     const char* state = reinterpret_cast<const char*>(&list.slots[s]);
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);  // 72 bytes: two lines at most
-  };
-  const auto near = [&](std::uint32_t s) { return list.slot_gap[s] - moved < band; };  // may touch by now
-  for (std::uint32_t s = list.slot_begin[k]; s < end; ++s) {
-    if (!near(s)) continue;
-    if constexpr (requires(const int f[2], ContactPoint g[2]) { partner.contact_lanes(a, p.j, f, f, band, g); }) {
-      // Edge-edge candidates (sorted last) two at a time: the next near one makes the second lane.
-      if (list.features[s].type == PairType::edge_edge) {
-        std::uint32_t s2 = s + 1;
-        while (s2 < end && !near(s2)) ++s2;
-        if (s2 < end && list.features[s2].type == PairType::edge_edge) {
-          const int fa[2] = {list.features[s].a, list.features[s2].a};
-          const int fb[2] = {int(list.features[s].b), int(list.features[s2].b)};
-          ContactPoint g[2];
-          const unsigned touch = partner.contact_lanes(a, p.j, fa, fb, band, g);
-          if (touch & 1u) keep(scratch.found.emplace_back(s, g[0]), s);
-          if (touch & 2u) keep(scratch.found.emplace_back(s2, g[1]), s2);
-          s = s2;
-          continue;
-        }
-      }
-    }
-    FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
-    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
-      scratch.found.pop_back();
-      continue;
-    }
-    keep(next, s);
   }
   if (shadowing && shadowable)  // rare: nothing to drop otherwise
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);

@@ -61,11 +61,6 @@ inline bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair 
   return kFeatureKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);
 }
 
-// Two edge-edge pairs (a[l], b[l]) of the same bodies at once, each with the single pair's bits:
-// bit l of the result is set when pair l touches (filling out[l]), as feature_contact would.
-unsigned edge_edge_lanes(const PosedBody& A, const PosedBody& B, const int a[2], const int b[2], double max_gap,
-                         ContactPoint out[2]);
-
 // Verlet candidates: appends every feature pair whose features (as point sets, boundary
 // included, no interior rule) are closer than rA + rB + range, in a deterministic order
 // (by type, then index in A, then index in B). Used at neighbour-list rebuilds. Returns the

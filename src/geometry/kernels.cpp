@@ -6,7 +6,6 @@
 #include <cstddef>
 
 #include "geometry/features.hpp"
-#include "geometry/lanes.hpp"
 #include "geometry/segment.hpp"
 
 namespace polydem {
@@ -197,54 +196,6 @@ bool swapped(const PosedBody& A, const PosedBody& B, int a, int b, double max_ga
 }
 
 }  // namespace
-
-// Two edge pairs (a[l], b[l]) of the same bodies at once, lane l doing edge_edge's operations in
-// its order (lanes.hpp), every test taken at the end: a rejected lane costs the whole path, but a
-// pile's edge-edge candidates are mostly contacts. Bit l of the result: lane l's pair touches (out[l]).
-unsigned edge_edge_lanes(const PosedBody& A, const PosedBody& B, const int a[2], const int b[2], double max_gap,
-                         ContactPoint out[2]) {
-  using namespace lanes;
-  const std::array<int, 2>& ea0 = A.shape->edges[a[0]];
-  const std::array<int, 2>& ea1 = A.shape->edges[a[1]];
-  const std::array<int, 2>& eb0 = B.shape->edges[b[0]];
-  const std::array<int, 2>& eb1 = B.shape->edges[b[1]];
-  const V3 pa = load(A.vertices[ea0[0]], A.vertices[ea1[0]]);
-  const V3 pb = load(B.vertices[eb0[0]], B.vertices[eb1[0]]);
-  const V3 da = load(A.vertices[ea0[1]], A.vertices[ea1[1]]) - pa;
-  const V3 db = load(B.vertices[eb0[1]], B.vertices[eb1[1]]) - pb;
-  const V3 c = cross(da, db);
-  const V2 c2 = dot(c, c), aa = dot(da, da), bb = dot(db, db);
-  const V3 r = pa - pb;
-  const V2 rc = dot(r, c);  // line-line distance times |c|
-  const double rsum = A.radius + B.radius;
-  const double limit = rsum + max_gap;  // m
-  const V2 ab = dot(da, db), ra = dot(da, r), rb = dot(db, r);
-  const V2 s_c2 = ab * rb - ra * bb, t_c2 = aa * rb - ab * ra;
-  const V2 margin = splat(kInteriorMargin), margin_end = splat(1.0 - kInteriorMargin);
-  const Mask inside = (s_c2 > margin * c2) & (s_c2 < margin_end * c2) & (t_c2 > margin * c2) & (t_c2 < margin_end * c2);
-  const V2 s = s_c2 / c2, t = t_c2 / c2;
-  const V2 inv_c = splat(1.0) / sqrt(c2);
-  const V2 signed_d = rc * inv_c;
-  const V2 distance = abs(signed_d);
-  Mask touch = ~(c2 <= splat(kParallelSin2) * aa * bb) & ~(rc * rc >= splat(limit * limit) * c2) & inside &
-               ~(distance - splat(rsum) >= splat(max_gap));
-  if (limit <= 0.0) touch = Mask{0, 0};
-  V3 n = inv_c * c;
-  const Mask crossing = distance <= splat(kCrossingTolerance) * sqrt(max(aa, bb));
-  const V2 side = crossing ? dot(n, splat(Vec3(A.position - B.position))) : signed_d;
-  n = select(side < splat(0.0), -n, n);
-  const V3 ca = pa + s * da;
-  const V3 cb = pb + t * db;
-  unsigned found = 0;
-  for (int l = 0; l < 2; ++l) {
-    if (!touch[l]) continue;
-    const Vec3 nl = lane(n, l), cal = lane(ca, l), cbl = lane(cb, l);
-    if (points_into(nl, cal, cbl, A, B)) continue;
-    fill(A, B, cal, cbl, nl, distance[l] - rsum, out[l]);
-    found |= 1u << l;
-  }
-  return found;
-}
 
 // Indexed by PairType; filled once at compile time, no virtual call per contact.
 const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = {
