@@ -6,6 +6,7 @@
 
 #include "contact/contact_mass.hpp"
 #include "contact/law.hpp"
+#include "contact/law_lanes.hpp"
 #include "geometry/shadowing.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/contact_regions.hpp"
@@ -202,6 +203,29 @@ template <class Partner>
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
 }
 
+// Sub-contacts 0, 1, ... of a pair two at a time through steady_lanes (law_lanes.hpp), a lane
+// that is not steady through add_one(c) (contact_force); add(c, f, torque) records and sums each
+// in order. Returns how many it did (the pair's count, rounded down to even). Out of line: the
+// lone contacts' loop in apply_law keeps its registers.
+template <class Add, class AddOne>
+[[gnu::noinline]] std::size_t law_in_lanes(const LaneConstants& lc, PairList& list, const PairScratch& scratch,
+                                           const Add& add, const AddOne& add_one) {
+  std::size_t c = 0;
+  for (; c + 1 < scratch.found.size(); c += 2) {
+    ContactForce f[2];
+    Vec3 torque[2];
+    const unsigned steady = steady_lanes(lc, scratch.found[c].geometry, scratch.found[c + 1].geometry,
+                                         scratch.weight[c], scratch.weight[c + 1],
+                                         list.slots[scratch.found[c].slot].history,
+                                         list.slots[scratch.found[c + 1].slot].history, f, torque);
+    if (steady & 1u) add(c, f[0], torque[0]);
+    else add_one(c);
+    if (steady & 2u) add(c + 1, f[1], torque[1]);
+    else add_one(c + 1);
+  }
+  return c;
+}
+
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
 // their forces, torques and energy to `totals`.
 template <class Parts, class Partner>
@@ -224,43 +248,61 @@ template <class Parts, class Partner>
       law.exact_step &&
       (law.contact_mass ||
        (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
-  for (std::size_t c = 0; c < scratch.found.size(); ++c) {
+  // The law of one sub-contact c, as contact_force alone computes it (inlined: the lone contacts' path).
+  const auto one_contact = [&](std::size_t c) __attribute__((always_inline)) {
     const ContactPoint& g = scratch.found[c].geometry;
-    const std::uint32_t s = scratch.found[c].slot;
-    const Vec3 lever = g.point - xi;  // m, from i's centre
+    const SubContactMotion motion = sub_contact_motion(g.point, xi, v_centre, w_rel, v_centre_end, w_rel_end);
     double m_dashpot = m_eff, nu_dashpot = nu;  // kg, N s/m: the normal dashpot's mass and coefficient
     if (law.contact_mass) {  // damping_mass: contact: a lone contact's point, or its patch's
       m_dashpot = scratch.found.size() == 1
-                      ? 1.0 / (point_inverse_mass(bodies.posed[p.i], bodies.mass[p.i], lever, g.normal) +
+                      ? 1.0 / (point_inverse_mass(bodies.posed[p.i], bodies.mass[p.i], motion.lever, g.normal) +
                                partner.point_inverse_mass(p.j, g.point, g.normal))
                       : scratch.patch_mass[c];
       nu_dashpot = Normal::pair_damping(law, m_dashpot, r_star);
     }
     ContactKinematics kin{g.normal,
                           g.gap,
-                          v_centre + w_rel.cross(lever),
-                          v_centre_end + w_rel_end.cross(lever),
+                          motion.v_rel,
+                          motion.v_end,
                           w_rel,
                           m_dashpot,
-                          Parts::rolling && law.rolling ? lever.norm() : 0.0,
+                          Parts::rolling && law.rolling ? motion.lever.norm() : 0.0,
                           scratch.weight[c],
                           nu_dashpot,
                           nu_t,
                           r_star,
                           exact_step,
                           law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
-    const ContactForce f = contact_force<Parts>(law, kin, list.slots[s].history, dt);
-    SlotRecord& record = list.records[s];  // always recording: the hand-over reads the point
-    record.point = g.point;  // member by member: an aggregate went through a copy on the stack
+    return contact_force<Parts>(law, kin, list.slots[scratch.found[c].slot].history, dt);
+  };
+  // Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
+  const auto add = [&](std::size_t c, const ContactForce& f, const Vec3& torque) __attribute__((always_inline)) {
+    SlotRecord& record = list.records[scratch.found[c].slot];  // always recording: the hand-over reads the point
+    record.point = scratch.found[c].geometry.point;  // member by member: an aggregate went through a copy on the stack
     record.force = f.force;
     record.fn = f.fn;
     totals.force_i += f.force;
-    // Without rolling the moment is +0, and adding it changes no sum's bits (a -0 term becomes +0,
-    // which the sum, never -0 itself, absorbs alike).
-    if constexpr (Parts::rolling) totals.torque_i += lever.cross(f.force) + f.moment;
-    else totals.torque_i += lever.cross(f.force);
+    totals.torque_i += torque;
     totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+  };
+  // The same for a contact through contact_force. Without rolling the moment is +0, and adding it
+  // changes no sum's bits (a -0 term becomes +0, which the sum, never -0 itself, absorbs alike).
+  const auto add_one = [&](std::size_t c) __attribute__((always_inline)) {
+    const ContactForce f = one_contact(c);
+    const Vec3 lever = scratch.found[c].geometry.point - xi;  // m, from i's centre
+    if constexpr (Parts::rolling) add(c, f, lever.cross(f.force) + f.moment);
+    else add(c, f, lever.cross(f.force));
+  };
+  std::size_t c = 0;
+  // Two sub-contacts at a time where the law allows it (law_lanes.hpp), in their order.
+  constexpr bool kLanes = !Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
+  if constexpr (kLanes) {
+    if (scratch.found.size() >= 2 && !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) &&
+        law.mu > 0.0 && nu >= 0.0)
+      c = law_in_lanes({xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt}, list,
+                       scratch, add, add_one);
   }
+  for (; c < scratch.found.size(); ++c) add_one(c);
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
   totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());

@@ -1,0 +1,94 @@
+// The two-lane law (law_lanes.hpp) against contact_force, the reference: on random sub-contacts,
+// a lane it takes has contact_force's bits (force, energies, history), one it leaves is untouched.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+
+#include "contact/law_lanes.hpp"
+
+using namespace polydem;
+
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const Vec3& a, const Vec3& b) { return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z()); }
+bool same_bits(const ContactHistory& a, const ContactHistory& b) {
+  return same_bits(a.ft, b.ft) && same_bits(a.mr, b.mr) && same_bits(a.fd, b.fd) && same_bits(a.gap, b.gap) &&
+         same_bits(a.weight, b.weight);
+}
+
+struct Draw {
+  std::mt19937_64 rng{19};
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  Vec3 vec(double scale) { return Vec3(uniform(-scale, scale), uniform(-scale, scale), uniform(-scale, scale)); }
+  bool chance(double p) { return uniform(0.0, 1.0) < p; }
+};
+
+// A sub-contact of a resting pile, now and then one that starts, ends, slips or sits at the band edge.
+ContactPoint random_point(Draw& d) {
+  ContactPoint g;
+  g.normal = d.vec(1.0).normalized();
+  g.point = d.vec(0.01);
+  g.gap = d.chance(0.1) ? d.uniform(0.0, 1e-5) : d.uniform(-1e-4, 0.0);
+  return g;
+}
+ContactHistory random_history(Draw& d, double weight) {
+  ContactHistory h;
+  if (d.chance(0.05)) return h;  // starts now
+  h.ft = d.chance(0.1) ? Vec3::Zero() : d.vec(d.chance(0.2) ? 10.0 : 0.5);  // N: some slip under mu fn
+  h.fd = d.uniform(-2.0, 2.0);
+  h.gap = d.chance(0.1) ? d.uniform(0.0, 1e-5) : d.uniform(-1e-4, 0.0);
+  h.weight = d.chance(0.5) ? weight : d.uniform(0.0, 1.0);
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("law lanes: a steady lane has contact_force's bits, another lane is left to it", "[law]") {
+  ContactParams params;
+  params.kn = 1e5;
+  params.kt = 0.8e5;
+  params.mu = 0.5;
+  params.en = 0.3;
+  const LawParams law = prepare_law(params);
+  using Parts = LawParts<NormalLinear, false, false, false>;
+  Draw d;
+  int steady = 0, left = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double m_eff = d.uniform(1e-3, 3e-3), dt = 6.6e-6;  // kg, s
+    const LaneConstants p{d.vec(0.1), d.vec(0.01), d.vec(1.0), d.vec(0.01), d.vec(1.0), m_eff,
+                          pair_damping(law, m_eff), law.kn, law.kt, law.mu, dt};
+    const ContactPoint g[2] = {random_point(d), random_point(d)};
+    const double w[2] = {d.chance(0.3) ? 1.0 : d.uniform(0.0, 1.0), d.chance(0.05) ? 0.0 : d.uniform(0.0, 1.0)};
+    const ContactHistory h0[2] = {random_history(d, w[0]), random_history(d, w[1])};
+    ContactHistory h[2] = {h0[0], h0[1]};
+    ContactForce f[2];
+    Vec3 torque[2];
+    const unsigned done = steady_lanes(p, g[0], g[1], w[0], w[1], h[0], h[1], f, torque);
+    for (int l = 0; l < 2; ++l) {
+      if (!(done & (1u << l))) {
+        ++left;
+        REQUIRE(same_bits(h[l], h0[l]));
+        continue;
+      }
+      ++steady;
+      const SubContactMotion m = sub_contact_motion(g[l].point, p.xi, p.v_centre, p.w_rel, p.v_centre_end, p.w_rel_end);
+      const ContactKinematics kin{g[l].normal, g[l].gap, m.v_rel, m.v_end, p.w_rel, m_eff, 0.0, w[l], p.nu, -1.0,
+                                  0.0, false, nullptr};
+      ContactHistory h_ref = h0[l];
+      const ContactForce ref = contact_force<Parts>(law, kin, h_ref, dt);
+      REQUIRE(same_bits(h[l], h_ref));
+      REQUIRE(same_bits(f[l].force, ref.force));
+      REQUIRE(same_bits(torque[l], Vec3(m.lever.cross(ref.force))));
+      REQUIRE(same_bits(f[l].moment, ref.moment));
+      REQUIRE(same_bits(f[l].fn, ref.fn));
+      REQUIRE(same_bits(f[l].dissipated, ref.dissipated));
+      REQUIRE(same_bits(f[l].patch, ref.patch));
+      REQUIRE(same_bits(f[l].sliding, ref.sliding));
+      REQUIRE(same_bits(f[l].rolling, ref.rolling));
+    }
+  }
+  CHECK(steady > 15000);  // most draws rest and stick
+  CHECK(left > 5000);     // and the rest exercise every way out
+}
