@@ -308,10 +308,12 @@ template <class Parts, bool kLone = false>
     }
     // The linear spring is on within reach, Hertz's (kt ~ x^1/2) within the overlap.
     const double dt_on = spring_on_time(Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
+    // Where the exact normal step is taken (spheres, the same bits on the sphere and general
+    // paths): on polyhedra an undamped cube heap stopped ringing with them (test_rest), not understood.
+    const bool kink_pushes = law.exact_step && (kLone || k.exact_step);
     const auto on_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
-      // Only where a spring that stuck at n starts to slip (a sliding one has no kink), and on
-      // the sphere path: with it an undamped cube heap stopped ringing (test_rest), not understood.
-      if (!kLone || h.slipping || tangential_damping || cap <= 0.0) return;  // the dashpot's share of the last cap is not kept
+      // Only where a spring that stuck at n starts to slip (a sliding one has no kink).
+      if (!kink_pushes || h.slipping || tangential_damping || cap <= 0.0) return;  // the dashpot's share of the last cap is not kept
       const double c0 = law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h);  // N, the cap at n
       if (old2 >= c0 * c0) return;  // over the cap at n by this estimate: no kink inside the step
       push_t = (slip_start_push(std::sqrt(old2), trial, c0, cap) / trial) * trial_spring;
@@ -321,7 +323,7 @@ template <class Parts, bool kLone = false>
                                     [&](double cap) { return at_end ? cap : law.mu * fp_at_slip(); }, on_slip);
     out.dissipated += out.sliding + started_spring_work(h.ft, vt, dt - dt_on);
     h.slipping = out.sliding != 0.0;  // capped (a cap of 0 on a spring of 0 slips nothing: it cannot kink)
-    if (kLone && dt_on < dt && !h.slipping) [[unlikely]] {  // started and sticking: the ramp's push
+    if (kink_pushes && dt_on < dt && !h.slipping) [[unlikely]] {  // started and sticking: the ramp's push
       push_t = started_spring_push(vt, kt_w, dt_on, dt);
       pushed = true;
     }
