@@ -21,7 +21,7 @@ namespace polydem {
 struct ContactSlot {
   ContactHistory history;     // N, N m: springs carried while the key lives
 };
-static_assert(sizeof(ContactSlot) == 72, "ContactSlot: the history alone");
+static_assert(sizeof(ContactSlot) == 80, "ContactSlot: the history alone");
 
 // What an active slot's contact was at the last step: contact output and checkpoints read it,
 // and a polyhedron pair hands an ended contact's history to the nearest new one by its point.

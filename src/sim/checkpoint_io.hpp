@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "polydem/error.hpp"
@@ -98,8 +99,11 @@ struct Reader {
 // field: no padding bytes in the file, so equal states give equal files.
 template <class IO, class Key, class Slot, class Record>
 void slot_fields(IO& io, Key& f, Slot& s, Record& r, bool last_step_fields = true) {
-  bool active = true;  // only active slots are stored: a constant byte, kept from format 03
-  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.flag(active);
+  // The byte formats 03-06 kept constant at 1 (only active slots are stored) holds whether the
+  // tangential spring stuck at the last step: files of older builds resume as stuck.
+  bool stuck = !s.history.slipping;
+  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.flag(stuck);
+  if constexpr (!std::is_const_v<Slot>) s.history.slipping = !stuck;
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(r.point); io.pod(r.force); io.pod(r.fn);
   io.pod(s.history.gap);  // the last gap, stored twice: format 03 has it here and not below
   if (!last_step_fields) return;

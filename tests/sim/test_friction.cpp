@@ -91,3 +91,20 @@ TEST_CASE("rolling resistance stops a rolling sphere, without it the sphere roll
     }
   }
 }
+
+TEST_CASE("a sphere launched without spin slides at mu g, then rolls at 5/7 of its speed", "[friction]") {
+  // The sphere path's tangential spring slides for ~19 ms: a slip-start push taken on every
+  // sliding step (the cap at n misread) would cut the friction (a cube block: 16.2 vs 1.61 m/s^2).
+  const double radius = 0.005, mu = 0.3, v0 = 0.2;
+  Scene scene = base_scene(law(1e5, 0.5, mu, 1e5), true, Vec3(0, 0, -kG));
+  Simulation sim(scene, library({sphere_shape(radius)}), {body("sphere", {0, 0, radius}, {v0, 0, 0})});
+  run_for(sim, 0.005);  // the normal contact settles (w0 ~ 8e3 rad/s, en 0.5)
+  const double v1 = sim.bodies.velocity[0].x(), t1 = sim.time();
+  run_for(sim, 0.01);   // still sliding: it rolls from 2 v0/(7 mu g) = 19.4 ms
+  const double a = (sim.bodies.velocity[0].x() - v1) / (sim.time() - t1);
+  CHECK(a == Approx(-mu * kG).epsilon(0.01));
+  run_for(sim, 0.02);
+  // Angular momentum about the contact point: m v0 R = m v R + 2/5 m R^2 (v / R), up to the
+  // undamped stuck spring's ringing, mu g / w_t ~ 2e-4 m/s (w_t = sqrt(7 kt / 2 m) ~ 1.6e4 rad/s).
+  CHECK(sim.bodies.velocity[0].x() == Approx(5.0 / 7.0 * v0).epsilon(3e-3));
+}

@@ -37,6 +37,7 @@ struct ContactHistory {
   double fd = 0.0;         // N, dashpot force (clamped normal force minus spring)
   double gap = kNoGap;     // m (negative: overlap)
   double weight = 1.0;     // -, patch share
+  bool slipping = false;   // the tangential spring was capped (law.hpp: a push only where a stuck one starts to slip)
 };
 
 struct ContactKinematics {
