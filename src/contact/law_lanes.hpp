@@ -90,6 +90,7 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
     h[l]->fd = fd[l];
     h[l]->gap = dn[l];
     h[l]->weight = w[l];
+    h[l]->slipping = false;  // under its cap (steady)
     out[l] = ContactForce{lane(force, l), Vec3::Zero(), fn[l], dissipated_all[l], 0.0, patch[l], 0.0, 0.0};
     torque[l] = lane(moment, l);
   }

@@ -15,7 +15,7 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 bool same_bits(const Vec3& a, const Vec3& b) { return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z()); }
 bool same_bits(const ContactHistory& a, const ContactHistory& b) {
   return same_bits(a.ft, b.ft) && same_bits(a.mr, b.mr) && same_bits(a.fd, b.fd) && same_bits(a.gap, b.gap) &&
-         same_bits(a.weight, b.weight);
+         same_bits(a.weight, b.weight) && a.slipping == b.slipping;
 }
 
 struct Draw {
@@ -40,6 +40,7 @@ ContactHistory random_history(Draw& d, double weight) {
   h.fd = d.uniform(-2.0, 2.0);
   h.gap = d.chance(0.1) ? d.uniform(0.0, 1e-5) : d.uniform(-1e-4, 0.0);
   h.weight = d.chance(0.5) ? weight : d.uniform(0.0, 1.0);
+  h.slipping = d.chance(0.3);  // capped at the last step: a sticking lane clears it
   return h;
 }
 
