@@ -27,3 +27,12 @@ joined() {  # scene, checkpoint: prints the one-file checkpoint of the same stat
   else echo "$2"
   fi
 }
+# The same final state (joined if in pieces) and the same CSV files, byte for byte.
+same_outputs() {  # reference folder, other folder, scene
+  local f
+  local final=$(joined "$3" "$2/$(basename "$(last_checkpoint "$1")")")
+  /usr/bin/python3 "$here/same_state.py" "$(last_checkpoint "$1")" "$final" > /dev/null || fail "$2: final state differs"
+  for f in "$1"/*.csv; do
+    cmp "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs"
+  done
+}

@@ -9,15 +9,6 @@
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
 source "$here/mpi_lib.bash"
-same_outputs() {  # reference folder, other folder, scene: the same final state and CSV files
-  local f
-  local final=$(joined "$3" "$2/$(basename "$(last_checkpoint "$1")")")
-  /usr/bin/python3 "$here/same_state.py" "$(last_checkpoint "$1")" "$final" > /dev/null || fail "$2: final state differs"
-  for f in "$1"/energy.csv "$1"/driver_*.csv; do
-    [ -e "$f" ] || continue
-    cmp "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs"
-  done
-}
 
 for scene in pour drum; do
   "$polydem" run "$here/mpi_$scene.yaml" --out "$tmp/$scene" --threads 1 > /dev/null 2>&1 || fail "plain $scene run"
