@@ -248,10 +248,10 @@ template <class Parts, class Partner>
       law.exact_step &&
       (law.contact_mass ||
        (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
-  // The law of one sub-contact c, as contact_force alone computes it (inlined: the lone contacts' path).
-  const auto one_contact = [&](std::size_t c) __attribute__((always_inline)) {
+  // The law of one sub-contact c at its lever and velocities `motion`, as contact_force alone
+  // computes it (inlined: the lone contacts' path).
+  const auto one_contact = [&](std::size_t c, const SubContactMotion& motion) __attribute__((always_inline)) {
     const ContactPoint& g = scratch.found[c].geometry;
-    const SubContactMotion motion = sub_contact_motion(g.point, xi, v_centre, w_rel, v_centre_end, w_rel_end);
     double m_dashpot = m_eff, nu_dashpot = nu;  // kg, N s/m: the normal dashpot's mass and coefficient
     if (law.contact_mass) {  // damping_mass: contact: a lone contact's point, or its patch's
       m_dashpot = scratch.found.size() == 1
@@ -288,10 +288,11 @@ template <class Parts, class Partner>
   // The same for a contact through contact_force. Without rolling the moment is +0, and adding it
   // changes no sum's bits (a -0 term becomes +0, which the sum, never -0 itself, absorbs alike).
   const auto add_one = [&](std::size_t c) __attribute__((always_inline)) {
-    const ContactForce f = one_contact(c);
-    const Vec3 lever = scratch.found[c].geometry.point - xi;  // m, from i's centre
-    if constexpr (Parts::rolling) add(c, f, lever.cross(f.force) + f.moment);
-    else add(c, f, lever.cross(f.force));
+    const SubContactMotion motion =
+        sub_contact_motion(scratch.found[c].geometry.point, xi, v_centre, w_rel, v_centre_end, w_rel_end);
+    const ContactForce f = one_contact(c, motion);
+    if constexpr (Parts::rolling) add(c, f, motion.lever.cross(f.force) + f.moment);
+    else add(c, f, motion.lever.cross(f.force));
   };
   std::size_t c = 0;
   // Two sub-contacts at a time where the law allows it (law_lanes.hpp), in their order.
