@@ -234,10 +234,10 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   carry_history(old_body, fresh);
   old_body = PairList{};
   size_results(fresh);
+  for (auto* v : {&fresh.force_i, &fresh.torque_i, &fresh.torque_j}) release(*v);  // summed in the loop: DirectSums
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
-  body_index_.build(body_list_.pairs, bodies.size(), true);
-  direct_.sums.assign(bodies.size(), BodySum{});
+  direct_.reset(bodies.size());
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
   for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k) {
@@ -250,7 +250,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   carry_history(old_driver, fresh_d);
   size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
-  driver_index_.build(driver_list_.pairs, bodies.size(), false);
+  driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
   if (spheres_only_)
@@ -356,7 +356,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
   // it) is the one before the sums read either list.
   if (spheres_only_) {
-    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, &direct_);
+    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_);
   } else {
     const BodyPartner partner{posed_.data(),          view.position,         view.velocity,
                               view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,

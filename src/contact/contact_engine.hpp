@@ -12,6 +12,7 @@
 #include "contact/contact_lists.hpp"
 #include "contact/local_bodies.hpp"
 #include "contact/pair_kernel.hpp"
+#include "contact/pair_split.hpp"
 
 namespace polydem {
 
@@ -38,52 +39,27 @@ struct ContactStats {
   EnergyParts energy;                             // J, dissipated this step, by mechanism
 };
 
-// Sums the pairs' forces and torques on a body into its force and torque (N, N m): its body
-// pairs in the fixed order of its pair index, then its driver pairs (the same bits for any
-// thread count). Called per body from the closing kick's pass (Simulation::step), which
-// copies it into each thread's loop: the lists' addresses then stay in registers.
+// Adds the pairs' forces and torques on a body to its force and torque (N, N m): its body
+// pairs' sum made in their loop (pair order, DirectSums), then its driver pairs in list order
+// (the same bits for any thread count). Called per body from the closing
+// kick's pass (Simulation::step), which copies it into each thread's loop: the lists'
+// addresses then stay in registers.
 struct ForceSums {
-  struct Side {  // one list and its body index
-    const std::uint32_t* begin;    // per body, its entries [begin[b], begin[b + 1])
-    const std::uint32_t* entries;  // pair index << 1 | (1 when the body is j)
-    const std::uint16_t* touching;
-    const Vec3 *force_i, *torque_i, *torque_j;
-  };
-  Side body, driver;
-  const BodySum* direct;  // the body pairs' sums made in their loop (DirectSums), or null: through `body`
+  const BodySum* body;                // per body
+  const std::uint32_t* driver_begin;  // per body, its driver pairs [driver_begin[b], driver_begin[b + 1])
+  const std::uint16_t* touching;      // per driver pair
+  const Vec3 *force_i, *torque_i;     // per driver pair
   Vec3* force;
   Vec3* torque;
   [[gnu::always_inline]] void operator()(std::size_t b) const {
-    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-    if (direct) {
-      f = direct[b].force;
-      t = direct[b].torque;
-    } else {
-      sum_body_pairs(b, f, t);
-    }
-    for (std::uint32_t e = driver.begin[b]; e < driver.begin[b + 1]; ++e) {
-      const std::uint32_t k = driver.entries[e] >> 1;
-      if (!driver.touching[k]) continue;
-      f += driver.force_i[k];
-      t += driver.torque_i[k];
+    Vec3 f = body[b].force, t = body[b].torque;
+    for (std::uint32_t k = driver_begin[b]; k < driver_begin[b + 1]; ++k) {
+      if (!touching[k]) continue;
+      f += force_i[k];
+      t += torque_i[k];
     }
     force[b] += f;
     torque[b] += t;
-  }
-  // Without branches on the pair's side or contact, which no predictor guesses (3 mispredictions
-  // a body and step on the sphere bed): each term is weighted by +1 (i), -1 (j) or 0 (not
-  // touching). The same bits: (-1) x + f is f - x, and f (which starts at +0, so is never -0)
-  // plus a +-0 term is f.
-  [[gnu::always_inline]] void sum_body_pairs(std::size_t b, Vec3& f, Vec3& t) const {
-    static constexpr double kSign[2][2] = {{0.0, 0.0}, {1.0, -1.0}};  // [touching][is j]
-    static constexpr double kOn[2] = {0.0, 1.0};                      // [touching]
-    const Vec3* const body_torque[2] = {body.torque_i, body.torque_j};  // [is j]
-    for (std::uint32_t e = body.begin[b]; e < body.begin[b + 1]; ++e) {
-      const std::uint32_t k = body.entries[e] >> 1, is_j = body.entries[e] & 1u;
-      const std::uint32_t on = body.touching[k] != 0;
-      f += kSign[on][is_j] * body.force_i[k];
-      t += kOn[on] * body_torque[is_j][k];
-    }
   }
 };
 
@@ -113,7 +89,7 @@ class ContactEngine {
   // force_sums(bodies)(b) for every owned body (Simulation: in the pass of the closing kick).
   void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, bool sum_bodies = true);
   // sums(b) adds the pairs' forces and torques on owned body b to its force and torque, in the
-  // fixed order of its pair index (the same bits for any thread count); `sums` holds the lists'
+  // fixed order of its pairs (the same bits for any thread count); `sums` holds the lists'
   // addresses, for a loop over the bodies that keeps them in registers (integrate.hpp's kick_after).
   ForceSums force_sums(const LocalBodies& bodies) const;
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
@@ -187,18 +163,14 @@ class ContactEngine {
   };
   std::vector<DriverAtBuild> drivers_at_build_;
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
-  BodyPairIndex body_index_, driver_index_;
-  DirectSums direct_;                      // the body pairs' sums when one thread runs their loop
+  std::vector<std::uint32_t> driver_begin_;  // per body + 1: its driver pairs (pairs_by_body)
+  DirectSums direct_;                      // the body pairs' sums, made by their loop
   ContactStats stats_;
 };
 
 inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) const {
-  return {{body_index_.begin.data(), body_index_.entries.data(), body_list_.touching.data(), body_list_.force_i.data(),
-           body_list_.torque_i.data(), body_list_.torque_j.data()},
-          {driver_index_.begin.data(), driver_index_.entries.data(), driver_list_.touching.data(),
-           driver_list_.force_i.data(), driver_list_.torque_i.data(), driver_list_.torque_j.data()},
-          direct_.on ? direct_.sums.data() : nullptr,
-          bodies.force->data(),
+  return {direct_.sums.data(),          driver_begin_.data(),        driver_list_.touching.data(),
+          driver_list_.force_i.data(), driver_list_.torque_i.data(), bodies.force->data(),
           bodies.torque->data()};
 }
 

@@ -2,20 +2,11 @@
 
 namespace polydem {
 
-void BodyPairIndex::build(const std::vector<BodyPair>& pairs, std::size_t n_bodies,
-                          bool partner_is_body) {
-  begin.assign(n_bodies + 1, 0);
-  for (const BodyPair& p : pairs) {
-    ++begin[p.i + 1];
-    if (partner_is_body) ++begin[p.j + 1];
-  }
+std::vector<std::uint32_t> pairs_by_body(const std::vector<BodyPair>& pairs, std::size_t n_bodies) {
+  std::vector<std::uint32_t> begin(n_bodies + 1, 0);
+  for (const BodyPair& p : pairs) ++begin[p.i + 1];
   for (std::size_t b = 0; b < n_bodies; ++b) begin[b + 1] += begin[b];
-  entries.resize(begin[n_bodies]);
-  std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) {  // increasing k: fixed summation order
-    entries[fill[pairs[k].i]++] = k << 1;
-    if (partner_is_body) entries[fill[pairs[k].j]++] = (k << 1) | 1u;
-  }
+  return begin;
 }
 
 namespace {

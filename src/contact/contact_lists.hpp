@@ -80,25 +80,9 @@ struct PairList {
   }
 };
 
-// Per body, the pairs it belongs to in increasing pair order (CSR), with its side in each:
-// the fixed order of this list makes the force sum independent of the thread count.
-struct BodyPairIndex {
-  std::vector<std::uint32_t> begin;        // size n_bodies + 1
-  std::vector<std::uint32_t> entries;      // pair index << 1 | (1 when the body is j)
-  void build(const std::vector<BodyPair>& pairs, std::size_t n_bodies, bool partner_is_body);
-};
-
-// A body's force (N) and torque (N m) from its body pairs, each added in increasing pair order
-// (BodyPairIndex's), as one thread meets them in the pair loop: the index's sum without the index.
-struct BodySum {
-  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
-};
-// The body pairs' sums made in the pair loop when one thread runs it (`on`, set by the loop
-// each step; else the closing pass sums the pairs' results through the index).
-struct DirectSums {
-  std::vector<BodySum> sums;  // per body of the contact stage
-  bool on = false;
-};
+// Per body b of `n_bodies`, its pairs [begin[b], begin[b + 1]) in `pairs` sorted by body i (a
+// driver list): the fixed order of each body's driver terms, whatever the thread count.
+std::vector<std::uint32_t> pairs_by_body(const std::vector<BodyPair>& pairs, std::size_t n_bodies);
 
 // The pairs of `list` with an active slot, and those slots alone: all carry_history reads of
 // an old list, held instead of it while the new one is built (a rebuild's memory peak).

@@ -7,39 +7,144 @@
 #include <type_traits>
 
 #include "contact/pair_kernel.hpp"
+#include "contact/pair_split.hpp"
 #include "polydem/parallel.hpp"
 
 namespace polydem {
+
+namespace pair_loop_detail {
+
+// A pair's terms in its bodies' sums: the index sum's bits (-x added is x subtracted).
+[[gnu::always_inline]] inline void add_as_i(BodySum& s, const Vec3& force_i, const Vec3& torque_i) {
+  s.force += force_i;
+  s.torque += torque_i;
+}
+[[gnu::always_inline]] inline void add_as_j(BodySum& s, const Vec3& force_i, const Vec3& torque_j) {
+  s.force -= force_i;
+  s.torque += torque_j;
+}
+
+// Chunk t's home bodies' sums started from their pairs in earlier chunks (all foreign, computed).
+inline void start_home_sums(DirectSums& direct, int t) {
+  const PairSplit& split = direct.split;
+  BodySum* const sums = direct.sums.data();
+  if (t == 0) {  // no earlier chunk
+    for (std::uint32_t h = split.home_begin[0]; h < split.home_begin[1]; ++h) sums[split.homes[h]] = BodySum{};
+    return;
+  }
+  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) {
+    BodySum s;
+    for (std::uint32_t e = split.early_begin[h]; e < split.early_begin[h + 1]; ++e) {
+      const ForeignResult& r = direct.foreign[split.early[e] >> 1];
+      if (split.early[e] & 1u)
+        add_as_j(s, r.force_i, r.torque_j);
+      else
+        add_as_i(s, r.force_i, r.torque_i);
+    }
+    sums[split.homes[h]] = s;
+  }
+}
+
+// The foreign pairs, shared by the team in fixed shares (each pair's slot stays in one core's cache
+// from step to step); ends at a barrier (the chunks' walks read them).
+template <class Kernel>
+void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
+  const PairSplit& split = direct.split;
+  const std::size_t n_foreign = split.foreign_side.size();
+  const bool per_pair = list.pair_energy.size() == list.size();
+#pragma omp for schedule(static)
+  for (std::size_t f = 0; f < n_foreign; ++f) {
+    const std::uint32_t k = split.foreign[f];
+    const PairTotals t = kernel(k, scratch);
+    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, t.energy};
+    list.touching[k] = std::uint16_t(t.contacts);
+    if (per_pair) list.pair_energy[k] = t.energy;
+  }
+}
+
+// Chunk t's pairs in order: each internal pair computed and added to both bodies' sums, each
+// foreign pair's result added to the side homed here; the blocks' energies and contacts. The
+// runs of internal pairs between two foreign ones are plain loops (one thread: the whole list).
+template <class Kernel>
+void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t) {
+  const PairSplit& split = direct.split;
+  if (split.cut[t] == split.cut[t + 1]) return;
+  BodySum* const sums = direct.sums.data();
+  const std::size_t n = list.size();
+  const bool per_pair = list.pair_energy.size() == n;
+  std::uint32_t f = split.foreign_begin[t], next = split.foreign[f];  // the last is the list size
+  for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b) {
+    EnergyParts energy;  // J
+    std::uint32_t contacts = 0;
+    const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * kPairBlock));
+    for (std::uint32_t k = std::uint32_t(b * kPairBlock); k < end; ++k) {
+      for (const std::uint32_t stop = std::min(end, next); k < stop; ++k) {
+        const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
+        const BodyPair p = list.pairs[k];
+        add_as_i(sums[p.i], pt.force_i, pt.torque_i);
+        add_as_j(sums[p.j], pt.force_i, pt.torque_j);
+        list.touching[k] = std::uint16_t(pt.contacts);
+        energy += pt.energy;
+        contacts += std::uint32_t(pt.contacts);
+        if (per_pair) list.pair_energy[k] = pt.energy;
+      }
+      if (k == end) break;
+      const BodyPair p = list.pairs[k];  // k == next: a foreign pair
+      const ForeignResult& r = direct.foreign[f];
+      if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], r.force_i, r.torque_i);
+      if (split.foreign_side[f] & 2u) add_as_j(sums[p.j], r.force_i, r.torque_j);
+      energy += r.energy;
+      contacts += list.touching[k];
+      next = split.foreign[++f];
+    }
+    list.block_energy[b] = energy;
+    list.block_contacts[b] = contacts;
+  }
+}
+
+}  // namespace pair_loop_detail
+
+// The body pairs with each body's sum made in the loop (pair_split.hpp), on every thread of the
+// team: the list is cut for the team's size when that changes (or the list did: reset).
+template <bool kNoWait, class Kernel>
+void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
+  const int threads = omp_get_num_threads();
+  if (direct.split.threads != threads) {
+#pragma omp barrier
+#pragma omp single
+    {  // every thread has read the old count (the barrier) before this one changes it
+      split_pairs(list.pairs, direct.sums.size(), threads, direct.split);
+      direct.foreign.resize(direct.split.foreign_side.size());
+    }
+  }
+  if (!direct.foreign.empty()) pair_loop_detail::foreign_pair_forces(list, kernel, direct, scratch);
+  const int t = omp_get_thread_num();
+  pair_loop_detail::start_home_sums(direct, t);
+  pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t);
+  if constexpr (!kNoWait) {
+#pragma omp barrier
+  }
+}
 
 // Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
 // and each block's energy and contact count in list.block_energy and block_contacts (sized by
 // resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
 // loop reads none of this list's results; a later barrier comes before anything that does).
-// With `direct` (body pairs) and a team of one thread, each pair's force and torques are added
-// to its bodies' sums instead (in pair order: the bits of the closing pass's sum, none of its
-// reads of the pairs' results at random); direct->on says which was done.
+// With `direct` (body pairs) each pair's force and torques go into its bodies' sums instead
+// (direct_pair_forces), not into the list.
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
   assert(list.block_energy.size() == blocks && list.block_contacts.size() == blocks);
   const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
-  auto one_block = [&](std::size_t b, PairScratch& scratch, auto to_bodies) {
+  auto one_block = [&](std::size_t b, PairScratch& scratch) {
     EnergyParts energy;  // J
     std::uint32_t contacts = 0;
-    BodySum* const sums = to_bodies ? direct->sums.data() : nullptr;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
       const PairTotals t = kernel(std::uint32_t(k), scratch);
-      if constexpr (decltype(to_bodies)::value) {  // a pair out of reach adds +0: no sum's bits change
-        const BodyPair p = list.pairs[k];
-        sums[p.i].force += t.force_i;
-        sums[p.i].torque += t.torque_i;
-        sums[p.j].force -= t.force_i;
-        sums[p.j].torque += t.torque_j;
-      } else {
-        list.force_i[k] = t.force_i;
-        list.torque_i[k] = t.torque_i;
-        list.torque_j[k] = t.torque_j;
-      }
+      list.force_i[k] = t.force_i;
+      list.torque_i[k] = t.torque_i;
+      list.torque_j[k] = t.torque_j;
       list.touching[k] = std::uint16_t(t.contacts);
       energy += t.energy;
       contacts += std::uint32_t(t.contacts);
@@ -51,22 +156,16 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
   in_team(blocks >= 2, [&] {
     PairScratch scratch;
-    if (direct && omp_get_num_threads() == 1) {  // this thread alone: no other reads or writes `direct`
-      direct->on = true;
-      std::fill(direct->sums.begin(), direct->sums.end(), BodySum{});
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch, std::true_type{});
-      return;
-    }
     if (direct) {
-#pragma omp master
-      direct->on = false;  // read after the barrier that ends the contact stage
+      direct_pair_forces<kNoWait>(list, kernel, *direct, scratch);
+      return;
     }
     if constexpr (kNoWait) {
 #pragma omp for schedule(dynamic, 1) nowait
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch, std::false_type{});
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
     } else {
 #pragma omp for schedule(dynamic, 1)
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch, std::false_type{});
+      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
     }
   });
 }

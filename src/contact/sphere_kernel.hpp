@@ -2,15 +2,16 @@
 // The sphere fast path, chosen once when every body is a sphere: each pair has one
 // vertex-vertex slot, weight 1 and nothing to hand over, so the geometry is a distance.
 #include "contact/pair_kernel.hpp"
+#include "contact/pair_split.hpp"
 
 namespace polydem {
 
-// Runs sphere_pair_forces over every pair of `list` (sphere_loop.cpp), keeping its forces and
-// block energies as the general pair loop does (or each body's sums: `direct`, all_pair_forces).
+// Runs sphere_pair_forces over every pair of `list` (sphere_loop.cpp), summing its forces into
+// each body's (`direct`) and its energies by block, as the general pair loop does.
 // Inside a team the threads leave it without a barrier (all_pair_forces<true>): the caller meets
 // them before reading the results.
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
-                      DirectSums* direct = nullptr);
+                      DirectSums& direct);
 
 // Always inlined into the pair loop: the totals go straight into the list, not through memory.
 template <class Parts>

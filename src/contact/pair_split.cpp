@@ -1,0 +1,105 @@
+#include "contact/pair_split.hpp"
+
+#include <algorithm>
+
+namespace polydem {
+
+namespace {
+
+// A foreign pair's share of its chunk's walk (its result added, not computed), in pairs.
+constexpr double kForeignWeight = 0.25;
+
+// Cuts at block boundaries so that each chunk's blocks weigh about the same.
+void cut_by_weight(const std::vector<double>& block_weight, int threads, std::size_t n, std::vector<std::uint32_t>& cut) {
+  double total = 0.0;
+  for (double w : block_weight) total += w;
+  cut.assign(threads + 1, std::uint32_t(n));
+  cut[0] = 0;
+  double reached = 0.0;
+  std::size_t b = 0;
+  for (int t = 1; t < threads; ++t) {
+    const double target = total * t / threads;
+    while (b < block_weight.size() && reached + 0.5 * block_weight[b] < target) reached += block_weight[b++];
+    cut[t] = std::uint32_t(std::min(n, b * kPairBlock));
+  }
+}
+
+// Per body, the chunk of its last pair (-1: no pair).
+std::vector<int> home_chunks(const std::vector<BodyPair>& pairs, std::size_t n_bodies, const std::vector<std::uint32_t>& cut) {
+  std::vector<int> home(n_bodies, -1);
+  int c = 0;
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+    while (k >= cut[c + 1]) ++c;
+    home[pairs[k].i] = home[pairs[k].j] = c;
+  }
+  return home;
+}
+
+// Per block, the pairs its chunk computes in its walk and the foreign ones it adds, weighed.
+std::vector<double> walk_weights(const std::vector<BodyPair>& pairs, const std::vector<std::uint32_t>& cut,
+                                 const std::vector<int>& home) {
+  std::vector<double> weight((pairs.size() + kPairBlock - 1) / kPairBlock, 0.0);
+  int c = 0;
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+    while (k >= cut[c + 1]) ++c;
+    const bool internal = home[pairs[k].i] == c && home[pairs[k].j] == c;
+    weight[k / kPairBlock] += internal ? 1.0 : kForeignWeight;
+  }
+  return weight;
+}
+
+}  // namespace
+
+void split_pairs(const std::vector<BodyPair>& pairs, std::size_t n_bodies, int threads, PairSplit& split) {
+  const std::size_t n = pairs.size();
+  split.threads = threads;
+  std::vector<double> weight((n + kPairBlock - 1) / kPairBlock, double(kPairBlock));
+  std::vector<int> home;
+  for (int round = 0; round < 3; ++round) {  // the foreign pairs move with the cut: a few rounds settle it
+    cut_by_weight(weight, threads, n, split.cut);
+    home = home_chunks(pairs, n_bodies, split.cut);
+    if (threads == 1) break;
+    weight = walk_weights(pairs, split.cut, home);
+  }
+  // The foreign pairs, with the side (if any) homed in their own chunk.
+  split.foreign.clear();
+  split.foreign_side.clear();
+  split.foreign_begin.assign(threads + 1, 0);
+  int c = 0;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    while (k >= split.cut[c + 1]) ++c;
+    const bool home_i = home[pairs[k].i] == c, home_j = home[pairs[k].j] == c;
+    if (home_i && home_j) continue;
+    split.foreign.push_back(k);
+    split.foreign_side.push_back(std::uint8_t(home_i | home_j << 1));
+    ++split.foreign_begin[c + 1];
+  }
+  for (int t = 0; t < threads; ++t) split.foreign_begin[t + 1] += split.foreign_begin[t];
+  split.foreign.push_back(std::uint32_t(n));
+  // The bodies by home chunk, in id order within one.
+  split.home_begin.assign(threads + 1, 0);
+  for (int h : home)
+    if (h >= 0) ++split.home_begin[h + 1];
+  for (int t = 0; t < threads; ++t) split.home_begin[t + 1] += split.home_begin[t];
+  split.homes.resize(split.home_begin[threads]);
+  std::vector<std::uint32_t> place(n_bodies, 0), fill(split.home_begin.begin(), split.home_begin.end() - 1);
+  for (std::uint32_t b = 0; b < n_bodies; ++b)
+    if (home[b] >= 0) split.homes[place[b] = fill[home[b]]++] = b;
+  // Each body's pairs before its home chunk: all foreign, in increasing order.
+  const std::size_t n_foreign = split.foreign_side.size();
+  auto for_each_early = [&](auto add) {
+    for (std::uint32_t f = 0; f < n_foreign; ++f) {
+      const BodyPair p = pairs[split.foreign[f]];
+      if (!(split.foreign_side[f] & 1u)) add(place[p.i], f << 1);
+      if (!(split.foreign_side[f] & 2u)) add(place[p.j], f << 1 | 1u);
+    }
+  };
+  split.early_begin.assign(split.homes.size() + 1, 0);
+  for_each_early([&](std::uint32_t h, std::uint32_t) { ++split.early_begin[h + 1]; });
+  for (std::size_t h = 0; h < split.homes.size(); ++h) split.early_begin[h + 1] += split.early_begin[h];
+  split.early.resize(split.early_begin.back());
+  fill.assign(split.early_begin.begin(), split.early_begin.end() - 1);
+  for_each_early([&](std::uint32_t h, std::uint32_t entry) { split.early[fill[h]++] = entry; });
+}
+
+}  // namespace polydem

@@ -1,0 +1,53 @@
+#pragma once
+// Each body's contact force summed in the body-pair loop at any thread count, with the bits of
+// one thread's pair-order sum: the list is cut into one contiguous chunk per thread, a body's
+// sum is made by the chunk holding its last pair (its home), and only the pairs whose bodies
+// are not both homed in their own chunk (foreign pairs) go through memory (all_pair_forces).
+#include <cstdint>
+#include <vector>
+
+#include "contact/contact_lists.hpp"
+
+namespace polydem {
+
+// A body's force (N) and torque (N m) from its body pairs, each added in increasing pair order.
+// A cache line each: threads summing neighbouring bodies share no line.
+struct alignas(64) BodySum {
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+};
+
+// A foreign pair's results, computed before the chunks' walks (which read them).
+struct ForeignResult {
+  Vec3 force_i, torque_i, torque_j;  // N on i, N m on i and on j
+  EnergyParts energy;                // J, this step
+};
+
+// The cut of a pair list for a team of `threads`, rebuilt with the list or the team size.
+struct PairSplit {
+  int threads = 0;                           // the team it was cut for; 0: to be cut
+  std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of kPairBlock but the last
+  std::vector<std::uint32_t> foreign;        // foreign pairs, increasing, then the list size (a sentinel)
+  std::vector<std::uint32_t> foreign_begin;  // per chunk + 1: its foreign pairs' ordinals
+  std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j
+  std::vector<std::uint32_t> home_begin;     // per chunk + 1: its bodies in `homes`
+  std::vector<std::uint32_t> homes;          // the bodies with pairs, by home chunk
+  std::vector<std::uint32_t> early_begin;    // per entry of `homes` + 1: its pairs in earlier chunks
+  std::vector<std::uint32_t> early;          // foreign ordinal << 1 | (1 when the body is j), increasing
+};
+
+// Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the pairs
+// each chunk computes in its walk (its internal pairs; the foreign ones are shared out before).
+void split_pairs(const std::vector<BodyPair>& pairs, std::size_t n_bodies, int threads, PairSplit& split);
+
+// The body pairs' sums (per body of the contact stage), made by their loop every step.
+struct DirectSums {
+  std::vector<BodySum> sums;
+  PairSplit split;
+  std::vector<ForeignResult> foreign;  // per foreign pair of `split`
+  void reset(std::size_t n_bodies) {  // at each rebuild: the split is cut again in the loop
+    sums.assign(n_bodies, BodySum{});
+    split.threads = 0;
+  }
+};
+
+}  // namespace polydem

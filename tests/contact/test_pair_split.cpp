@@ -1,0 +1,132 @@
+// The body pairs' loop sums each body's terms in the loop (pair_split.hpp) at any team size:
+// each body's sum must be, bit for bit, the plain sum of its pairs' terms in pair order, and
+// each block's energy and contact count the plain sum of its pairs'.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstring>
+#include <random>
+
+#include "contact/pair_loop.hpp"
+
+using namespace polydem;
+
+namespace {
+
+// Sorted, distinct pairs i < j; `reach` bounds j - i (a small reach: ids that follow space).
+std::vector<BodyPair> random_pairs(std::mt19937_64& rng, std::uint32_t n_bodies, std::size_t n_pairs, std::uint32_t reach) {
+  std::vector<BodyPair> pairs;
+  std::uniform_int_distribution<std::uint32_t> body(0, n_bodies - 2), step(1, reach);
+  for (std::size_t p = 0; p < n_pairs; ++p) {
+    const std::uint32_t i = body(rng), j = std::min(n_bodies - 1, i + step(rng));
+    pairs.push_back({i, j});
+  }
+  std::sort(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+  pairs.erase(std::unique(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i == b.i && a.j == b.j; }),
+              pairs.end());
+  return pairs;
+}
+
+// Terms of mixed magnitudes (N, N m, J): their sums' bits depend on the order of addition.
+std::vector<PairTotals> random_terms(std::mt19937_64& rng, std::size_t n) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-8, 8), contacts(0, 2);
+  auto value = [&] { return std::ldexp(unit(rng), exponent(rng)); };
+  auto vec = [&] { return Vec3(value(), value(), value()); };
+  std::vector<PairTotals> terms(n);
+  for (PairTotals& t : terms) {
+    t.contacts = contacts(rng);
+    if (t.contacts == 0) continue;  // out of reach: +0 totals, as the kernels return
+    t = {vec(), vec(), vec(), EnergyParts{value(), value(), value(), value()}, t.contacts};
+  }
+  return terms;
+}
+
+bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0; }
+bool same_bits(const EnergyParts& a, const EnergyParts& b) { return std::memcmp(&a, &b, sizeof(EnergyParts)) == 0; }
+
+// Runs the direct loop on a team of `threads`; counts each pair's kernel calls.
+void run_loop(PairList& list, const std::vector<PairTotals>& terms, DirectSums& direct, int threads,
+              std::vector<std::atomic<int>>& calls) {
+#pragma omp parallel num_threads(threads)
+  all_pair_forces(list, [&](std::uint32_t k, PairScratch&) {
+    calls[k].fetch_add(1, std::memory_order_relaxed);
+    return terms[k];
+  }, &direct);
+}
+
+void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
+  std::mt19937_64 rng(reach);
+  PairList list;
+  list.pairs = random_pairs(rng, n_bodies, 6 * n_bodies, reach);
+  list.resize_results();
+  const std::vector<PairTotals> terms = random_terms(rng, list.size());
+  std::vector<BodySum> plain(n_bodies);  // one thread's pair-order sum
+  std::vector<EnergyParts> energy(list.block_energy.size());
+  std::vector<std::uint32_t> contacts(list.block_energy.size(), 0);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const BodyPair p = list.pairs[k];
+    plain[p.i].force += terms[k].force_i;
+    plain[p.i].torque += terms[k].torque_i;
+    plain[p.j].force -= terms[k].force_i;
+    plain[p.j].torque += terms[k].torque_j;
+    energy[k / kPairBlock] += terms[k].energy;
+    contacts[k / kPairBlock] += std::uint32_t(terms[k].contacts);
+  }
+  DirectSums direct;
+  direct.reset(n_bodies);
+  for (int threads : {1, 2, 3, 5, 2}) {  // the team size changes between steps: cut again
+    std::vector<std::atomic<int>> calls(list.size());
+    run_loop(list, terms, direct, threads, calls);
+    CAPTURE(threads, reach, list.size(), direct.split.foreign_side.size());
+    int wrong_calls = 0, wrong_sums = 0, wrong_blocks = 0;
+    for (std::size_t k = 0; k < list.size(); ++k) wrong_calls += calls[k] != 1;
+    for (std::uint32_t b = 0; b < n_bodies; ++b)
+      wrong_sums += !same_bits(direct.sums[b].force, plain[b].force) || !same_bits(direct.sums[b].torque, plain[b].torque);
+    for (std::size_t b = 0; b < energy.size(); ++b)
+      wrong_blocks += !same_bits(list.block_energy[b], energy[b]) || list.block_contacts[b] != contacts[b];
+    CHECK(wrong_calls == 0);
+    CHECK(wrong_sums == 0);
+    CHECK(wrong_blocks == 0);
+    CHECK(direct.split.threads == threads);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pair_split]") {
+  check_sums(2000, 1999);  // ids at random in space: many foreign pairs
+  check_sums(2000, 40);    // ids that follow space: few
+  check_sums(40, 39);      // one block: the later chunks empty
+}
+
+TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk", "[pair_split]") {
+  std::mt19937_64 rng(7);
+  const std::uint32_t n_bodies = 3000;
+  const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
+  for (int threads : {1, 2, 3, 5}) {
+    PairSplit split;
+    split_pairs(pairs, n_bodies, threads, split);
+    CAPTURE(threads);
+    REQUIRE(split.cut.size() == std::size_t(threads) + 1);
+    CHECK(split.cut.front() == 0);
+    CHECK(split.cut.back() == pairs.size());
+    for (int t = 1; t < threads; ++t) CHECK((split.cut[t] % kPairBlock == 0 || split.cut[t] == pairs.size()));
+    std::vector<int> home(n_bodies, -1);
+    for (int t = 0; t < threads; ++t)
+      for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) {
+        CHECK(home[split.homes[h]] == -1);  // one home a body
+        home[split.homes[h]] = t;
+      }
+    std::vector<int> last(n_bodies, -1);  // the chunk of each body's last pair
+    int c = 0, wrong_home = 0;
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+      while (k >= split.cut[c + 1]) ++c;
+      last[pairs[k].i] = last[pairs[k].j] = c;
+    }
+    for (std::uint32_t b = 0; b < n_bodies; ++b) wrong_home += home[b] != last[b];
+    CHECK(wrong_home == 0);
+    // Ids that follow space: only a boundary layer of pairs is foreign.
+    CHECK(split.foreign_side.size() <= std::size_t(threads - 1) * pairs.size() / 10);
+  }
+}
