@@ -233,7 +233,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   size_slots(fresh);  // once the broad phase's pairs are freed
   carry_history(old_body, fresh);
   old_body = PairList{};
-  size_results(fresh);
+  equal_spheres_ = spheres_only_ && settings_.equal_spheres ? equal_spheres(bodies) : std::nullopt;
+  size_results(fresh, !equal_spheres_);  // equal spheres: one k', c' for all pairs (sphere_pair_loop)
   for (auto* v : {&fresh.force_i, &fresh.torque_i, &fresh.torque_j}) release(*v);  // summed in the loop: DirectSums
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
@@ -265,6 +266,14 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   stats_.body_pairs = body_list_.size();
   stats_.driver_pairs = driver_list_.size();
   stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
+}
+
+std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodies) const {
+  const std::vector<double>& mass = *bodies.mass;
+  if (mass.empty()) return std::nullopt;
+  for (std::size_t b = 1; b < mass.size(); ++b)
+    if (radius_[b] != radius_[0] || mass[b] != mass[0]) return std::nullopt;
+  return EqualSpheres{radius_[0], mass[0]};
 }
 
 // Body-driver pairs within reach of owned bodies, in (body, driver) order; each body is tested in parallel.
@@ -356,7 +365,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
   // it) is the one before the sums read either list.
   if (spheres_only_) {
-    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_);
+    sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_,
+                     equal_spheres_ ? &*equal_spheres_ : nullptr);
   } else {
     const BodyPartner partner{posed_.data(),          view.position,         view.velocity,
                               view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,

@@ -25,6 +25,7 @@ struct ContactSettings {
   // kept (PairList::pair_energy) to be summed in the one-process order across ranks.
   int spheres_only = -1;
   bool pair_energies = false;
+  bool equal_spheres = true;  // false: each sphere's radius and mass read even when all are alike (tests)
 };
 
 // Over this process's lists: a pair across a cut between processes is listed by both.
@@ -122,6 +123,8 @@ class ContactEngine {
     const Vec3& x = (*bodies.position)[b];
     return {&shapes_[(*bodies.shape)[b]], &x, Mat3::Identity(), x, radius_[b], (*bodies.scale)[b]};
   }
+  // Every body the same radius and mass (spheres: the kernel then reads neither per pair), or none.
+  std::optional<EqualSpheres> equal_spheres(const LocalBodies& bodies) const;
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void reduce_bodies(const LocalBodies& bodies) const;
   void reduce_drivers(Drivers& drivers) const;
@@ -149,6 +152,7 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
+  std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
   // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
   // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves;

@@ -68,12 +68,13 @@ struct PairList {
     if (on) records.resize(slots.size());
     else release(records);  // freed: a sphere's 56 bytes a slot between output steps
   }
-  void resize_results() {
+  // pair_steps false: no linear_steps (a kernel that keeps one k', c' for all pairs).
+  void resize_results(bool pair_steps = true) {
     force_i.assign(pairs.size(), Vec3::Zero());
     torque_i.assign(pairs.size(), Vec3::Zero());
     torque_j.assign(pairs.size(), Vec3::Zero());
     touching.assign(pairs.size(), 0);
-    linear_steps.assign(pairs.size(), LinearStep{});
+    linear_steps.assign(pair_steps ? pairs.size() : 0, LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
     block_energy.assign((pairs.size() + kPairBlock - 1) / kPairBlock, EnergyParts{});
     block_contacts.assign(block_energy.size(), 0);

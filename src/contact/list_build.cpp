@@ -86,9 +86,9 @@ void size_slots(PairList& list) {
   list.touching.assign(list.size(), 0);
 }
 
-void size_results(PairList& list) {
+void size_results(PairList& list, bool pair_steps) {
   std::vector<std::uint16_t> touching = std::move(list.touching);
-  list.resize_results();  // zeroes `touching` too
+  list.resize_results(pair_steps);  // zeroes `touching` too
   list.touching = std::move(touching);
 }
 

@@ -67,8 +67,8 @@ void free_results(PairList& list);
 // list whose pairs, runs and keys are laid out: what carry_history fills.
 void size_slots(PairList& list);
 // Then the per-pair results, keeping the counts: sized once the old list is freed (a
-// rebuild's peak held both, 98 bytes a pair).
-void size_results(PairList& list);
+// rebuild's peak held both, 98 bytes a pair). pair_steps: PairList::resize_results'.
+void size_results(PairList& list, bool pair_steps = true);
 
 // Lays out per-pair candidate lists as the slots of a driver list, each run sorted by key,
 // gaps -inf (never skipped: drivers move).

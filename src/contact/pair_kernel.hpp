@@ -25,6 +25,10 @@ struct BodyView {
   const double* mass;       // kg
   bool any_sphere = true;   // some body is a sphere: else no body pair takes the exact step (no shape read per pair)
 };
+// Every body of the contact stage the same sphere: one radius (m) and mass (kg) for all.
+struct EqualSpheres {
+  double radius, mass;
+};
 
 // True when the two bodies are farther apart than `band` along the line of their centres:
 // the gap between their support planes normal to it bounds their distance from below.

@@ -9,20 +9,44 @@ namespace polydem {
 // Runs sphere_pair_forces over every pair of `list` (sphere_loop.cpp), summing its forces into
 // each body's (`direct`) and its energies by block, as the general pair loop does.
 // Inside a team the threads leave it without a barrier (all_pair_forces<true>): the caller meets
-// them before reading the results.
+// them before reading the results. `equal`: every sphere alike, so no radius or mass is read per
+// body and the list keeps no k', c' per pair (its linear_steps may be empty).
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
-                      DirectSums& direct);
+                      DirectSums& direct, const EqualSpheres* equal = nullptr);
+
+// The radii and pair masses the sphere kernel reads: each body's, and k', c' cached per pair.
+struct EachSphere {
+  const BodyView& bodies;
+  PairList& list;
+  double radius(std::uint32_t b) const { return bodies.radius[b]; }  // m
+  double pair_mass(BodyPair p) const {  // kg
+    const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
+    return mi * mj / (mi + mj);
+  }
+  double r_star(double ri, double rj) const { return ri * rj / (ri + rj); }  // m
+  LinearStep* linear_step(std::uint32_t k) const { return &list.linear_steps[k]; }
+};
+// Every sphere alike: the same values (the same bits) made once a step, not read at j per pair.
+struct SameSpheres {
+  double r, m, r_pair;  // m, kg (the pair mass), m (R*)
+  LinearStep* step;     // k', c' of every pair, set before the loop (written by no thread in it)
+  double radius(std::uint32_t) const { return r; }
+  double pair_mass(BodyPair) const { return m; }
+  double r_star(double, double) const { return r_pair; }
+  LinearStep* linear_step(std::uint32_t) const { return step; }
+};
 
 // Always inlined into the pair loop: the totals go straight into the list, not through memory.
-template <class Parts>
+template <class Parts, class Sizes>
 [[gnu::always_inline]] inline PairTotals sphere_pair_forces(const LawParams& law, double band, double dt,
-                                                            const BodyView& bodies, PairList& list, std::uint32_t k) {
+                                                            const BodyView& bodies, PairList& list, std::uint32_t k,
+                                                            const Sizes& sizes) {
   PairTotals totals;
   if (list.slot_begin[k] == list.slot_begin[k + 1]) return totals;  // out of reach at the rebuild
   const BodyPair p = list.pairs[k];
   const Vec3& xi = bodies.position[p.i];
   const Vec3& xj = bodies.position[p.j];
-  const double ri = bodies.radius[p.i], rj = bodies.radius[p.j];  // m
+  const double ri = sizes.radius(p.i), rj = sizes.radius(p.j);  // m
   const Vec3 d = xi - xj;  // m, from j to i
   const double reach = ri + rj + band;
   const double dist2 = d.squaredNorm();
@@ -30,7 +54,7 @@ template <class Parts>
   ContactSlot& slot = list.slots[s];
   if (dist2 >= reach * reach || dist2 == 0.0) {
     if (list.active[s]) {  // the contact ends: its springs let go
-      totals.energy = released_energy<Parts>(law, slot.history, Parts::Normal::kCurved ? ri * rj / (ri + rj) : 0.0);
+      totals.energy = released_energy<Parts>(law, slot.history, Parts::Normal::kCurved ? sizes.r_star(ri, rj) : 0.0);
       list.active[s] = 0;
       slot.history = ContactHistory{};
     }
@@ -52,11 +76,10 @@ template <class Parts>
                                 (lever_i * bodies.angular_velocity_end[p.i] +
                                  lever_j * bodies.angular_velocity_end[p.j]).cross(n))
                          : Vec3(bodies.velocity_end[p.i] - bodies.velocity_end[p.j]);
-  const double mi = bodies.mass[p.i], mj = bodies.mass[p.j];
   ContactKinematics kin{n, gap, v_rel, v_end, bodies.angular_velocity[p.i] - bodies.angular_velocity[p.j],
-                        mi * mj / (mi + mj), lever_i, 1.0};
-  if constexpr (Parts::Normal::kCurved) kin.r_star = ri * rj / (ri + rj);
-  kin.linear_step = &list.linear_steps[k];  // the pair's mass is fixed: k', c' once per list
+                        sizes.pair_mass(p), lever_i, 1.0};
+  if constexpr (Parts::Normal::kCurved) kin.r_star = sizes.r_star(ri, rj);
+  kin.linear_step = sizes.linear_step(k);  // the pair's mass is fixed: k', c' once per list
   if (!list.active[s]) slot.history = ContactHistory{};
   const ContactForce f = contact_force<Parts, true>(law, kin, slot.history, dt);
   list.active[s] = 1;

@@ -4,11 +4,21 @@
 namespace polydem {
 
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
-                      DirectSums& direct) {
+                      DirectSums& direct, const EqualSpheres* equal) {
   with_law(law, [&](auto parts) {
-    all_pair_forces<true>(list, [&](std::uint32_t k, PairScratch&) __attribute__((always_inline)) {
-      return sphere_pair_forces<decltype(parts)>(law, band, dt, bodies, list, k);
-    }, &direct);
+    using Parts = decltype(parts);
+    const auto run = [&](const auto& sizes) {
+      all_pair_forces<true>(list, [&](std::uint32_t k, PairScratch&) __attribute__((always_inline)) {
+        return sphere_pair_forces<Parts>(law, band, dt, bodies, list, k, sizes);
+      }, &direct);
+    };
+    if (!equal) return run(EachSphere{bodies, list});
+    const double r = equal->radius, m = equal->mass;  // m, kg
+    const double pair_mass = m * m / (m + m);         // kg, as EachSphere's: the same bits
+    // Made here, not at first use: the loop's threads would share the cache.
+    LinearStep step;
+    if (!Parts::Normal::kCurved && law.exact_step && law.alpha_n > 0.0) step = linear_step(law.kn, law.alpha_n, pair_mass, dt);
+    run(SameSpheres{r, pair_mass, r * r / (r + r), &step});
   });
 }
 
