@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
@@ -198,6 +199,7 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
 }
 
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
+  flush_energy(bodies.ghost);  // the pairs' places change: their pending energies first
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   free_results(body_list_);  // read by nothing from here: the new lists' results replace them
@@ -346,13 +348,6 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data(), any_sphere_};
-  if (settings_.pair_energies) {  // a rank's share: its pairs' energies, summed again across ranks
-#pragma omp single
-    {
-      body_list_.pair_energy.resize(body_list_.size());
-      driver_list_.pair_energy.resize(driver_list_.size());
-    }
-  }
   // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
   // it) is the one before the sums read either list.
   if (spheres_only_) {
@@ -390,14 +385,35 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   }
 }
 
-// Energies are summed block by block in order: repeatable whatever the thread count.
 void ContactEngine::add_totals() {
-  stats_.energy = EnergyParts{};
   stats_.contacts = 0;
-  for (const PairList* list : {&body_list_, &driver_list_}) {
-    for (const EnergyParts& e : list->block_energy) stats_.energy += e;
+  for (const PairList* list : {&body_list_, &driver_list_})
     for (std::uint32_t c : list->block_contacts) stats_.contacts += c;  // counted by the blocks: one thread sums few
+}
+
+// Each pair's pending energy enters the exact sum whole (in no set order: the sum is exact), so
+// a flush splits no pair's step-ordered sum but where every run splits it.
+static void add_pending(const PairList& list, const std::vector<std::uint8_t>* ghost, ExactEnergy& sum) {
+  for (std::size_t k = 0; k < list.pending.size(); ++k)
+    if (!ghost || !(*ghost)[list.pairs[k].i]) sum.add(list.pending[k]);
+}
+
+void ContactEngine::flush_energy(const std::vector<std::uint8_t>* ghost) {
+  for (PairList* list : {&body_list_, &driver_list_}) {
+    add_pending(*list, ghost, flushed_);
+    std::fill(list->pending.begin(), list->pending.end(), EnergyParts{});
   }
+}
+
+ExactEnergy ContactEngine::take_energy(const std::vector<std::uint8_t>* ghost) {
+  flush_energy(ghost);
+  return std::exchange(flushed_, ExactEnergy{});
+}
+
+ExactEnergy ContactEngine::open_energy(const std::vector<std::uint8_t>* ghost) const {
+  ExactEnergy sum = flushed_;
+  for (const PairList* list : {&body_list_, &driver_list_}) add_pending(*list, ghost, sum);
+  return sum;
 }
 
 // Sums the active slots in order: the same bits for any thread count.

@@ -10,6 +10,7 @@
 #include "polydem/shape.hpp"
 #include "contact/candidate_memory.hpp"
 #include "contact/contact_lists.hpp"
+#include "contact/exact_sum.hpp"
 #include "contact/local_bodies.hpp"
 #include "contact/pair_kernel.hpp"
 
@@ -20,10 +21,8 @@ struct ContactSettings {
   LawParams driver;         // `config_driver`
   double skin = 0.0;        // m, Verlet skin
   // A rank's share of a distributed run (sim/rank_contacts.hpp): the sphere fast path as
-  // chosen for the whole scene (1 or 0; -1: for the bodies given), and each pair's energy
-  // kept (PairList::pair_energy) to be summed in the one-process order across ranks.
+  // chosen for the whole scene (1 or 0; -1: for the bodies given).
   int spheres_only = -1;
-  bool pair_energies = false;
 };
 
 // Over this process's lists: a pair across a cut between processes is listed by both.
@@ -35,7 +34,6 @@ struct ContactStats {
   std::size_t broad_tests = 0;    // bounding-sphere tests of the broad phase, all rebuilds
   std::size_t broad_levels = 0;   // size classes (cell grids) of the last rebuild
   std::size_t broad_bytes = 0;    // held by the broad phase's cells, largest seen
-  EnergyParts energy;                             // J, dissipated this step, by mechanism
 };
 
 // Sums the pairs' forces and torques on a body into its force and torque (N, N m): its body
@@ -130,6 +128,15 @@ class ContactEngine {
   bool records_contacts() const { return record_contacts_; }
 
   const ContactStats& stats() const { return stats_; }
+  // The energy ledger's share of the contacts (J, by mechanism): each pair sums its own in
+  // PairList::pending, in step order; flush_energy (at every rebuild, before the pairs move)
+  // adds them to an exact sum (contact/exact_sum.hpp) and zeroes them, take_energy flushes and
+  // hands the sum over (Simulation's ledger, every kLedgerSteps steps and at checkpoints),
+  // open_energy reads what take_energy would hand over, changing nothing. `ghost` (per local
+  // body; null: none): the pairs whose lower body is a ghost, another rank's to count, left out.
+  void flush_energy(const std::vector<std::uint8_t>* ghost);
+  ExactEnergy take_energy(const std::vector<std::uint8_t>* ghost);
+  ExactEnergy open_energy(const std::vector<std::uint8_t>* ghost) const;
   // J, stored in the springs of the active contacts now (from their histories: output steps
   // only), over this process's lists.
   StoredParts elastic(const Drivers& drivers) const;
@@ -190,6 +197,7 @@ class ContactEngine {
   BodyPairIndex body_index_, driver_index_;
   DirectSums direct_;                      // the body pairs' sums when one thread runs their loop
   ContactStats stats_;
+  ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy
 };
 
 inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) const {

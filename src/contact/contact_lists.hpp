@@ -37,8 +37,7 @@ inline std::uint64_t feature_key(FeaturePair f) {
   return (std::uint64_t(f.type) << 48) | (std::uint64_t(f.a) << 32) | std::uint64_t(f.b);
 }
 
-// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
-// the blocks in order after, so the sums are the same bits for any thread count.
+// Pairs per block of the pair loop (a thread takes a block at a time; its contacts are counted together).
 constexpr std::size_t kPairBlock = 256;
 
 struct PairList {
@@ -57,9 +56,10 @@ struct PairList {
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
-  std::vector<EnergyParts> block_energy;   // J, per block of kPairBlock pairs, this step (energy ledger)
   std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
-  std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
+  // J, per pair: its energies summed in step order since the ledger last took them
+  // (ContactEngine::flush_energy): the same bits whatever thread or rank steps the pair.
+  std::vector<EnergyParts> pending;
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
@@ -75,8 +75,8 @@ struct PairList {
     touching.assign(pairs.size(), 0);
     linear_steps.assign(pairs.size(), LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
-    block_energy.assign((pairs.size() + kPairBlock - 1) / kPairBlock, EnergyParts{});
-    block_contacts.assign(block_energy.size(), 0);
+    pending.assign(pairs.size(), EnergyParts{});
+    block_contacts.assign((pairs.size() + kPairBlock - 1) / kPairBlock, 0);
   }
 };
 

@@ -71,9 +71,8 @@ void free_results(PairList& list) {
   for (auto* v : {&list.force_i, &list.torque_i, &list.torque_j}) release(*v);
   release(list.touching);
   release(list.linear_steps);
-  release(list.block_energy);
+  release(list.pending);
   release(list.block_contacts);
-  release(list.pair_energy);
   release(list.gap_at_build);
   release(list.slot_gap);
 }

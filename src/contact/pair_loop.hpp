@@ -11,8 +11,9 @@
 
 namespace polydem {
 
-// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
-// and each block's energy and contact count in list.block_energy and block_contacts (sized by
+// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list,
+// adds each pair's energy to its own list.pending[k] (in step order: the same bits whatever
+// thread runs it) and keeps each block's contact count in list.block_contacts (sized by
 // resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
 // loop reads none of this list's results; a later barrier comes before anything that does).
 // With `direct` (body pairs) and a team of one thread, each pair's force and torques are added
@@ -21,10 +22,8 @@ namespace polydem {
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
-  assert(list.block_energy.size() == blocks && list.block_contacts.size() == blocks);
-  const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
+  assert(list.block_contacts.size() == blocks && list.pending.size() == n);
   auto one_block = [&](std::size_t b, PairScratch& scratch, auto to_bodies) {
-    EnergyParts energy;  // J
     std::uint32_t contacts = 0;
     BodySum* const sums = to_bodies ? direct->sums.data() : nullptr;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
@@ -41,11 +40,9 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
         list.torque_j[k] = t.torque_j;
       }
       list.touching[k] = std::uint16_t(t.contacts);
-      energy += t.energy;
+      list.pending[k] += t.energy;
       contacts += std::uint32_t(t.contacts);
-      if (per_pair) list.pair_energy[k] = t.energy;
     }
-    list.block_energy[b] = energy;
     list.block_contacts[b] = contacts;
   };
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).

@@ -48,6 +48,14 @@ class Simulation {
 
   void step();  // one velocity-Verlet step of dt
 
+  // The contacts' energies enter `ledger` when it closes: at the end of every kLedgerSteps-th
+  // step and before a checkpoint is written (close_ledger; a collective); between, each pair
+  // sums its own (ContactEngine::take_energy), and energy() adds what is still open. A run
+  // interrupted stops at a step that closes, so its checkpoint is the uninterrupted run's state.
+  static constexpr std::int64_t kLedgerSteps = 100;
+  static bool ledger_closes(std::int64_t step) { return step % kLedgerSteps == 0; }
+  void close_ledger();
+
   EnergyRow energy() const;
   const TimeStepEstimate& time_step() const { return dt_estimate_; }
   double dt() const { return dt_; }
