@@ -199,12 +199,15 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
 }
 
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
-  flush_energy(bodies.ghost);  // the pairs' places change: their pending energies first
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   free_results(body_list_);  // read by nothing from here: the new lists' results replace them
   if (spheres_only_) body_list_.set_recording(false);  // a sphere list's records are not carried: freed
   free_results(driver_list_);
+  // active_part keeps the pairs with an active slot: any other's energy is counted now (none
+  // after a step here: flush_ended took them).
+  flush_idle(body_list_, bodies.ghost);
+  flush_idle(driver_list_, bodies.ghost);
   PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
   body_list_ = PairList{};  // freed before the new lists are built
   driver_list_ = PairList{};
@@ -233,7 +236,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     }
   }
   size_slots(fresh);  // once the broad phase's pairs are freed
-  carry_history(old_body, fresh);
+  flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
   old_body = PairList{};
   size_results(fresh);
   body_list_ = std::move(fresh);
@@ -249,7 +252,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_driver_slots(per_pair, fresh_d);
   size_slots(fresh_d);
-  carry_history(old_driver, fresh_d);
+  flush_pairs(old_driver, carry_history(old_driver, fresh_d), bodies.ghost);
   size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_index_.build(driver_list_.pairs, bodies.size(), false);
@@ -381,6 +384,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
 #pragma omp single nowait
   {
     add_totals();
+    flush_ended(bodies.ghost);
     reduce_drivers(drivers);
   }
 }
@@ -392,10 +396,39 @@ void ContactEngine::add_totals() {
 }
 
 // Each pair's pending energy enters the exact sum whole (in no set order: the sum is exact), so
-// a flush splits no pair's step-ordered sum but where every run splits it.
+// a flush splits no pair's step-ordered sum but where every run splits it (at its contact's
+// end, at the ledger's closes).
 static void add_pending(const PairList& list, const std::vector<std::uint8_t>* ghost, ExactEnergy& sum) {
   for (std::size_t k = 0; k < list.pending.size(); ++k)
     if (!ghost || !(*ghost)[list.pairs[k].i]) sum.add(list.pending[k]);
+}
+
+void ContactEngine::flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost) {
+  if (!ghost || !(*ghost)[list.pairs[k].i]) flushed_.add(list.pending[k]);
+  list.pending[k] = EnergyParts{};
+}
+
+void ContactEngine::flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs,
+                                const std::vector<std::uint8_t>* ghost) {
+  for (std::uint32_t k : pairs) flush_pair(list, k, ghost);
+}
+
+// Serial, after the pair loops: only the blocks the loop flagged are scanned (a few a step).
+void ContactEngine::flush_ended(const std::vector<std::uint8_t>* ghost) {
+  for (PairList* list : {&body_list_, &driver_list_})
+    for (std::size_t b = 0; b < list->block_ended.size(); ++b) {
+      if (!list->block_ended[b]) continue;
+      for (std::size_t k = b * kPairBlock; k < std::min(list->size(), (b + 1) * kPairBlock); ++k)
+        if (!list->touching[k]) flush_pair(*list, k, ghost);
+    }
+}
+
+void ContactEngine::flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost) {
+  for (std::size_t k = 0; k < list.pending.size(); ++k) {
+    bool active = false;
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) active |= list.active[s] != 0;
+    if (!active) flush_pair(list, k, ghost);
+  }
 }
 
 void ContactEngine::flush_energy(const std::vector<std::uint8_t>* ghost) {

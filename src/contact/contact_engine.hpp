@@ -129,14 +129,18 @@ class ContactEngine {
 
   const ContactStats& stats() const { return stats_; }
   // The energy ledger's share of the contacts (J, by mechanism): each pair sums its own in
-  // PairList::pending, in step order; flush_energy (at every rebuild, before the pairs move)
-  // adds them to an exact sum (contact/exact_sum.hpp) and zeroes them, take_energy flushes and
-  // hands the sum over (Simulation's ledger, every kLedgerSteps steps and at checkpoints),
-  // open_energy reads what take_energy would hand over, changing nothing. `ghost` (per local
-  // body; null: none): the pairs whose lower body is a ghost, another rank's to count, left out.
+  // PairList::pending, in step order, carried through rebuilds with its history; when its
+  // contact ends (the step's flagged blocks) it enters an exact sum (contact/exact_sum.hpp),
+  // `flushed`, and is zeroed. flush_energy adds every pair's to it, take_energy flushes and
+  // hands the sum over (Simulation's ledger, every kLedgerSteps steps), open_energy reads what
+  // take_energy would hand over, changing nothing. `ghost` (per local body; null: none): the
+  // pairs whose lower body is a ghost, another rank's to count, left out.
   void flush_energy(const std::vector<std::uint8_t>* ghost);
   ExactEnergy take_energy(const std::vector<std::uint8_t>* ghost);
   ExactEnergy open_energy(const std::vector<std::uint8_t>* ghost) const;
+  // The ended contacts' sum alone (the pairs keep theirs: a rank's rebuild, a checkpoint).
+  ExactEnergy& flushed() { return flushed_; }
+  const ExactEnergy& flushed() const { return flushed_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps
   // only), over this process's lists.
   StoredParts elastic(const Drivers& drivers) const;
@@ -157,6 +161,10 @@ class ContactEngine {
   void reduce_bodies(const LocalBodies& bodies) const;
   void reduce_drivers(Drivers& drivers) const;
   void add_totals();
+  void flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost);
+  void flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs, const std::vector<std::uint8_t>* ghost);
+  void flush_ended(const std::vector<std::uint8_t>* ghost);
+  void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
   void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
   bool drivers_moved(const Drivers& drivers) const;

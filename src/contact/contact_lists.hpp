@@ -57,9 +57,11 @@ struct PairList {
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
   std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
-  // J, per pair: its energies summed in step order since the ledger last took them
-  // (ContactEngine::flush_energy): the same bits whatever thread or rank steps the pair.
+  // J, per pair: its energies summed in step order since the ledger last closed or its contact
+  // began (ContactEngine::flush_ended): the same bits whatever thread or rank steps the pair
+  // and whenever the lists rebuild (carried with the history; zero while not touching).
   std::vector<EnergyParts> pending;
+  std::vector<std::uint8_t> block_ended;   // per block: a pair's contact ended this step (its pending is due)
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
@@ -77,6 +79,7 @@ struct PairList {
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
     pending.assign(pairs.size(), EnergyParts{});
     block_contacts.assign((pairs.size() + kPairBlock - 1) / kPairBlock, 0);
+    block_ended.assign(block_contacts.size(), 0);
   }
 };
 
@@ -100,13 +103,15 @@ struct DirectSums {
   bool on = false;
 };
 
-// The pairs of `list` with an active slot, and those slots alone: all carry_history reads of
-// an old list, held instead of it while the new one is built (a rebuild's memory peak).
+// The pairs of `list` with an active slot, and those slots alone, with the pairs' pending
+// energies: all carry_history reads of an old list, held instead of it while the new one is
+// built (a rebuild's memory peak).
 PairList active_part(const PairList& list);
 
 // Copies the history of every active slot of `old_list` into the slot with the same pair
-// and key in `fresh` (both sorted) and counts it in the pair's `touching`. Keys absent from `fresh`
-// end their contact.
-void carry_history(const PairList& old_list, PairList& fresh);
+// and key in `fresh` (both sorted) and counts it in the pair's `touching`, and the pair's pending
+// energy with it. Keys absent from `fresh` end their contact. Returns the old pairs whose
+// pending energy found no touching pair in `fresh` (the caller's to count).
+std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fresh);
 
 }  // namespace polydem

@@ -13,18 +13,21 @@ namespace polydem {
 
 // Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list,
 // adds each pair's energy to its own list.pending[k] (in step order: the same bits whatever
-// thread runs it) and keeps each block's contact count in list.block_contacts (sized by
-// resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
-// loop reads none of this list's results; a later barrier comes before anything that does).
+// thread runs it), keeps each block's contact count in list.block_contacts and flags in
+// list.block_ended the blocks where a pair's contact ended (sized by resize_results).
+// kNoWait: the threads go on without meeting at the loop's end (the next loop reads none of
+// this list's results; a later barrier comes before anything that does).
 // With `direct` (body pairs) and a team of one thread, each pair's force and torques are added
 // to its bodies' sums instead (in pair order: the bits of the closing pass's sum, none of its
 // reads of the pairs' results at random); direct->on says which was done.
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
-  assert(list.block_contacts.size() == blocks && list.pending.size() == n);
+  assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
+  assert(list.pending.size() == n);
   auto one_block = [&](std::size_t b, PairScratch& scratch, auto to_bodies) {
     std::uint32_t contacts = 0;
+    bool ended = false;
     BodySum* const sums = to_bodies ? direct->sums.data() : nullptr;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
       const PairTotals t = kernel(std::uint32_t(k), scratch);
@@ -39,11 +42,13 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
         list.torque_i[k] = t.torque_i;
         list.torque_j[k] = t.torque_j;
       }
+      ended |= (list.touching[k] != 0) & (t.contacts == 0);  // touching at the last step, not now
       list.touching[k] = std::uint16_t(t.contacts);
       list.pending[k] += t.energy;
       contacts += std::uint32_t(t.contacts);
     }
     list.block_contacts[b] = contacts;
+    list.block_ended[b] = ended;
   };
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
   in_team(blocks >= 2, [&] {

@@ -122,9 +122,12 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   if (!forced_ && engine_) exchange_ghosts(bodies);
   const bool stale = lists_stale(bodies, drivers);
   if (stale) {
-    if (engine_) taken_.add(engine_->take_energy(&store_.ghost));  // before the pairs move (a new engine)
+    // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
+    if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
     const LinkCounts before = link_.counts();
     if (forced_) {  // the start or a resume: whole's lists hold the table
+      const ExactEnergy resumed = std::exchange(whole.flushed(), ExactEnergy{});  // J, on every rank: rank 0's to count
+      if (link_.rank() == 0) taken_.add(resumed);
       sync_bodies(bodies);  // a resume's first drift moved each rank's bodies of the cut before it
       redistribute(bodies, whole);
     } else {
@@ -174,11 +177,21 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
   std::vector<TableSlot> slots;
   if (link_.rank() != 0) return slots;
   const PairList& list = driver ? whole.driver_pairs() : whole.body_pairs();
-  for (std::size_t k = 0; k < list.size(); ++k)
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::size_t first = slots.size();
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s], list.records.at(s)});
+        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s], list.records.at(s), {}});
+    if (slots.size() > first) slots[first].pending = list.pending[k];
+  }
   return slots;
+}
+
+ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
+  if (!engine_) return link_.rank() == 0 ? whole.flushed() : ExactEnergy{};
+  ExactEnergy mine = taken_;  // J
+  mine.add(engine_->flushed());
+  return mine;
 }
 
 long RankContacts::first_non_finite(const Bodies& bodies) const {

@@ -60,6 +60,9 @@ class RankContacts {
   // lists (read from a checkpoint, or none), the other ranks nothing.
   std::vector<std::uint32_t> output_bodies() const;
   std::vector<TableSlot> output_slots(const ContactEngine& whole, bool driver) const;
+  // The ended contacts' energies this rank holds since the ledger last closed (J; rank 0 alone
+  // before its first step: `whole`'s), the rest of its share being its slots' pending energies.
+  ExactEnergy output_flushed(const ContactEngine& whole) const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
   long first_non_finite(const Bodies& bodies) const;
   // The bodies this rank integrates, by rotation path (empty before the first compute).
@@ -125,7 +128,7 @@ class RankContacts {
   bool rebuild_asked_ = false;
   std::size_t rebuilds_ = 0;
   LinkCounts rebuild_traffic_;
-  ExactEnergy taken_;        // J, this rank's pairs' energies taken at rebuilds since the last take_energy
+  ExactEnergy taken_;        // J, the ended contacts' energies of earlier engines (rebuilds) since the last take_energy
   EnergyParts open_energy_;  // J, at the last sum_open_energy
   std::size_t contacts_ = 0;
 };

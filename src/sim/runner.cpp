@@ -233,7 +233,6 @@ class OutputWriter {
   }
 
   std::string checkpoint(Simulation& sim) {
-    sim.close_ledger();  // the checkpoint holds the ledger whole (no pair's pending energy)
     const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
     if (sim.distributed()) write_checkpoint_pieces(path, sim, progress_);  // a collective
     else write_checkpoint(path, sim, progress_);
@@ -404,8 +403,6 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   int threads = governor.threads();
   omp_set_num_threads(threads);
   double stepping = 0.0;  // s of wall time inside the steps: what the governor compares, output apart
-  // Steps after which the energy ledger closes in any run of this scene (Simulation::kLedgerSteps, the last's checkpoint).
-  auto closes = [&](std::int64_t step) { return Simulation::ledger_closes(step) || step == last_step; };
   bool stopping = false;  // interrupted after a step that kept no contact records: one more step, then stop
   while (sim.step_index() < last_step) {
     // Contact points and forces are kept only for a step whose state is written after it (the
@@ -413,7 +410,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     const std::int64_t next = sim.step_index() + 1;
     const double t_next = double(next) * dt;  // s, as sim.time() will be
     const bool recorded = (out.contacts && vtk.due_at(t_next, dt)) || ckpt.due_at(t_next, dt) || next == last_step ||
-                          (stopping && closes(next));
+                          stopping;
     sim.engine().record_contacts(recorded);
     try {
       const auto step_start = Clock::now();
@@ -444,9 +441,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     }
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
     const bool interrupted = sim.any_rank(g_interrupted);  // a collective: every rank stops at the same step
-    // The checkpoint needs the contacts' records and a step where the uninterrupted run closes
-    // the energy ledger too: on to such a step.
-    if (interrupted && !(recorded && closes(s))) {
+    if (interrupted && !recorded) {  // the checkpoint needs the contacts' records: one more step
       g_interrupted = stopping = true;
       continue;
     }

@@ -48,10 +48,10 @@ class Simulation {
 
   void step();  // one velocity-Verlet step of dt
 
-  // The contacts' energies enter `ledger` when it closes: at the end of every kLedgerSteps-th
-  // step and before a checkpoint is written (close_ledger; a collective); between, each pair
-  // sums its own (ContactEngine::take_energy), and energy() adds what is still open. A run
-  // interrupted stops at a step that closes, so its checkpoint is the uninterrupted run's state.
+  // The contacts' energies enter `ledger` when it closes, at the end of every kLedgerSteps-th
+  // step (close_ledger; a collective); between, each pair sums its own, flushed exactly when its
+  // contact ends (ContactEngine::take_energy), and energy() adds what is still open. A
+  // checkpoint holds the open sums (format 07), so a run may stop and resume at any step.
   static constexpr std::int64_t kLedgerSteps = 100;
   static bool ledger_closes(std::int64_t step) { return step % kLedgerSteps == 0; }
   void close_ledger();

@@ -192,8 +192,9 @@ TEST_CASE("a list's results, gaps and records are freed, not only emptied, befor
   list.set_recording(false);
   for (std::size_t c : {list.force_i.capacity(), list.torque_i.capacity(), list.torque_j.capacity(),
                         list.touching.capacity(), list.linear_steps.capacity(),
-                        list.block_contacts.capacity(), list.pending.capacity(), list.gap_at_build.capacity(),
+                        list.block_contacts.capacity(), list.block_ended.capacity(), list.gap_at_build.capacity(),
                         list.slot_gap.capacity(), list.records.capacity()})
     CHECK(c == 0);
   CHECK(list.slots.size() == 3);  // the histories stay: active_part reads them
+  CHECK(list.pending.size() == 3);  // and the pairs' open energies, carried with them
 }
