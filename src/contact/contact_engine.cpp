@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
@@ -203,6 +204,10 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   free_results(body_list_);  // read by nothing from here: the new lists' results replace them
   if (spheres_only_) body_list_.set_recording(false);  // a sphere list's records are not carried: freed
   free_results(driver_list_);
+  // active_part keeps the pairs with an active slot: any other's energy is counted now (none
+  // after a step here: flush_ended took them).
+  flush_idle(body_list_, bodies.ghost);
+  flush_idle(driver_list_, bodies.ghost);
   PairList old_body = active_part(body_list_), old_driver = active_part(driver_list_);
   body_list_ = PairList{};  // freed before the new lists are built
   driver_list_ = PairList{};
@@ -231,7 +236,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     }
   }
   size_slots(fresh);  // once the broad phase's pairs are freed
-  carry_history(old_body, fresh);
+  flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
   old_body = PairList{};
   equal_spheres_ = spheres_only_ && settings_.equal_spheres ? equal_spheres(bodies) : std::nullopt;
   size_results(fresh, !equal_spheres_);  // equal spheres: one k', c' for all pairs (sphere_pair_loop)
@@ -248,7 +253,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_driver_slots(per_pair, fresh_d);
   size_slots(fresh_d);
-  carry_history(old_driver, fresh_d);
+  flush_pairs(old_driver, carry_history(old_driver, fresh_d), bodies.ghost);
   size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
@@ -355,13 +360,6 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data(), any_sphere_};
-  if (settings_.pair_energies) {  // a rank's share: its pairs' energies, summed again across ranks
-#pragma omp single
-    {
-      body_list_.pair_energy.resize(body_list_.size());
-      driver_list_.pair_energy.resize(driver_list_.size());
-    }
-  }
   // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
   // it) is the one before the sums read either list.
   if (spheres_only_) {
@@ -396,18 +394,69 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
 #pragma omp single nowait
   {
     add_totals();
+    flush_ended(bodies.ghost);
     reduce_drivers(drivers);
   }
 }
 
-// Energies are summed block by block in order: repeatable whatever the thread count.
 void ContactEngine::add_totals() {
-  stats_.energy = EnergyParts{};
   stats_.contacts = 0;
-  for (const PairList* list : {&body_list_, &driver_list_}) {
-    for (const EnergyParts& e : list->block_energy) stats_.energy += e;
+  for (const PairList* list : {&body_list_, &driver_list_})
     for (std::uint32_t c : list->block_contacts) stats_.contacts += c;  // counted by the blocks: one thread sums few
+}
+
+// Each pair's pending energy enters the exact sum whole (in no set order: the sum is exact), so
+// a flush splits no pair's step-ordered sum but where every run splits it (at its contact's
+// end, at the ledger's closes).
+static void add_pending(const PairList& list, const std::vector<std::uint8_t>* ghost, ExactEnergy& sum) {
+  for (std::size_t k = 0; k < list.pending.size(); ++k)
+    if (!ghost || !(*ghost)[list.pairs[k].i]) sum.add(list.pending[k]);
+}
+
+void ContactEngine::flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost) {
+  if (!ghost || !(*ghost)[list.pairs[k].i]) flushed_.add(list.pending[k]);
+  list.pending[k] = EnergyParts{};
+}
+
+void ContactEngine::flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs,
+                                const std::vector<std::uint8_t>* ghost) {
+  for (std::uint32_t k : pairs) flush_pair(list, k, ghost);
+}
+
+// Serial, after the pair loops: only the blocks the loop flagged are scanned (a few a step).
+void ContactEngine::flush_ended(const std::vector<std::uint8_t>* ghost) {
+  for (PairList* list : {&body_list_, &driver_list_})
+    for (std::size_t b = 0; b < list->block_ended.size(); ++b) {
+      if (!list->block_ended[b]) continue;
+      for (std::size_t k = b * kPairBlock; k < std::min(list->size(), (b + 1) * kPairBlock); ++k)
+        if (!list->touching[k]) flush_pair(*list, k, ghost);
+    }
+}
+
+void ContactEngine::flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost) {
+  for (std::size_t k = 0; k < list.pending.size(); ++k) {
+    bool active = false;
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) active |= list.active[s] != 0;
+    if (!active) flush_pair(list, k, ghost);
   }
+}
+
+void ContactEngine::flush_energy(const std::vector<std::uint8_t>* ghost) {
+  for (PairList* list : {&body_list_, &driver_list_}) {
+    add_pending(*list, ghost, flushed_);
+    std::fill(list->pending.begin(), list->pending.end(), EnergyParts{});
+  }
+}
+
+ExactEnergy ContactEngine::take_energy(const std::vector<std::uint8_t>* ghost) {
+  flush_energy(ghost);
+  return std::exchange(flushed_, ExactEnergy{});
+}
+
+ExactEnergy ContactEngine::open_energy(const std::vector<std::uint8_t>* ghost) const {
+  ExactEnergy sum = flushed_;
+  for (const PairList* list : {&body_list_, &driver_list_}) add_pending(*list, ghost, sum);
+  return sum;
 }
 
 // Sums the active slots in order: the same bits for any thread count.

@@ -10,6 +10,7 @@
 #include "polydem/shape.hpp"
 #include "contact/candidate_memory.hpp"
 #include "contact/contact_lists.hpp"
+#include "contact/exact_sum.hpp"
 #include "contact/local_bodies.hpp"
 #include "contact/pair_kernel.hpp"
 #include "contact/pair_split.hpp"
@@ -21,10 +22,8 @@ struct ContactSettings {
   LawParams driver;         // `config_driver`
   double skin = 0.0;        // m, Verlet skin
   // A rank's share of a distributed run (sim/rank_contacts.hpp): the sphere fast path as
-  // chosen for the whole scene (1 or 0; -1: for the bodies given), and each pair's energy
-  // kept (PairList::pair_energy) to be summed in the one-process order across ranks.
+  // chosen for the whole scene (1 or 0; -1: for the bodies given).
   int spheres_only = -1;
-  bool pair_energies = false;
   bool equal_spheres = true;  // false: each sphere's radius and mass read even when all are alike (tests)
 };
 
@@ -37,7 +36,6 @@ struct ContactStats {
   std::size_t broad_tests = 0;    // bounding-sphere tests of the broad phase, all rebuilds
   std::size_t broad_levels = 0;   // size classes (cell grids) of the last rebuild
   std::size_t broad_bytes = 0;    // held by the broad phase's cells, largest seen
-  EnergyParts energy;                             // J, dissipated this step, by mechanism
 };
 
 // Adds the pairs' forces and torques on a body to its force and torque (N, N m): its body
@@ -107,6 +105,19 @@ class ContactEngine {
   bool records_contacts() const { return record_contacts_; }
 
   const ContactStats& stats() const { return stats_; }
+  // The energy ledger's share of the contacts (J, by mechanism): each pair sums its own in
+  // PairList::pending, in step order, carried through rebuilds with its history; when its
+  // contact ends (the step's flagged blocks) it enters an exact sum (contact/exact_sum.hpp),
+  // `flushed`, and is zeroed. flush_energy adds every pair's to it, take_energy flushes and
+  // hands the sum over (Simulation's ledger, every kLedgerSteps steps), open_energy reads what
+  // take_energy would hand over, changing nothing. `ghost` (per local body; null: none): the
+  // pairs whose lower body is a ghost, another rank's to count, left out.
+  void flush_energy(const std::vector<std::uint8_t>* ghost);
+  ExactEnergy take_energy(const std::vector<std::uint8_t>* ghost);
+  ExactEnergy open_energy(const std::vector<std::uint8_t>* ghost) const;
+  // The ended contacts' sum alone (the pairs keep theirs: a rank's rebuild, a checkpoint).
+  ExactEnergy& flushed() { return flushed_; }
+  const ExactEnergy& flushed() const { return flushed_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps
   // only), over this process's lists.
   StoredParts elastic(const Drivers& drivers) const;
@@ -129,6 +140,10 @@ class ContactEngine {
   void reduce_bodies(const LocalBodies& bodies) const;
   void reduce_drivers(Drivers& drivers) const;
   void add_totals();
+  void flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost);
+  void flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs, const std::vector<std::uint8_t>* ghost);
+  void flush_ended(const std::vector<std::uint8_t>* ghost);
+  void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
   void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
   bool drivers_moved(const Drivers& drivers) const;
@@ -170,6 +185,7 @@ class ContactEngine {
   std::vector<std::uint32_t> driver_begin_;  // per body + 1: its driver pairs (pairs_by_body)
   DirectSums direct_;                      // the body pairs' sums, made by their loop
   ContactStats stats_;
+  ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy
 };
 
 inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) const {

@@ -24,6 +24,7 @@ PairList active_part(const PairList& list) {
     n_pairs += n_slots > before;
   }
   kept.pairs.reserve(n_pairs);
+  kept.pending.reserve(n_pairs);
   kept.slot_begin.reserve(n_pairs + 1);
   kept.features.reserve(n_slots);
   kept.slots.reserve(n_slots);
@@ -39,6 +40,7 @@ PairList active_part(const PairList& list) {
     }
     if (kept.slots.size() == before) continue;
     kept.pairs.push_back(list.pairs[k]);
+    kept.pending.push_back(list.pending.empty() ? EnergyParts{} : list.pending[k]);
     kept.slot_begin.push_back(std::uint32_t(kept.slots.size()));
   }
   kept.active.assign(kept.slots.size(), 1);
@@ -46,13 +48,17 @@ PairList active_part(const PairList& list) {
   return kept;
 }
 
-void carry_history(const PairList& old_list, PairList& fresh) {
+std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fresh) {
+  std::vector<std::uint32_t> uncarried;
+  const bool has_pending = !old_list.pending.empty();
   std::size_t k_new = 0;
   for (std::size_t k_old = 0; k_old < old_list.size(); ++k_old) {
     const BodyPair& p = old_list.pairs[k_old];
     while (k_new < fresh.size() && pair_less(fresh.pairs[k_new], p)) ++k_new;
-    if (k_new == fresh.size()) return;
-    if (pair_less(p, fresh.pairs[k_new])) continue;  // pair dropped out of range
+    if (k_new == fresh.size() || pair_less(p, fresh.pairs[k_new])) {  // pair dropped out of range
+      if (has_pending) uncarried.push_back(std::uint32_t(k_old));
+      continue;
+    }
     std::uint32_t s_new = fresh.slot_begin[k_new];
     const std::uint32_t s_new_end = fresh.slot_begin[k_new + 1];
     for (std::uint32_t s = old_list.slot_begin[k_old]; s < old_list.slot_begin[k_old + 1]; ++s) {
@@ -67,7 +73,11 @@ void carry_history(const PairList& old_list, PairList& fresh) {
         ++fresh.touching[k_new];
       }
     }
+    if (!has_pending) continue;
+    if (fresh.touching[k_new]) fresh.pending[k_new] = old_list.pending[k_old];
+    else uncarried.push_back(std::uint32_t(k_old));
   }
+  return uncarried;
 }
 
 }  // namespace polydem

@@ -37,8 +37,7 @@ inline std::uint64_t feature_key(FeaturePair f) {
   return (std::uint64_t(f.type) << 48) | (std::uint64_t(f.a) << 32) | std::uint64_t(f.b);
 }
 
-// Pairs per block: a block's energy is summed in pair order by whichever thread runs it, and
-// the blocks in order after, so the sums are the same bits for any thread count.
+// Pairs per block of the pair loop (a thread takes a block at a time; its contacts are counted together).
 constexpr std::size_t kPairBlock = 256;
 
 struct PairList {
@@ -57,9 +56,12 @@ struct PairList {
   // Per pair, this step: force on i (N), torques on i and on j about their centres (N m).
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
-  std::vector<EnergyParts> block_energy;   // J, per block of kPairBlock pairs, this step (energy ledger)
   std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
-  std::vector<EnergyParts> pair_energy;    // J, per pair, this step: filled only when sized (ranks)
+  // J, per pair: its energies summed in step order since the ledger last closed or its contact
+  // began (ContactEngine::flush_ended): the same bits whatever thread or rank steps the pair
+  // and whenever the lists rebuild (carried with the history; zero while not touching).
+  std::vector<EnergyParts> pending;
+  std::vector<std::uint8_t> block_ended;   // per block: a pair's contact ended this step (its pending is due)
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
@@ -76,8 +78,9 @@ struct PairList {
     touching.assign(pairs.size(), 0);
     linear_steps.assign(pair_steps ? pairs.size() : 0, LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
-    block_energy.assign((pairs.size() + kPairBlock - 1) / kPairBlock, EnergyParts{});
-    block_contacts.assign(block_energy.size(), 0);
+    pending.assign(pairs.size(), EnergyParts{});
+    block_contacts.assign((pairs.size() + kPairBlock - 1) / kPairBlock, 0);
+    block_ended.assign(block_contacts.size(), 0);
   }
 };
 
@@ -85,13 +88,15 @@ struct PairList {
 // driver list): the fixed order of each body's driver terms, whatever the thread count.
 std::vector<std::uint32_t> pairs_by_body(const std::vector<BodyPair>& pairs, std::size_t n_bodies);
 
-// The pairs of `list` with an active slot, and those slots alone: all carry_history reads of
-// an old list, held instead of it while the new one is built (a rebuild's memory peak).
+// The pairs of `list` with an active slot, and those slots alone, with the pairs' pending
+// energies: all carry_history reads of an old list, held instead of it while the new one is
+// built (a rebuild's memory peak).
 PairList active_part(const PairList& list);
 
 // Copies the history of every active slot of `old_list` into the slot with the same pair
-// and key in `fresh` (both sorted) and counts it in the pair's `touching`. Keys absent from `fresh`
-// end their contact.
-void carry_history(const PairList& old_list, PairList& fresh);
+// and key in `fresh` (both sorted) and counts it in the pair's `touching`, and the pair's pending
+// energy with it. Keys absent from `fresh` end their contact. Returns the old pairs whose
+// pending energy found no touching pair in `fresh` (the caller's to count).
+std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fresh);
 
 }  // namespace polydem

@@ -71,9 +71,8 @@ void free_results(PairList& list) {
   for (auto* v : {&list.force_i, &list.torque_i, &list.torque_j}) release(*v);
   release(list.touching);
   release(list.linear_steps);
-  release(list.block_energy);
   release(list.block_contacts);
-  release(list.pair_energy);
+  release(list.block_ended);
   release(list.gap_at_build);
   release(list.slot_gap);
 }
@@ -84,12 +83,15 @@ void size_slots(PairList& list) {
   list.records.assign(list.recording ? n_slots : 0, SlotRecord{});
   list.active.assign(n_slots, 0);
   list.touching.assign(list.size(), 0);
+  list.pending.assign(list.size(), EnergyParts{});
 }
 
 void size_results(PairList& list, bool pair_steps) {
   std::vector<std::uint16_t> touching = std::move(list.touching);
-  list.resize_results(pair_steps);  // zeroes `touching` too
+  std::vector<EnergyParts> pending = std::move(list.pending);
+  list.resize_results(pair_steps);  // zeroes `touching` and `pending` too
   list.touching = std::move(touching);
+  list.pending = std::move(pending);
 }
 
 void fill_driver_slots(const std::vector<std::vector<FeaturePair>>& per_pair, PairList& list) {

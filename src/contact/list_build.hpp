@@ -59,15 +59,16 @@ void body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, d
   join_blocks(blocks, list);
 }
 
-// Frees what active_part does not read (the last step's results, the gaps at the build: ~100
-// bytes a pair), before it copies the active part: a rebuild's peak held the whole old list.
+// Frees what active_part does not read (the last step's results but the pending energies, the
+// gaps at the build: ~70 bytes a pair), before it copies the active part: a rebuild's peak
+// held the whole old list.
 void free_results(PairList& list);
 
-// Sizes the per-slot state (springs, records, active flags) and the pairs' contact counts of a
-// list whose pairs, runs and keys are laid out: what carry_history fills.
+// Sizes the per-slot state (springs, records, active flags) and the pairs' contact counts and
+// pending energies of a list whose pairs, runs and keys are laid out: what carry_history fills.
 void size_slots(PairList& list);
-// Then the per-pair results, keeping the counts: sized once the old list is freed (a
-// rebuild's peak held both, 98 bytes a pair). pair_steps: PairList::resize_results'.
+// Then the per-pair results, keeping the counts and pending energies: sized once the old list
+// is freed (a rebuild's peak held both, 98 bytes a pair). pair_steps: PairList::resize_results'.
 void size_results(PairList& list, bool pair_steps = true);
 
 // Lays out per-pair candidate lists as the slots of a driver list, each run sorted by key,

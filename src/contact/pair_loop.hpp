@@ -51,19 +51,19 @@ template <class Kernel>
 void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
   const PairSplit& split = direct.split;
   const std::size_t n_foreign = split.foreign_side.size();
-  const bool per_pair = list.pair_energy.size() == list.size();
 #pragma omp for schedule(static)
   for (std::size_t f = 0; f < n_foreign; ++f) {
     const std::uint32_t k = split.foreign[f];
     const PairTotals t = kernel(k, scratch);
-    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, t.energy};
+    const bool ended = list.touching[k] != 0 && t.contacts == 0;  // touching at the last step, not now
+    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, ended};
     list.touching[k] = std::uint16_t(t.contacts);
-    if (per_pair) list.pair_energy[k] = t.energy;
+    list.pending[k] += t.energy;
   }
 }
 
 // Chunk t's pairs in order: each internal pair computed and added to both bodies' sums, each
-// foreign pair's result added to the side homed here; the blocks' energies and contacts. The
+// foreign pair's result added to the side homed here; the blocks' contacts and ended flags. The
 // runs of internal pairs between two foreign ones are plain loops (one thread: the whole list).
 template <class Kernel>
 void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t) {
@@ -71,11 +71,10 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
   if (split.cut[t] == split.cut[t + 1]) return;
   BodySum* const sums = direct.sums.data();
   const std::size_t n = list.size();
-  const bool per_pair = list.pair_energy.size() == n;
   std::uint32_t f = split.foreign_begin[t], next = split.foreign[f];  // the last is the list size
   for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b) {
-    EnergyParts energy;  // J
     std::uint32_t contacts = 0;
+    bool ended = false;
     const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * kPairBlock));
     for (std::uint32_t k = std::uint32_t(b * kPairBlock); k < end; ++k) {
       for (const std::uint32_t stop = std::min(end, next); k < stop; ++k) {
@@ -83,22 +82,22 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
         const BodyPair p = list.pairs[k];
         add_as_i(sums[p.i], pt.force_i, pt.torque_i);
         add_as_j(sums[p.j], pt.force_i, pt.torque_j);
+        ended |= (list.touching[k] != 0) & (pt.contacts == 0);  // touching at the last step, not now
         list.touching[k] = std::uint16_t(pt.contacts);
-        energy += pt.energy;
+        list.pending[k] += pt.energy;
         contacts += std::uint32_t(pt.contacts);
-        if (per_pair) list.pair_energy[k] = pt.energy;
       }
       if (k == end) break;
       const BodyPair p = list.pairs[k];  // k == next: a foreign pair
       const ForeignResult& r = direct.foreign[f];
       if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], r.force_i, r.torque_i);
       if (split.foreign_side[f] & 2u) add_as_j(sums[p.j], r.force_i, r.torque_j);
-      energy += r.energy;
+      ended |= r.ended;
       contacts += list.touching[k];
       next = split.foreign[++f];
     }
-    list.block_energy[b] = energy;
     list.block_contacts[b] = contacts;
+    list.block_ended[b] = ended;
   }
 }
 
@@ -126,32 +125,34 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
   }
 }
 
-// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list
-// and each block's energy and contact count in list.block_energy and block_contacts (sized by
-// resize_results). kNoWait: the threads go on without meeting at the loop's end (the next
-// loop reads none of this list's results; a later barrier comes before anything that does).
+// Runs `kernel(k, scratch) -> PairTotals` over every pair, keeps the per-pair forces in the list,
+// adds each pair's energy to its own list.pending[k] (in step order: the same bits whatever
+// thread runs it), keeps each block's contact count in list.block_contacts and flags in
+// list.block_ended the blocks where a pair's contact ended (sized by resize_results).
+// kNoWait: the threads go on without meeting at the loop's end (the next loop reads none of
+// this list's results; a later barrier comes before anything that does).
 // With `direct` (body pairs) each pair's force and torques go into its bodies' sums instead
 // (direct_pair_forces), not into the list.
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
-  assert(list.block_energy.size() == blocks && list.block_contacts.size() == blocks);
-  const bool per_pair = list.pair_energy.size() == n;  // a rank's share: summed again across ranks
+  assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
+  assert(list.pending.size() == n);
   auto one_block = [&](std::size_t b, PairScratch& scratch) {
-    EnergyParts energy;  // J
     std::uint32_t contacts = 0;
+    bool ended = false;
     for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
       const PairTotals t = kernel(std::uint32_t(k), scratch);
       list.force_i[k] = t.force_i;
       list.torque_i[k] = t.torque_i;
       list.torque_j[k] = t.torque_j;
+      ended |= (list.touching[k] != 0) & (t.contacts == 0);  // touching at the last step, not now
       list.touching[k] = std::uint16_t(t.contacts);
-      energy += t.energy;
+      list.pending[k] += t.energy;
       contacts += std::uint32_t(t.contacts);
-      if (per_pair) list.pair_energy[k] = t.energy;
     }
-    list.block_energy[b] = energy;
     list.block_contacts[b] = contacts;
+    list.block_ended[b] = ended;
   };
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
   in_team(blocks >= 2, [&] {

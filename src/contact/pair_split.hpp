@@ -19,7 +19,7 @@ struct alignas(64) BodySum {
 // A foreign pair's results, computed before the chunks' walks (which read them).
 struct ForeignResult {
   Vec3 force_i, torque_i, torque_j;  // N on i, N m on i and on j
-  EnergyParts energy;                // J, this step
+  bool ended;                        // its contact ended this step (PairList::block_ended)
 };
 
 // The cut of a pair list for a team of `threads`, rebuilt with the list or the team size.

@@ -11,10 +11,13 @@ namespace polydem {
 
 namespace {
 
-// 06: a header (scene fingerprint, body and driver counts, payload size) before the payload
-// of format 05 and an FNV-1a checksum of all bytes before it after; 05: the ledger's
-// dissipation by mechanism.
-constexpr char kMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '6'};
+// 07: the ledger's open sums (each touching pair's pending energy after the active slots of
+// its list, the ended contacts' exact sum after both lists): written at any step, not only
+// where the ledger closes; 06: a header (scene fingerprint, body and driver counts, payload
+// size) before the payload of format 05 and an FNV-1a checksum of all bytes before it after;
+// 05: the ledger's dissipation by mechanism. 06 and older hold a closed ledger (none open).
+constexpr char kMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '7'};
+constexpr char kMagic06[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '6'};
 constexpr char kMagic05[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '5'};
 // Older formats still resume: 04 has no ledger shares (all its dissipation counts as dashpot;
 // forces and motion unchanged); 03 has neither those nor the last dashpot force, gap and
@@ -38,10 +41,16 @@ void write_active(Writer& w, const PairList& list) {
         w.pod(list.pairs[k].j);
         slot_fields(w, list.features[s], list.slots[s], list.records.at(s));  // at: a list must record
       }
+  for (std::size_t k = 0; k < list.size(); ++k)  // the pairs above, in order: their pending energies
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+      if (list.active[s]) {
+        w.pod(list.pending[k]);
+        break;
+      }
 }
 
-// `partners`: bodies (i < j < partners) or drivers (j < partners).
-void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t partners, bool driver) {
+// `partners`: bodies (i < j < partners) or drivers (j < partners). `pending`: format 07.
+void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t partners, bool driver, bool pending) {
   std::uint64_t n = 0;
   r.pod(n);
   r.count(n, kContactBytes03, "contact");
@@ -71,6 +80,11 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
     ++list.slot_begin.back();
   }
   list.resize_results();
+  if (!pending) return;
+  for (EnergyParts& e : list.pending) {
+    r.pod(e);
+    check_open_energy(r, e);
+  }
 }
 
 // Format 05's bytes after the magic: the state, the contacts, the output progress.
@@ -82,6 +96,7 @@ void write_payload(Writer& w, const Simulation& sim, const OutputProgress& progr
   write_drivers(w, sim.drivers);
   write_active(w, sim.engine().body_pairs());
   write_active(w, sim.engine().driver_pairs());
+  write_flushed(w, sim.engine().flushed());
   write_progress(w, progress);
 }
 
@@ -98,15 +113,15 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   const auto is = [&](const char (&m)[8]) {
     return bytes.size() >= sizeof(m) && std::memcmp(bytes.data(), m, sizeof(m)) == 0;
   };
-  if (!is(kMagic) && !is(kMagic05) && !is(kMagic04) && !is(kMagic03))
+  if (!is(kMagic) && !is(kMagic06) && !is(kMagic05) && !is(kMagic04) && !is(kMagic03))
     throw InputError(path + ": not a polydem checkpoint (formats 03 to " + std::string(kMagic + 6, 2) + " resume)");
-  if (is(kMagic)) check_header(bytes, path, sim, force);
-  Reader r{bytes, is(kMagic) ? kHeaderBytes : sizeof(kMagic),
-           is(kMagic) ? bytes.size() - kChecksumBytes : bytes.size(), path};
+  const bool sealed = is(kMagic) || is(kMagic06), open = is(kMagic);
+  if (sealed) check_header(bytes, path, sim, force);
+  Reader r{bytes, sealed ? kHeaderBytes : sizeof(kMagic), sealed ? bytes.size() - kChecksumBytes : bytes.size(), path};
   r.last_step_fields = !is(kMagic03);
   read_step(r, sim);
   sim.ledger = EnergyLedger{};
-  const std::size_t ledger_bytes = is(kMagic) || is(kMagic05) ? sizeof(EnergyLedger) : kLedgerBytes04;
+  const std::size_t ledger_bytes = sealed || is(kMagic05) ? sizeof(EnergyLedger) : kLedgerBytes04;
   if (r.left() < ledger_bytes) r.fail("truncated in the energy ledger");
   std::memcpy(reinterpret_cast<char*>(&sim.ledger), bytes.data() + r.at, ledger_bytes);
   r.at += ledger_bytes;
@@ -116,8 +131,9 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   r.array(b.angular_momentum, n); r.array(b.force, n); r.array(b.torque, n);
   read_drivers(r, sim);
   check_state(r, sim);
-  read_active(r, sim.engine().body_pairs(), n, n, false);
-  read_active(r, sim.engine().driver_pairs(), n, sim.drivers.size(), true);
+  read_active(r, sim.engine().body_pairs(), n, n, false, open);
+  read_active(r, sim.engine().driver_pairs(), n, sim.drivers.size(), true, open);
+  sim.engine().flushed() = open ? read_flushed(r) : ExactEnergy{};
   sim.drop_sphere_orientations();  // files of older builds turned them
   sim.force_rebuild();
   read_progress(r, progress);

@@ -16,6 +16,19 @@ template <class T> bool all_finite(const std::vector<T>& v) {
 
 }  // namespace
 
+void write_flushed(Writer& w, const ExactEnergy& flushed) { w.array(flushed.words()); }
+
+ExactEnergy read_flushed(Reader& r) {
+  std::vector<std::uint64_t> words;
+  r.array(words, 4 * ExactSum::kWords);
+  return ExactEnergy::from_words(words, 1);  // one sum's words: its digits carried
+}
+
+void check_open_energy(const Reader& r, const EnergyParts& e) {
+  if (!std::isfinite(e.net) || !std::isfinite(e.sliding) || !std::isfinite(e.rolling) || !std::isfinite(e.patch))
+    r.fail("a contact's open energy is not finite");
+}
+
 void write_clock(Writer& w, const Simulation& sim) {
   w.pod(sim.step_index());
   w.pod(sim.dt());

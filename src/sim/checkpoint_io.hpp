@@ -118,6 +118,13 @@ void driver_fields(IO& io, D& d) {
   io.pod(d.orientation);  // a mesh's placement; a servo's state is its velocity and force
 }
 
+// The energy ledger's open part (format 07, pieces 02): the ended contacts' exact sum, as words
+// (canonical: equal sums give equal bytes). The pairs' pending energies go with their slots.
+void write_flushed(Writer& w, const ExactEnergy& flushed);
+ExactEnergy read_flushed(Reader& r);
+// A pair's pending energy read must be finite.
+void check_open_energy(const Reader& r, const EnergyParts& e);
+
 // Step, time step and energy ledger: the payload's first fields.
 void write_clock(Writer& w, const Simulation& sim);
 // Step and time step (the ledger's bytes vary with the format), checked against the scene.

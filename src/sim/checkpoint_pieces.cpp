@@ -10,8 +10,12 @@ namespace polydem {
 
 namespace {
 
-constexpr char kManifestMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '1'};
-constexpr char kPieceMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'C', '0', '1'};
+// 02: each piece holds its touching pairs' pending energies after its slots and its ended
+// contacts' exact sum (the ledger's open part, as format 07); 01 (a closed ledger) still resumes.
+constexpr char kManifestMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '2'};
+constexpr char kPieceMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'C', '0', '2'};
+constexpr char kManifestMagic01[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '1'};
+constexpr char kPieceMagic01[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'C', '0', '1'};
 
 struct PieceHeader {  // after the piece's magic
   std::uint64_t fingerprint, step, piece, pieces, bodies, payload_bytes;
@@ -46,6 +50,8 @@ void write_slots(Writer& w, const std::vector<TableSlot>& slots) {
     w.pod(t.j);
     slot_fields(w, t.key, t.slot, t.record);
   }
+  for (std::size_t s = 0; s < slots.size(); ++s)  // each pair's first slot: its pending energy
+    if (s == 0 || slots[s].i != slots[s - 1].i || slots[s].j != slots[s - 1].j) w.pod(slots[s].pending);
 }
 
 // This rank's bodies (ids, then the state arrays of format 06 for them) and contacts.
@@ -63,6 +69,7 @@ FileSeal write_piece(const std::string& path, const Simulation& sim, std::size_t
     w.array(subset(b.force, ids)); w.array(subset(b.torque, ids));
     write_slots(w, body);
     write_slots(w, driver);
+    write_flushed(w, ranks.output_flushed(sim.engine()));
   });
 }
 
@@ -86,6 +93,8 @@ void write_manifest(const std::string& path, const Simulation& sim, const std::v
 struct Assembly {
   std::vector<std::uint8_t> seen;  // per body: 1 once a piece held it
   std::vector<TableSlot> body, driver;
+  ExactEnergy flushed;             // J, the pieces' ended contacts summed
+  bool open = true;                // pieces 02: the ledger's open part held
 };
 
 template <class T>
@@ -96,10 +105,12 @@ void read_into(Reader& r, std::vector<T>& all, const std::vector<std::uint32_t>&
 }
 
 // `partners`: bodies (i < j < partners) or drivers (j < partners).
-void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std::size_t partners, bool driver) {
+void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std::size_t partners, bool driver,
+                bool pending) {
   std::uint64_t n = 0;
   r.pod(n);
   r.count(n, kContactBytes03, "contact");
+  const std::size_t first = out.size();
   for (std::uint64_t e = 0; e < n; ++e) {
     TableSlot t{};
     r.pod(t.i);
@@ -111,6 +122,12 @@ void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std:
     if (std::uint8_t(t.key.type) >= kPairTypeCount) r.fail("contact " + std::to_string(e) + " has an unknown type");
     out.push_back(t);
   }
+  if (!pending) return;
+  for (std::size_t s = first; s < out.size(); ++s)
+    if (s == first || out[s].i != out[s - 1].i || out[s].j != out[s - 1].j) {
+      r.pod(out[s].pending);
+      check_open_energy(r, out[s].pending);
+    }
 }
 
 struct PieceEntry {
@@ -130,7 +147,8 @@ void read_piece(const std::string& manifest, const PieceEntry& entry, std::size_
     throw InputError(which + " is missing or unreadable");
   }
   PieceHeader h{};
-  if (bytes.size() < kPieceHeaderBytes + kChecksumBytes || std::memcmp(bytes.data(), kPieceMagic, kMagicBytes) != 0)
+  if (bytes.size() < kPieceHeaderBytes + kChecksumBytes ||
+      std::memcmp(bytes.data(), into.open ? kPieceMagic : kPieceMagic01, kMagicBytes) != 0)
     throw InputError(which + " is not a checkpoint piece (damaged or truncated)");
   std::memcpy(&h, bytes.data() + kMagicBytes, sizeof(h));
   try {
@@ -156,8 +174,9 @@ void read_piece(const std::string& manifest, const PieceEntry& entry, std::size_
   read_into(r, b.position, ids); read_into(r, b.orientation, ids); read_into(r, b.velocity, ids);
   read_into(r, b.angular_velocity, ids); read_into(r, b.angular_momentum, ids);
   read_into(r, b.force, ids); read_into(r, b.torque, ids);
-  read_slots(r, into.body, b.size(), b.size(), false);
-  read_slots(r, into.driver, b.size(), sim.drivers.size(), true);
+  read_slots(r, into.body, b.size(), b.size(), false, into.open);
+  read_slots(r, into.driver, b.size(), sim.drivers.size(), true, into.open);
+  if (into.open) into.flushed.add(read_flushed(r));
   if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the piece");
 }
 
@@ -187,7 +206,8 @@ void write_checkpoint_pieces(const std::string& path, const Simulation& sim, con
 }
 
 bool is_checkpoint_manifest(const std::string& bytes) {
-  return bytes.size() >= kMagicBytes && std::memcmp(bytes.data(), kManifestMagic, kMagicBytes) == 0;
+  return bytes.size() >= kMagicBytes && (std::memcmp(bytes.data(), kManifestMagic, kMagicBytes) == 0 ||
+                                         std::memcmp(bytes.data(), kManifestMagic01, kMagicBytes) == 0);
 }
 
 void read_checkpoint_pieces(const std::string& path, const std::string& bytes, Simulation& sim,
@@ -211,7 +231,8 @@ void read_checkpoint_pieces(const std::string& path, const std::string& bytes, S
   }
   read_progress(r, progress);
   if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the manifest");
-  Assembly into{std::vector<std::uint8_t>(sim.bodies.size(), 0), {}, {}};
+  Assembly into{std::vector<std::uint8_t>(sim.bodies.size(), 0), {}, {}, {},
+                std::memcmp(bytes.data(), kManifestMagic, kMagicBytes) == 0};
   for (std::size_t k = 0; k < pieces; ++k) read_piece(path, entries[k], k, pieces, sim, into);
   for (std::size_t b = 0; b < sim.bodies.size(); ++b)
     if (!into.seen[b])
@@ -220,6 +241,7 @@ void read_checkpoint_pieces(const std::string& path, const std::string& bytes, S
   check_state(r, sim);
   sim.engine().body_pairs() = checkpoint_list(std::move(into.body));
   sim.engine().driver_pairs() = checkpoint_list(std::move(into.driver));
+  sim.engine().flushed() = into.flushed;
   sim.drop_sphere_orientations();  // files of older builds turned them
   sim.force_rebuild();
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "polydem/error.hpp"
 #include "sim/body_exchange.hpp"
@@ -40,13 +41,12 @@ RunError non_finite_position(std::size_t b) {
 
 RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies,
                            ContactSettings settings)
-    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()), pair_counts_(link.ranks()) {
+    : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()) {
   const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
   halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), settings_.skin + band);
   settings_.spheres_only = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) {
     return shapes[s].is_sphere();
   });
-  settings_.pair_energies = true;
 }
 
 bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
@@ -122,8 +122,12 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   if (!forced_ && engine_) exchange_ghosts(bodies);
   const bool stale = lists_stale(bodies, drivers);
   if (stale) {
+    // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
+    if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
     const LinkCounts before = link_.counts();
     if (forced_) {  // the start or a resume: whole's lists hold the table
+      const ExactEnergy resumed = std::exchange(whole.flushed(), ExactEnergy{});  // J, on every rank: rank 0's to count
+      if (link_.rank() == 0) taken_.add(resumed);
       sync_bodies(bodies);  // a resume's first drift moved each rank's bodies of the cut before it
       redistribute(bodies, whole);
     } else {
@@ -173,11 +177,21 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
   std::vector<TableSlot> slots;
   if (link_.rank() != 0) return slots;
   const PairList& list = driver ? whole.driver_pairs() : whole.body_pairs();
-  for (std::size_t k = 0; k < list.size(); ++k)
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::size_t first = slots.size();
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s], list.records.at(s)});
+        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s], list.records.at(s), {}});
+    if (slots.size() > first) slots[first].pending = list.pending[k];
+  }
   return slots;
+}
+
+ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
+  if (!engine_) return link_.rank() == 0 ? whole.flushed() : ExactEnergy{};
+  ExactEnergy mine = taken_;  // J
+  mine.add(engine_->flushed());
+  return mine;
 }
 
 long RankContacts::first_non_finite(const Bodies& bodies) const {
@@ -190,31 +204,38 @@ long RankContacts::first_non_finite(const Bodies& bodies) const {
   return least_over_ranks(link_, mine);
 }
 
-// One gather: the touching driver pairs' reactions and the pair energies; the owned bodies'
-// pair counts at rebuilds only (the lists, so the counts, hold until the next).
+// One gather of the touching driver pairs' reactions and the ranks' contact counts; the owned
+// bodies' work (the next cut's weights) at rebuilds only (the lists hold until the next).
 void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
-  EnergyShare mine = energy_share(engine_->body_pairs(), engine_->driver_pairs(), store_, rebuilt);
+  if (rebuilt) owned_work_ = owned_work(engine_->body_pairs(), engine_->driver_pairs(), store_);
   std::vector<char> bytes;
   append_section(bytes, reaction_shares());
-  append_section(bytes, mine.counts);
-  append_section(bytes, mine.pairs);
-  append_section(bytes, std::vector<std::uint64_t>{mine.contacts});
+  append_section(bytes, std::vector<std::uint64_t>{owned_contacts(engine_->body_pairs(), engine_->driver_pairs(), store_)});
   std::vector<ReactionShare> reactions;
-  std::vector<EnergyShare> energies(link_.ranks());
-  const std::vector<std::vector<char>> all = link_.all_gather(bytes);
-  for (int r = 0; r < link_.ranks(); ++r) {
+  contacts_ = 0;
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
     std::size_t at = 0;
-    for (const ReactionShare& x : read_section<ReactionShare>(all[r], at)) reactions.push_back(x);
-    energies[r].counts = read_section<PairCounts>(all[r], at);
-    if (rebuilt) pair_counts_[r] = energies[r].counts;
-    else energies[r].counts = pair_counts_[r];
-    energies[r].pairs = read_section<PairEnergy>(all[r], at);
-    energies[r].contacts = read_section<std::uint64_t>(all[r], at).at(0);
+    for (const ReactionShare& x : read_section<ReactionShare>(from, at)) reactions.push_back(x);
+    contacts_ += read_section<std::uint64_t>(from, at).at(0);
   }
   add_reactions(std::move(reactions), drivers);
-  const RankEnergy total = total_energy(energies, n_bodies_);
-  energy_ = total.energy;
-  contacts_ = total.contacts;
+}
+
+EnergyParts RankContacts::take_energy() {
+  ExactEnergy mine = std::exchange(taken_, ExactEnergy{});  // J
+  if (engine_) mine.add(engine_->take_energy(&store_.ghost));
+  return sum_over_ranks(link_, mine);
+}
+
+void RankContacts::sum_open_energy() {
+  ExactEnergy mine = taken_;  // J
+  if (engine_) mine.add(engine_->open_energy(&store_.ghost));
+  open_energy_ = sum_over_ranks(link_, mine);
+}
+
+void RankContacts::drop_energy() {
+  taken_ = ExactEnergy{};
+  if (engine_) engine_->take_energy(nullptr);
 }
 
 std::size_t RankContacts::pairs() const {

@@ -4,9 +4,8 @@
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
 // to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
-// reactions (summed in the one-process pair order) and the pair energies (summed in the
-// one-process blocks of kPairBlock pairs; where each pair falls follows from the owned
-// bodies' pair counts, sent at rebuilds). At a rebuild each rank sends the owned bodies that
+// reactions (summed in the one-process pair order) and the contact counts; the energy
+// ledger's exact sums are reduced only when it closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
 // reads the loads summed over the ranks and a sample of the centres. Every rank keeps arrays
@@ -39,7 +38,7 @@ class RankContacts {
   RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies, ContactSettings settings);
 
   // Adds the owned bodies' contact forces and torques of this step, sets the drivers'
-  // reactions and the step's energy, on every rank (a collective). `whole`: the engine over
+  // reactions and the contact count, on every rank (a collective). `whole`: the engine over
   // all bodies, whose lists hold the table of histories (read at a forced rebuild, written by
   // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
@@ -61,6 +60,9 @@ class RankContacts {
   // lists (read from a checkpoint, or none), the other ranks nothing.
   std::vector<std::uint32_t> output_bodies() const;
   std::vector<TableSlot> output_slots(const ContactEngine& whole, bool driver) const;
+  // The ended contacts' energies this rank holds since the ledger last closed (J; rank 0 alone
+  // before its first step: `whole`'s), the rest of its share being its slots' pending energies.
+  ExactEnergy output_flushed(const ContactEngine& whole) const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
   long first_non_finite(const Bodies& bodies) const;
   // The bodies this rank integrates, by rotation path (empty before the first compute).
@@ -68,7 +70,15 @@ class RankContacts {
   std::size_t owned() const { return plan_.owned.size(); }
   std::size_t ghosts() const { return plan_.local.size() - plan_.owned.size(); }
 
-  const EnergyParts& energy() const { return energy_; }  // J, this step, every rank's pairs
+  // The ledger's contact energies of every rank's pairs since the last take (J; a collective):
+  // ContactEngine::take_energy on each rank, summed exactly.
+  EnergyParts take_energy();
+  // What take_energy would return, changing nothing (a collective; Simulation::gather_state),
+  // then read on any rank by open_energy.
+  void sum_open_energy();
+  const EnergyParts& open_energy() const { return open_energy_; }
+  // The energies of the set-up's contact stage: not stepped, not counted (this rank's alone).
+  void drop_energy();
   std::size_t contacts() const { return contacts_; }    // active sub-contacts, every rank's pairs
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t cuts() const { return cuts_; }          // rebuilds that cut the domain again
@@ -109,7 +119,7 @@ class RankContacts {
   std::size_t cuts_ = 0;
   double load_share_ = 0.0;
   GhostPlan plan_;
-  std::vector<std::vector<PairCounts>> pair_counts_;  // per rank, sent at the last rebuild
+  std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)
   RotorGroups owned_rotors_;
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
@@ -118,7 +128,8 @@ class RankContacts {
   bool rebuild_asked_ = false;
   std::size_t rebuilds_ = 0;
   LinkCounts rebuild_traffic_;
-  EnergyParts energy_;
+  ExactEnergy taken_;        // J, the ended contacts' energies of earlier engines (rebuilds) since the last take_energy
+  EnergyParts open_energy_;  // J, at the last sum_open_energy
   std::size_t contacts_ = 0;
 };
 

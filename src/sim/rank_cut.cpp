@@ -23,10 +23,9 @@ struct CutPoint {
 // Each owned body's weight from the last lists (this rank counted them): its own step as one
 // candidate feature pair (2 halves) plus the candidates of its pairs (work: counted on both sides).
 std::vector<std::uint64_t> RankContacts::owned_weights() const {
-  const std::vector<PairCounts>& counts = pair_counts_[link_.rank()];  // per owned body, in order
   std::vector<std::uint64_t> w(plan_.owned.size(), kBodyWork);
-  if (counts.size() == w.size())
-    for (std::size_t k = 0; k < w.size(); ++k) w[k] += counts[k].work;
+  if (owned_work_.size() == w.size())
+    for (std::size_t k = 0; k < w.size(); ++k) w[k] += owned_work_[k];
   return w;
 }
 

@@ -102,7 +102,12 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   external_forces();
   ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
   predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0
-  if (contacts) contact_stage();
+  if (contacts) {
+    contact_stage();
+    // No step taken: its energies are not counted (the ledger starts at zero).
+    if (ranks_) ranks_->drop_energy();
+    else engine_->take_energy(nullptr);
+  }
 }
 
 // One process: the engine over all bodies; many: this rank's share, then shared.
@@ -124,6 +129,16 @@ void Simulation::gather_state(bool onto_every_rank) {
   if (!ranks_) return;
   ranks_->sync_bodies(bodies, !onto_every_rank);
   ranks_->gather_table(*engine_, !onto_every_rank);
+  if (scene_.forces.contact.present) ranks_->sum_open_energy();
+}
+
+void Simulation::close_ledger() {
+  if (!scene_.forces.contact.present) return;
+  const EnergyParts e = ranks_ ? ranks_->take_energy() : engine_->take_energy(nullptr).value();  // J
+  ledger.dissipated += e.net;
+  ledger.sliding += e.sliding;
+  ledger.rolling += e.rolling;
+  ledger.patch_work += e.patch;
 }
 
 long Simulation::first_non_finite() const {
@@ -191,15 +206,9 @@ void Simulation::step() {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
-  if (contacts) {
-    const EnergyParts& step = one_process ? engine_->stats().energy : ranks_->energy();
-    ledger.dissipated += step.net;
-    ledger.sliding += step.sliding;
-    ledger.rolling += step.rolling;
-    ledger.patch_work += step.patch;
-    driver_work_half();
-  }
+  if (contacts) driver_work_half();
   ++step_;
+  if (ledger_closes(step_)) close_ledger();
 }
 
 EnergyRow Simulation::energy() const {
@@ -213,12 +222,15 @@ EnergyRow Simulation::energy() const {
   }
   e.elastic_parts = engine_->elastic(drivers);
   e.elastic = e.elastic_parts.normal + e.elastic_parts.tangential + e.elastic_parts.rolling;
-  e.dissipated = ledger.dissipated;
-  e.dissipated_sliding = ledger.sliding;
-  e.dissipated_rolling = ledger.rolling;
-  e.patch_work = ledger.patch_work;
+  // J, since the ledger last closed (distributed: summed by the last gather_state)
+  EnergyParts open;
+  if (scene_.forces.contact.present) open = ranks_ ? ranks_->open_energy() : engine_->open_energy(nullptr).value();
+  e.dissipated = ledger.dissipated + open.net;
+  e.dissipated_sliding = ledger.sliding + open.sliding;
+  e.dissipated_rolling = ledger.rolling + open.rolling;
+  e.patch_work = ledger.patch_work + open.patch;
   // the dashpots (normal, tangential) and cohesion: what the other two mechanisms leave
-  e.dissipated_dashpot = ledger.dissipated + ledger.patch_work - ledger.sliding - ledger.rolling;
+  e.dissipated_dashpot = e.dissipated + e.patch_work - e.dissipated_sliding - e.dissipated_rolling;
   e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;
   e.external_work = ledger.external_work;

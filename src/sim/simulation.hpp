@@ -48,6 +48,14 @@ class Simulation {
 
   void step();  // one velocity-Verlet step of dt
 
+  // The contacts' energies enter `ledger` when it closes, at the end of every kLedgerSteps-th
+  // step (close_ledger; a collective); between, each pair sums its own, flushed exactly when its
+  // contact ends (ContactEngine::take_energy), and energy() adds what is still open. A
+  // checkpoint holds the open sums (format 07), so a run may stop and resume at any step.
+  static constexpr std::int64_t kLedgerSteps = 100;
+  static bool ledger_closes(std::int64_t step) { return step % kLedgerSteps == 0; }
+  void close_ledger();
+
   EnergyRow energy() const;
   const TimeStepEstimate& time_step() const { return dt_estimate_; }
   double dt() const { return dt_; }

@@ -44,6 +44,16 @@ resume=$(grep -o -- "--resume [^ ]*" "$tmp/term.log" | cut -d' ' -f2)
 "$polydem" run "$tmp/long.yaml" --out "$tmp/term" --resume "$resume" 2> /dev/null || fail "resume after SIGTERM"
 same_outputs "$tmp/long" "$tmp/term"
 
+# The same stop made repeatable: a run ended (--until 6099.5 dt: step 6100), a ledger close where no
+# checkpoint is due (the step a SIGTERM near 23 ms stops at), resumed: the same rows as the full run.
+steps=$(basename "$(ls "$tmp/long"/checkpoint_*.bin | tail -1)" .bin); steps=$((10#${steps#checkpoint_}))
+t_end=$(tail -1 "$tmp/long/energy.csv" | cut -d, -f1)  # s, at step $steps
+until_t=$(awk -v t="$t_end" -v n="$steps" 'BEGIN { printf "%.17g", 6099.5 * t / n }')
+"$polydem" run "$tmp/long.yaml" --out "$tmp/cut" --until "$until_t" 2> /dev/null || fail "run to step 6100"
+[ -f "$tmp/cut/checkpoint_006100.bin" ] || fail "no checkpoint at step 6100: $(ls "$tmp/cut"/checkpoint_*)"
+"$polydem" run "$tmp/long.yaml" --out "$tmp/cut" --resume "$tmp/cut/checkpoint_006100.bin" 2> /dev/null || fail "resume at 6100"
+same_outputs "$tmp/long" "$tmp/cut"
+
 # Another scene (gravity upwards, same bodies and step): refused, or resumed with --force.
 sed "s/gravity: \[0, 0, -9.807\]/gravity: [0, 0, 9.807]/" "$tmp/drop.yaml" > "$tmp/up.yaml"
 set +e; "$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/up.log"; code=$?; set -e

@@ -171,7 +171,8 @@ TEST_CASE("a list's results sized after carry_history keep the contact counts it
   CHECK(fresh.touching == std::vector<std::uint16_t>{2, 1});
   CHECK(fresh.force_i.size() == 2);
   CHECK(fresh.linear_steps.size() == 2);
-  CHECK(fresh.block_energy.size() == 1);
+  CHECK(fresh.block_contacts.size() == 1);
+  CHECK(fresh.pending.size() == 2);
 }
 
 // `v = {}` keeps a vector's buffer: what a rebuild frees must give its memory back.
@@ -185,15 +186,15 @@ TEST_CASE("a list's results, gaps and records are freed, not only emptied, befor
   list.recording = true;
   size_slots(list);
   size_results(list);
-  list.pair_energy.resize(3);
   REQUIRE(list.force_i.capacity() >= 3);
   REQUIRE(list.records.capacity() >= 3);
   free_results(list);
   list.set_recording(false);
   for (std::size_t c : {list.force_i.capacity(), list.torque_i.capacity(), list.torque_j.capacity(),
-                        list.touching.capacity(), list.linear_steps.capacity(), list.block_energy.capacity(),
-                        list.block_contacts.capacity(), list.pair_energy.capacity(), list.gap_at_build.capacity(),
+                        list.touching.capacity(), list.linear_steps.capacity(),
+                        list.block_contacts.capacity(), list.block_ended.capacity(), list.gap_at_build.capacity(),
                         list.slot_gap.capacity(), list.records.capacity()})
     CHECK(c == 0);
   CHECK(list.slots.size() == 3);  // the histories stay: active_part reads them
+  CHECK(list.pending.size() == 3);  // and the pairs' open energies, carried with them
 }

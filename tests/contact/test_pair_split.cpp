@@ -1,6 +1,7 @@
 // The body pairs' loop sums each body's terms in the loop (pair_split.hpp) at any team size:
 // each body's sum must be, bit for bit, the plain sum of its pairs' terms in pair order, and
-// each block's energy and contact count the plain sum of its pairs'.
+// each pair's pending energy its terms added step by step, each block's contact count the plain
+// sum of its pairs', and a block flagged where a pair's contact ended.
 #include <catch2/catch.hpp>
 
 #include <atomic>
@@ -60,34 +61,50 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
   PairList list;
   list.pairs = random_pairs(rng, n_bodies, 6 * n_bodies, reach);
   list.resize_results();
-  const std::vector<PairTotals> terms = random_terms(rng, list.size());
-  std::vector<BodySum> plain(n_bodies);  // one thread's pair-order sum
-  std::vector<EnergyParts> energy(list.block_energy.size());
-  std::vector<std::uint32_t> contacts(list.block_energy.size(), 0);
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    const BodyPair p = list.pairs[k];
-    plain[p.i].force += terms[k].force_i;
-    plain[p.i].torque += terms[k].torque_i;
-    plain[p.j].force -= terms[k].force_i;
-    plain[p.j].torque += terms[k].torque_j;
-    energy[k / kPairBlock] += terms[k].energy;
-    contacts[k / kPairBlock] += std::uint32_t(terms[k].contacts);
-  }
+  const std::vector<PairTotals> touching = random_terms(rng, list.size());
+  std::vector<PairTotals> parting = touching;  // every third pair's contact ends
+  for (std::size_t k = 0; k < parting.size(); k += 3) parting[k] = PairTotals{};
+  const std::size_t blocks = list.block_contacts.size();
+  std::vector<EnergyParts> pending(list.size());      // each pair's terms added step by step
+  std::vector<std::uint16_t> was(list.size(), 0);     // contacts at the last step
   DirectSums direct;
   direct.reset(n_bodies);
+  int step = 0;
   for (int threads : {1, 2, 3, 5, 2}) {  // the team size changes between steps: cut again
+    const std::vector<PairTotals>& terms = step++ % 2 ? parting : touching;
+    std::vector<BodySum> plain(n_bodies);  // one thread's pair-order sum
+    std::vector<std::uint32_t> contacts(blocks, 0);
+    std::vector<std::uint8_t> ended(blocks, 0);
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const BodyPair p = list.pairs[k];
+      plain[p.i].force += terms[k].force_i;
+      plain[p.i].torque += terms[k].torque_i;
+      plain[p.j].force -= terms[k].force_i;
+      plain[p.j].torque += terms[k].torque_j;
+      pending[k] += terms[k].energy;
+      contacts[k / kPairBlock] += std::uint32_t(terms[k].contacts);
+      ended[k / kPairBlock] |= was[k] != 0 && terms[k].contacts == 0;
+      was[k] = std::uint16_t(terms[k].contacts);
+    }
     std::vector<std::atomic<int>> calls(list.size());
     run_loop(list, terms, direct, threads, calls);
     CAPTURE(threads, reach, list.size(), direct.split.foreign_side.size());
-    int wrong_calls = 0, wrong_sums = 0, wrong_blocks = 0;
-    for (std::size_t k = 0; k < list.size(); ++k) wrong_calls += calls[k] != 1;
+    int wrong_calls = 0, wrong_sums = 0, wrong_pending = 0, wrong_blocks = 0, ends = 0;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      wrong_calls += calls[k] != 1;
+      wrong_pending += !same_bits(list.pending[k], pending[k]);
+    }
     for (std::uint32_t b = 0; b < n_bodies; ++b)
       wrong_sums += !same_bits(direct.sums[b].force, plain[b].force) || !same_bits(direct.sums[b].torque, plain[b].torque);
-    for (std::size_t b = 0; b < energy.size(); ++b)
-      wrong_blocks += !same_bits(list.block_energy[b], energy[b]) || list.block_contacts[b] != contacts[b];
+    for (std::size_t b = 0; b < blocks; ++b) {
+      wrong_blocks += list.block_contacts[b] != contacts[b] || bool(list.block_ended[b]) != bool(ended[b]);
+      ends += ended[b];
+    }
     CHECK(wrong_calls == 0);
     CHECK(wrong_sums == 0);
+    CHECK(wrong_pending == 0);
     CHECK(wrong_blocks == 0);
+    CHECK((step % 2 ? ends == 0 : ends > 0));  // contacts end at the parting steps only
     CHECK(direct.split.threads == threads);
   }
 }

@@ -67,6 +67,8 @@ void require_same(const Outcome& a, const Outcome& b) {
   CHECK(same_bits(a.ledger.sliding, b.ledger.sliding));
   CHECK(same_bits(a.ledger.patch_work, b.ledger.patch_work));
   CHECK(same_bits(a.ledger.driver_work, b.ledger.driver_work));
+  CHECK(same_bits(a.energy.dissipated, b.energy.dissipated));  // the ledger and what is still open in the pairs
+  CHECK(same_bits(a.energy.dissipated_sliding, b.energy.dissipated_sliding));
   CHECK(a.energy.contacts == b.energy.contacts);
   CHECK(same_bits(a.energy.elastic, b.energy.elastic));
   CHECK(same_bits(a.energy.elastic_parts.tangential, b.energy.elastic_parts.tangential));

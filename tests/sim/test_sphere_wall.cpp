@@ -26,7 +26,7 @@ bool same_history(const ContactHistory& a, const ContactHistory& b) {
          same_bits(a.weight, b.weight);
 }
 
-// Counts the wall pairs (and slots, block energies) whose results differ by a bit.
+// Counts the wall pairs (and slots, pair energies) whose results differ by a bit.
 std::size_t wall_pair_mismatches(const PairList& a, const PairList& b) {
   if (a.pairs.size() != b.pairs.size() || a.slots.size() != b.slots.size()) return 1;
   std::size_t bad = 0;
@@ -36,11 +36,10 @@ std::size_t wall_pair_mismatches(const PairList& a, const PairList& b) {
   for (std::size_t s = 0; s < a.slots.size(); ++s)
     bad += !(a.active[s] == b.active[s] && same_history(a.slots[s].history, b.slots[s].history) &&
              same_bits(a.records[s].point, b.records[s].point) && same_bits(a.records[s].fn, b.records[s].fn));
-  for (std::size_t e = 0; e < a.block_energy.size(); ++e)
-    bad += !(same_bits(a.block_energy[e].net, b.block_energy[e].net) &&
-             same_bits(a.block_energy[e].sliding, b.block_energy[e].sliding) &&
-             same_bits(a.block_energy[e].rolling, b.block_energy[e].rolling) &&
-             same_bits(a.block_energy[e].patch, b.block_energy[e].patch));
+  for (std::size_t k = 0; k < a.size(); ++k)
+    bad += !(same_bits(a.pending[k].net, b.pending[k].net) && same_bits(a.pending[k].sliding, b.pending[k].sliding) &&
+             same_bits(a.pending[k].rolling, b.pending[k].rolling) &&
+             same_bits(a.pending[k].patch, b.pending[k].patch));
   return bad;
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The settled bed (a format-06 checkpoint of tools/bench/peers/spheres.yaml) as two body
+"""The settled bed (a format-06 or 07 checkpoint of tools/bench/peers/spheres.yaml) as two body
 tables: bodies_id.csv in global id order (as the checkpoint holds them) and bodies_cell.csv
 sorted by cell (1 cm cubes, about a sphere's diameter; z, then y, then x, ties by id), the
 same state in space order. Positions, velocities and spins only: contacts restart new.
@@ -13,8 +13,8 @@ CELL = 0.01  # m, a sphere's diameter in the bed
 
 def read_state(path):
     data = open(path, "rb").read()
-    if data[:8] != b"PDCKPT06":
-        sys.exit(f"{path}: not a format-06 polydem checkpoint")
+    if data[:8] not in (b"PDCKPT06", b"PDCKPT07"):  # the same bodies' arrays
+        sys.exit(f"{path}: not a format-06 or 07 polydem checkpoint")
     bodies = struct.unpack_from("<4Q", data, 8)[1]
     at = 40 + 8 + 8 + 9 * 8  # header, step, dt, energy ledger (9 doubles)
 
