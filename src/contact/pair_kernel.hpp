@@ -2,6 +2,7 @@
 // Forces of one interacting pair: evaluates its candidate feature pairs, shares the patch
 // between sub-contacts, hands history over, applies the contact law. Templated on the
 // partner (another body or a driver) so the hot loop has no virtual call.
+#include <algorithm>
 #include <vector>
 
 #include "contact/contact_mass.hpp"
@@ -52,18 +53,21 @@ struct FoundContact {
 // w_k = s_k / sum(s), s_k = band - gap_k. A face landing flat (equal depths) then acts as one
 // contact of stiffness kn whatever its vertex count; a lone contact has w = 1; a sub-contact
 // that appears at the band edge has w = 0, so forces stay continuous.
+// Only weight[0, found.size()) is set and read: the vector keeps its largest size, not shrunk and
+// grown again (zeroed through a call) from pair to pair.
 inline void patch_weights(const std::vector<FoundContact>& found, double band,
                           std::vector<double>& weight) {
-  weight.resize(found.size());  // within its capacity after the first pairs: no allocation
-  if (found.size() == 1) { weight[0] = 1.0; return; }  // the common lone contact
+  const std::size_t n = found.size();
+  if (weight.size() < n) weight.resize(n);
+  if (n == 1) { weight[0] = 1.0; return; }  // the common lone contact
   double total = 0.0;
-  for (std::size_t k = 0; k < found.size(); ++k) {
+  for (std::size_t k = 0; k < n; ++k) {
     weight[k] = band - found[k].geometry.gap;
     total += weight[k];
   }
-  if (!(total > 0.0)) { weight.assign(found.size(), 1.0 / double(found.size())); return; }
+  if (!(total > 0.0)) { std::fill_n(weight.begin(), n, 1.0 / double(n)); return; }
   const double scale = 1.0 / total;  // one division per pair
-  for (double& w : weight) w *= scale;
+  for (std::size_t k = 0; k < n; ++k) weight[k] *= scale;
 }
 
 // A slot that starts touching inherits the history of the nearest slot of the same pair
@@ -203,15 +207,15 @@ template <class Partner>
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
 }
 
-// Sub-contacts 0, 1, ... of a pair two at a time through steady_lanes (law_lanes.hpp), a lane
-// that is not steady through add_one(c) (contact_force); add(c, f, torque) records and sums each
-// in order. Returns how many it did (the pair's count, rounded down to even). Out of line: the
-// lone contacts' loop in apply_law keeps its registers.
+// The sub-contacts of a pair two at a time through steady_lanes (law_lanes.hpp), the last of an
+// odd count through steady_alone, one that is not steady through add_one(c) (contact_force);
+// add(c, f, torque) records and sums each in order.
 template <class Add, class AddOne>
-[[gnu::noinline]] std::size_t law_in_lanes(const LaneConstants& lc, PairList& list, const PairScratch& scratch,
-                                           const Add& add, const AddOne& add_one) {
+[[gnu::always_inline]] inline void law_in_lanes(const LaneConstants& lc, PairList& list, const PairScratch& scratch,
+                                    const Add& add, const AddOne& add_one) {
+  const std::size_t n = scratch.found.size();
   std::size_t c = 0;
-  for (; c + 1 < scratch.found.size(); c += 2) {
+  for (; c + 1 < n; c += 2) {
     ContactForce f[2];
     Vec3 torque[2];
     const unsigned steady = steady_lanes(lc, scratch.found[c].geometry, scratch.found[c + 1].geometry,
@@ -223,7 +227,14 @@ template <class Add, class AddOne>
     if (steady & 2u) add(c + 1, f[1], torque[1]);
     else add_one(c + 1);
   }
-  return c;
+  if (c == n) return;
+  ContactForce f;
+  Vec3 torque;
+  if (steady_alone(lc, scratch.found[c].geometry, scratch.weight[c], list.slots[scratch.found[c].slot].history, f,
+                   torque))
+    add(c, f, torque);
+  else
+    add_one(c);
 }
 
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
@@ -294,16 +305,19 @@ template <class Parts, class Partner>
     if constexpr (Parts::rolling) add(c, f, motion.lever.cross(f.force) + f.moment);
     else add(c, f, motion.lever.cross(f.force));
   };
-  std::size_t c = 0;
-  // Two sub-contacts at a time where the law allows it (law_lanes.hpp), in their order.
+  // Through the lanes where the law allows it (law_lanes.hpp), in their order.
   constexpr bool kLanes = !Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
+  bool laned = false;
   if constexpr (kLanes) {
-    if (scratch.found.size() >= 2 && !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) &&
-        law.mu > 0.0 && nu >= 0.0)
-      c = law_in_lanes({xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt}, list,
-                       scratch, add, add_one);
+    laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0;
+    // Out of line: the rare contact that is not steady leaves the lanes' registers alone.
+    const auto add_one_apart = [&](std::size_t c) __attribute__((noinline)) { add_one(c); };
+    if (laned)
+      law_in_lanes({xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt}, list,
+                   scratch, add, add_one_apart);
   }
-  for (; c < scratch.found.size(); ++c) add_one(c);
+  if (!laned)
+    for (std::size_t c = 0; c < scratch.found.size(); ++c) add_one(c);
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
   totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());

@@ -1,9 +1,11 @@
-// The two-lane law (law_lanes.hpp) against contact_force, the reference: on random sub-contacts,
-// a lane it takes has contact_force's bits (force, energies, history), one it leaves is untouched.
+// The two-lane law (law_lanes.hpp) and its one-lane form against contact_force, the reference: on
+// random sub-contacts, a lane it takes has contact_force's bits (force, energies, history), one it
+// leaves is untouched.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 #include <random>
+#include <tuple>
 
 #include "contact/law_lanes.hpp"
 
@@ -46,7 +48,7 @@ ContactHistory random_history(Draw& d, double weight) {
 
 }  // namespace
 
-TEST_CASE("law lanes: a steady lane has contact_force's bits, another lane is left to it", "[law]") {
+TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, another lane is left to it", "[law]") {
   ContactParams params;
   params.kn = 1e5;
   params.kt = 0.8e5;
@@ -68,9 +70,15 @@ TEST_CASE("law lanes: a steady lane has contact_force's bits, another lane is le
     Vec3 torque[2];
     const unsigned done = steady_lanes(p, g[0], g[1], w[0], w[1], h[0], h[1], f, torque);
     for (int l = 0; l < 2; ++l) {
-      if (!(done & (1u << l))) {
+      ContactHistory h_alone = h0[l];
+      ContactForce f_alone;
+      Vec3 torque_alone;
+      const bool alone = steady_alone(p, g[l], w[l], h_alone, f_alone, torque_alone);
+      REQUIRE(alone == bool(done & (1u << l)));  // a lane's fate is its own: the other lane plays no part
+      if (!alone) {
         ++left;
         REQUIRE(same_bits(h[l], h0[l]));
+        REQUIRE(same_bits(h_alone, h0[l]));
         continue;
       }
       ++steady;
@@ -79,15 +87,18 @@ TEST_CASE("law lanes: a steady lane has contact_force's bits, another lane is le
                                   0.0, false, nullptr};
       ContactHistory h_ref = h0[l];
       const ContactForce ref = contact_force<Parts>(law, kin, h_ref, dt);
-      REQUIRE(same_bits(h[l], h_ref));
-      REQUIRE(same_bits(f[l].force, ref.force));
-      REQUIRE(same_bits(torque[l], Vec3(m.lever.cross(ref.force))));
-      REQUIRE(same_bits(f[l].moment, ref.moment));
-      REQUIRE(same_bits(f[l].fn, ref.fn));
-      REQUIRE(same_bits(f[l].dissipated, ref.dissipated));
-      REQUIRE(same_bits(f[l].patch, ref.patch));
-      REQUIRE(same_bits(f[l].sliding, ref.sliding));
-      REQUIRE(same_bits(f[l].rolling, ref.rolling));
+      const Vec3 torque_ref = m.lever.cross(ref.force);
+      for (const auto& [hl, fl, tl] : {std::tie(h[l], f[l], torque[l]), std::tie(h_alone, f_alone, torque_alone)}) {
+        REQUIRE(same_bits(hl, h_ref));
+        REQUIRE(same_bits(fl.force, ref.force));
+        REQUIRE(same_bits(tl, torque_ref));
+        REQUIRE(same_bits(fl.moment, ref.moment));
+        REQUIRE(same_bits(fl.fn, ref.fn));
+        REQUIRE(same_bits(fl.dissipated, ref.dissipated));
+        REQUIRE(same_bits(fl.patch, ref.patch));
+        REQUIRE(same_bits(fl.sliding, ref.sliding));
+        REQUIRE(same_bits(fl.rolling, ref.rolling));
+      }
     }
   }
   CHECK(steady > 15000);  // most draws rest and stick
