@@ -2,6 +2,7 @@
 // Forces of one interacting pair: evaluates its candidate feature pairs, shares the patch
 // between sub-contacts, hands history over, applies the contact law. Templated on the
 // partner (another body or a driver) so the hot loop has no virtual call.
+#include <algorithm>
 #include <vector>
 
 #include "contact/contact_mass.hpp"
@@ -56,18 +57,21 @@ struct FoundContact {
 // w_k = s_k / sum(s), s_k = band - gap_k. A face landing flat (equal depths) then acts as one
 // contact of stiffness kn whatever its vertex count; a lone contact has w = 1; a sub-contact
 // that appears at the band edge has w = 0, so forces stay continuous.
+// Only weight[0, found.size()) is set and read: the vector keeps its largest size, not shrunk and
+// grown again (zeroed through a call) from pair to pair.
 inline void patch_weights(const std::vector<FoundContact>& found, double band,
                           std::vector<double>& weight) {
-  weight.resize(found.size());  // within its capacity after the first pairs: no allocation
-  if (found.size() == 1) { weight[0] = 1.0; return; }  // the common lone contact
+  const std::size_t n = found.size();
+  if (weight.size() < n) weight.resize(n);
+  if (n == 1) { weight[0] = 1.0; return; }  // the common lone contact
   double total = 0.0;
-  for (std::size_t k = 0; k < found.size(); ++k) {
+  for (std::size_t k = 0; k < n; ++k) {
     weight[k] = band - found[k].geometry.gap;
     total += weight[k];
   }
-  if (!(total > 0.0)) { weight.assign(found.size(), 1.0 / double(found.size())); return; }
+  if (!(total > 0.0)) { std::fill_n(weight.begin(), n, 1.0 / double(n)); return; }
   const double scale = 1.0 / total;  // one division per pair
-  for (double& w : weight) w *= scale;
+  for (std::size_t k = 0; k < n; ++k) weight[k] *= scale;
 }
 
 // A slot that starts touching inherits the history of the nearest slot of the same pair
@@ -207,27 +211,108 @@ template <class Partner>
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
 }
 
-// Sub-contacts 0, 1, ... of a pair two at a time through steady_lanes (law_lanes.hpp), a lane
-// that is not steady through add_one(c) (contact_force); add(c, f, torque) records and sums each
-// in order. Returns how many it did (the pair's count, rounded down to even). Out of line: the
-// lone contacts' loop in apply_law keeps its registers.
-template <class Add, class AddOne>
-[[gnu::noinline]] std::size_t law_in_lanes(const LaneConstants& lc, PairList& list, const PairScratch& scratch,
-                                           const Add& add, const AddOne& add_one) {
+// What the law of pair k's sub-contacts shares, made once per pair by apply_law: explicit, so the
+// rare sub-contact through contact_force is a call with one pointer, no closures built per pair.
+template <class Partner>
+struct PairLaw {
+  const LawParams& law;
+  const BodyView& bodies;
+  const Partner& partner;
+  PairList& list;
+  const PairScratch& scratch;
+  std::uint32_t k;
+  BodyPair p;
+  double r_star;      // m
+  LaneConstants lc;   // the pair's motion relative to i's centre, m_eff, nu and the law's constants
+  double nu_t;        // N s/m
+  bool exact_step;
+  PairTotals& totals;
+};
+
+// Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
+template <class Partner>
+[[gnu::always_inline]] inline void add_contact(const PairLaw<Partner>& pl, std::size_t c, const ContactForce& f,
+                                               const Vec3& torque) {
+  const FoundContact& found = pl.scratch.found[c];
+  SlotRecord& record = pl.list.records[found.slot];  // always recording: the hand-over reads the point
+  record.point = found.geometry.point;  // member by member: an aggregate went through a copy on the stack
+  record.force = f.force;
+  record.fn = f.fn;
+  pl.totals.force_i += f.force;
+  pl.totals.torque_i += torque;
+  pl.totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+}
+
+// Sub-contact c through contact_force, as it computes a contact alone, added and recorded.
+// Without rolling the moment is +0, and adding it changes no sum's bits (a -0 term becomes +0,
+// which the sum, never -0 itself, absorbs alike).
+template <class Parts, class Partner>
+[[gnu::always_inline]] inline void contact_by_law(const PairLaw<Partner>& pl, std::size_t c) {
+  using Normal = typename Parts::Normal;
+  const LawParams& law = pl.law;
+  const LaneConstants& lc = pl.lc;
+  const ContactPoint& g = pl.scratch.found[c].geometry;
+  const SubContactMotion motion = sub_contact_motion(g.point, lc.xi, lc.v_centre, lc.w_rel, lc.v_centre_end, lc.w_rel_end);
+  double m_dashpot = lc.m_eff, nu_dashpot = lc.nu;  // kg, N s/m: the normal dashpot's mass and coefficient
+  if (law.contact_mass) {  // damping_mass: contact: a lone contact's point, or its patch's
+    m_dashpot = pl.scratch.found.size() == 1
+                    ? 1.0 / (point_inverse_mass(pl.bodies.posed[pl.p.i], pl.bodies.mass[pl.p.i], motion.lever, g.normal) +
+                             pl.partner.point_inverse_mass(pl.p.j, g.point, g.normal))
+                    : pl.scratch.patch_mass[c];
+    nu_dashpot = Normal::pair_damping(law, m_dashpot, pl.r_star);
+  }
+  ContactKinematics kin{g.normal,
+                        g.gap,
+                        motion.v_rel,
+                        motion.v_end,
+                        lc.w_rel,
+                        m_dashpot,
+                        Parts::rolling && law.rolling ? motion.lever.norm() : 0.0,
+                        pl.scratch.weight[c],
+                        nu_dashpot,
+                        pl.nu_t,
+                        pl.r_star,
+                        pl.exact_step,
+                        law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k]};  // k', c' for the pair's fixed mass
+  const ContactForce f = contact_force<Parts>(law, kin, pl.list.slots[pl.scratch.found[c].slot].history, lc.dt);
+  if constexpr (Parts::rolling) add_contact(pl, c, f, motion.lever.cross(f.force) + f.moment);
+  else add_contact(pl, c, f, motion.lever.cross(f.force));
+}
+
+// The same out of line: the lanes' rare contact that is not steady leaves their registers alone.
+template <class Parts, class Partner>
+[[gnu::noinline]] void contact_by_law_apart(const PairLaw<Partner>& pl, std::size_t c) {
+  contact_by_law<Parts>(pl, c);
+}
+
+// The sub-contacts of a pair two at a time through steady_lanes (law_lanes.hpp), the last of an
+// odd count through steady_alone, one that is not steady through contact_force; each added and
+// recorded in order.
+template <class Parts, class Partner>
+[[gnu::always_inline]] inline void law_in_lanes(const PairLaw<Partner>& pl) {
+  const PairScratch& scratch = pl.scratch;
+  const std::size_t n = scratch.found.size();
   std::size_t c = 0;
-  for (; c + 1 < scratch.found.size(); c += 2) {
+  for (; c + 1 < n; c += 2) {
     ContactForce f[2];
     Vec3 torque[2];
-    const unsigned steady = steady_lanes(lc, scratch.found[c].geometry, scratch.found[c + 1].geometry,
+    const unsigned steady = steady_lanes(pl.lc, scratch.found[c].geometry, scratch.found[c + 1].geometry,
                                          scratch.weight[c], scratch.weight[c + 1],
-                                         list.slots[scratch.found[c].slot].history,
-                                         list.slots[scratch.found[c + 1].slot].history, f, torque);
-    if (steady & 1u) add(c, f[0], torque[0]);
-    else add_one(c);
-    if (steady & 2u) add(c + 1, f[1], torque[1]);
-    else add_one(c + 1);
+                                         pl.list.slots[scratch.found[c].slot].history,
+                                         pl.list.slots[scratch.found[c + 1].slot].history, f, torque);
+    if (steady & 1u) add_contact(pl, c, f[0], torque[0]);
+    else contact_by_law_apart<Parts>(pl, c);
+    if (steady & 2u) add_contact(pl, c + 1, f[1], torque[1]);
+    else contact_by_law_apart<Parts>(pl, c + 1);
   }
-  return c;
+  if (c == n) return;
+  ContactForce f;
+  Vec3 torque;
+  if (steady_alone(pl.lc, scratch.found[c].geometry, scratch.weight[c], pl.list.slots[scratch.found[c].slot].history,
+                   f, torque))
+    add_contact(pl, c, f, torque);
+  else
+    contact_by_law_apart<Parts>(pl, c);
 }
 
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
@@ -252,62 +337,27 @@ template <class Parts, class Partner>
       law.exact_step &&
       (law.contact_mass ||
        (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
-  // The law of one sub-contact c at its lever and velocities `motion`, as contact_force alone
-  // computes it (inlined: the lone contacts' path).
-  const auto one_contact = [&](std::size_t c, const SubContactMotion& motion) __attribute__((always_inline)) {
-    const ContactPoint& g = scratch.found[c].geometry;
-    double m_dashpot = m_eff, nu_dashpot = nu;  // kg, N s/m: the normal dashpot's mass and coefficient
-    if (law.contact_mass) {  // damping_mass: contact: a lone contact's point, or its patch's
-      m_dashpot = scratch.found.size() == 1
-                      ? 1.0 / (point_inverse_mass(bodies.posed[p.i], bodies.mass[p.i], motion.lever, g.normal) +
-                               partner.point_inverse_mass(p.j, g.point, g.normal))
-                      : scratch.patch_mass[c];
-      nu_dashpot = Normal::pair_damping(law, m_dashpot, r_star);
-    }
-    ContactKinematics kin{g.normal,
-                          g.gap,
-                          motion.v_rel,
-                          motion.v_end,
-                          w_rel,
-                          m_dashpot,
-                          Parts::rolling && law.rolling ? motion.lever.norm() : 0.0,
-                          scratch.weight[c],
-                          nu_dashpot,
-                          nu_t,
-                          r_star,
-                          exact_step,
-                          law.contact_mass ? nullptr : &list.linear_steps[k]};  // k', c' for the pair's fixed mass
-    return contact_force<Parts>(law, kin, list.slots[scratch.found[c].slot].history, dt);
-  };
-  // Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
-  const auto add = [&](std::size_t c, const ContactForce& f, const Vec3& torque) __attribute__((always_inline)) {
-    SlotRecord& record = list.records[scratch.found[c].slot];  // always recording: the hand-over reads the point
-    record.point = scratch.found[c].geometry.point;  // member by member: an aggregate went through a copy on the stack
-    record.force = f.force;
-    record.fn = f.fn;
-    totals.force_i += f.force;
-    totals.torque_i += torque;
-    totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
-  };
-  // The same for a contact through contact_force. Without rolling the moment is +0, and adding it
-  // changes no sum's bits (a -0 term becomes +0, which the sum, never -0 itself, absorbs alike).
-  const auto add_one = [&](std::size_t c) __attribute__((always_inline)) {
-    const SubContactMotion motion =
-        sub_contact_motion(scratch.found[c].geometry.point, xi, v_centre, w_rel, v_centre_end, w_rel_end);
-    const ContactForce f = one_contact(c, motion);
-    if constexpr (Parts::rolling) add(c, f, motion.lever.cross(f.force) + f.moment);
-    else add(c, f, motion.lever.cross(f.force));
-  };
-  std::size_t c = 0;
-  // Two sub-contacts at a time where the law allows it (law_lanes.hpp), in their order.
+  const PairLaw<Partner> pl{law,
+                            bodies,
+                            partner,
+                            list,
+                            scratch,
+                            k,
+                            p,
+                            r_star,
+                            {xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt},
+                            nu_t,
+                            exact_step,
+                            totals};
+  // Through the lanes where the law allows it (law_lanes.hpp), in their order.
   constexpr bool kLanes = !Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
+  bool laned = false;
   if constexpr (kLanes) {
-    if (scratch.found.size() >= 2 && !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) &&
-        law.mu > 0.0 && nu >= 0.0)
-      c = law_in_lanes({xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt}, list,
-                       scratch, add, add_one);
+    laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0;
+    if (laned) law_in_lanes<Parts>(pl);
   }
-  for (; c < scratch.found.size(); ++c) add_one(c);
+  if (!laned)
+    for (std::size_t c = 0; c < scratch.found.size(); ++c) contact_by_law<Parts>(pl, c);
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
   totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());

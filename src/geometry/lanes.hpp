@@ -1,34 +1,73 @@
 #pragma once
-// Two doubles in one SSE2 register (GCC vector extension), for kernels that run two independent
-// evaluations in the two lanes (contact/law_lanes.hpp), each lane doing the scalar code's IEEE
-// operations in its order (no FMA: the build has none, POLYDEM_NATIVE turns contraction off), so
-// the same bits.
+// N doubles in one register (GCC vector extension): two (SSE2) for kernels that run two
+// independent evaluations side by side (contact/law_lanes.hpp), one for a lone evaluation
+// through the same code (scalar instructions). Each lane does the scalar code's IEEE operations
+// in its order (no FMA: the build has none, POLYDEM_NATIVE turns contraction off), so the same bits.
 #include <cmath>
 
 #include "polydem/math.hpp"
 
 namespace polydem::lanes {
 
-using V2 = double __attribute__((vector_size(16)));
-using Mask = long long __attribute__((vector_size(16)));  // a comparison's lanes: all ones or 0
-
-inline V2 splat(double x) { return V2{x, x}; }
-inline V2 max0(V2 a) { return a < splat(0.0) ? splat(0.0) : a; }  // std::max(a, 0.0), lane by lane
-inline V2 sqrt(V2 a) { return V2{std::sqrt(a[0]), std::sqrt(a[1])}; }
-
-struct V3 {
-  V2 x, y, z;
+template <int N>
+struct Types;
+template <>
+struct Types<2> {
+  using V = double __attribute__((vector_size(16)));
+  using Mask = long long __attribute__((vector_size(16)));  // a comparison's lanes: all ones or 0
 };
-inline V3 load(const Vec3& a, const Vec3& b) { return {V2{a.x(), b.x()}, V2{a.y(), b.y()}, V2{a.z(), b.z()}}; }
-inline V3 splat(const Vec3& a) { return {splat(a.x()), splat(a.y()), splat(a.z())}; }
-inline Vec3 lane(const V3& a, int l) { return Vec3(a.x[l], a.y[l], a.z[l]); }
-inline V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline V3 operator*(V2 s, const V3& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline V3 select(Mask m, const V3& a, const V3& b) { return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z}; }
+template <>
+struct Types<1> {
+  using V = double __attribute__((vector_size(8)));
+  using Mask = long long __attribute__((vector_size(8)));
+};
+template <class V>
+constexpr int kWidth = int(sizeof(V) / sizeof(double));
+
+// Lane l of the result is get(l).
+template <class V, class Get>
+inline V gather(const Get& get) {
+  if constexpr (kWidth<V> == 2) return V{get(0), get(1)};
+  else return V{get(0)};
+}
+template <class V>
+inline V splat(double x) {
+  return gather<V>([&](int) { return x; });
+}
+template <class V>
+inline V max0(V a) { return a < splat<V>(0.0) ? splat<V>(0.0) : a; }  // std::max(a, 0.0), lane by lane
+template <class V>
+inline V sqrt(V a) { return gather<V>([&](int l) { return std::sqrt(a[l]); }); }
+
+template <class V>
+struct Vec3Of {
+  V x, y, z;
+};
+// Lane l holds get(l), a Vec3.
+template <class V, class Get>
+inline Vec3Of<V> load(const Get& get) {
+  return {gather<V>([&](int l) { return get(l).x(); }), gather<V>([&](int l) { return get(l).y(); }),
+          gather<V>([&](int l) { return get(l).z(); })};
+}
+template <class V>
+inline Vec3Of<V> splat(const Vec3& a) { return {splat<V>(a.x()), splat<V>(a.y()), splat<V>(a.z())}; }
+template <class V>
+inline Vec3 lane(const Vec3Of<V>& a, int l) { return Vec3(a.x[l], a.y[l], a.z[l]); }
+template <class V>
+inline Vec3Of<V> operator+(const Vec3Of<V>& a, const Vec3Of<V>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class V>
+inline Vec3Of<V> operator-(const Vec3Of<V>& a, const Vec3Of<V>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class V>
+inline Vec3Of<V> operator*(V s, const Vec3Of<V>& a) { return {s * a.x, s * a.y, s * a.z}; }
+template <class V, class M>
+inline Vec3Of<V> select(M m, const Vec3Of<V>& a, const Vec3Of<V>& b) {
+  return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
+}
 // Eigen's orders for 3-vectors: dot and squaredNorm (x + y) + z, cross as in OrthoMethods.h.
-inline V2 dot(const V3& a, const V3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
-inline V3 cross(const V3& a, const V3& b) {
+template <class V>
+inline V dot(const Vec3Of<V>& a, const Vec3Of<V>& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+template <class V>
+inline Vec3Of<V> cross(const Vec3Of<V>& a, const Vec3Of<V>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
