@@ -322,7 +322,9 @@ template <class Parts, bool kLone = false>
     out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt_on,
                                     [&](double cap) { return at_end ? cap : law.mu * fp_at_slip(); }, on_slip);
     out.dissipated += out.sliding + started_spring_work(h.ft, vt, dt - dt_on);
-    h.slipping = out.sliding != 0.0;  // capped (a cap of 0 on a spring of 0 slips nothing: it cannot kink)
+    // Capped (a cap of 0 on a spring of 0 slips nothing: it cannot kink); kept only where the
+    // pushes read it, so the checkpoints of contacts without them keep the slot byte a constant 1.
+    h.slipping = kink_pushes && out.sliding != 0.0;
     if (kink_pushes && dt_on < dt && !h.slipping) [[unlikely]] {  // started and sticking: the ramp's push
       push_t = started_spring_push(vt, kt_w, dt_on, dt);
       pushed = true;
