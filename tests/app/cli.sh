@@ -20,19 +20,19 @@ expect_exit 1 "seed" "$polydem" check "$tmp/bad.yaml"
 expect_exit 0 "critical time step" "$polydem" check "$here/drop.yaml"
 # dt: auto is 0.1 x critical for polyhedra; polydem check prints the largest error measured
 # there of the cases that bound the scene's impacts (sim/step_accuracy.cpp): the cube landings
-# and, with friction, the oblique impact, 2.8e-3; accuracy: 1e-3 inverts that model: 0.0479 x
+# and, with friction, the oblique impact, 2.8e-3; accuracy: 1e-3 inverts that model: 0.0486 x
 # critical (not the spheres' exact step's 0.181).
 grep -q "expected restitution error of an impact at this step: 2.8e-03 (0.1 x critical; cube landings, oblique impact)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: no expected error at dt: auto"; }
 sed "s|^  dt: auto|  dt: auto\n  accuracy: 1e-3|; s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/accuracy.yaml"
-expect_exit 0 "(0.0479 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
-grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0479 x critical" "$tmp/out" \
+expect_exit 0 "(0.0486 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
+grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0486 x critical" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: accuracy 1e-3 not met"; }
 
 # Spheres under the linear law take its exact step: dt: auto is that model's step for 1e-3 of
-# the restitution; with friction the oblique impact's 7.0e-3 there is printed.
+# the restitution; with friction the oblique impact's 3.7e-3 there is printed.
 expect_exit 0 "(0.181 x critical) \[auto\]" "$polydem" check "$here/../../tools/bench/spheres.yaml"
-grep -q "expected restitution error of an impact at this step: 7.0e-03 (0.181 x critical; exact-step sphere-wall impacts, oblique impact)" "$tmp/out" \
+grep -q "expected restitution error of an impact at this step: 3.7e-03 (0.181 x critical; exact-step sphere-wall impacts, oblique impact)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: spheres not on the exact step's model"; }
 
 # A full run, then the same run in two halves through a checkpoint.
