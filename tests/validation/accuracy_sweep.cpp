@@ -89,11 +89,10 @@ TEST_CASE("accuracy: the exact step's error model", "[.accuracy_model]") {
 // in the third digit. The worst touch place's error jumps between neighbouring steps: the cubes
 // and Hertz by up to 2x between points 0.005 apart (from 0.05 to 0.35 each is held to the next
 // point's error too); the oblique impact in spikes narrower than 1e-4 x critical, up to 2x its
-// neighbours' (a spring that grazes its cap and slips in one step), so it is measured every
-// 1e-5 x critical up to the next point. The cube corner counts from 0.05 up: below, its error is
-// its answer's floor (5.6e-4, the instantaneous impulse against a finite contact), not the
-// step's. Hidden, a table to paste: `tests_validation "[.accuracy_models]"`;
-// test_accuracy_model.cpp checks it bounds them.
+// neighbours', so it is measured every 1e-5 x critical up to the next point, 2% added. The cube
+// corner counts from 0.05 up: below, its error is its answer's floor (5.6e-4, the instantaneous
+// impulse against a finite contact), not the step's. Hidden, a table to paste:
+// `tests_validation "[.accuracy_models]"`; test_accuracy_model.cpp checks it bounds them.
 TEST_CASE("accuracy: the polyhedra, Hertz and friction models", "[.accuracy_models]") {
   std::vector<double> fractions = {0.002, 0.005, 0.01, 0.02, 0.03, 0.04};
   for (int k = 10; k <= 70; ++k) fractions.push_back(0.005 * k);
@@ -120,6 +119,7 @@ TEST_CASE("accuracy: the polyhedra, Hertz and friction models", "[.accuracy_mode
       if (per_unit > 0 && !last)  // between this point and the next, ends excluded
         for (long i = std::lround(fractions[k] * per_unit) + 1; i < std::lround(fractions[k + 1] * per_unit); ++i)
           running = std::max(running, worst(double(i) / per_unit)), bound = std::max(bound, running);
+      if (per_unit > 0) bound *= 1.02;  // a spike's peak between samples (a scan every 1.37e-5: 0.3% over)
       const double unit = std::pow(10.0, std::floor(std::log10(bound)) - 2);
       std::printf("    {%g, %.2e},  // measured %.3e\n", fractions[k], (std::floor(bound / unit) + 1.0) * unit, errors[k]);
     }
