@@ -30,9 +30,9 @@ grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0486 x
   || { cat "$tmp/out"; fail "check: accuracy 1e-3 not met"; }
 
 # Spheres under the linear law take its exact step: dt: auto is that model's step for 1e-3 of
-# the restitution; with friction the oblique impact's 7.3e-3 there is printed.
+# the restitution; with friction the oblique impact's 3.8e-3 there is printed.
 expect_exit 0 "(0.181 x critical) \[auto\]" "$polydem" check "$here/../../tools/bench/spheres.yaml"
-grep -q "expected restitution error of an impact at this step: 7.3e-03 (0.181 x critical; exact-step sphere-wall impacts, oblique impact)" "$tmp/out" \
+grep -q "expected restitution error of an impact at this step: 3.8e-03 (0.181 x critical; exact-step sphere-wall impacts, oblique impact)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: spheres not on the exact step's model"; }
 
 # A full run, then the same run in two halves through a checkpoint.

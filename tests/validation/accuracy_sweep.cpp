@@ -85,33 +85,41 @@ TEST_CASE("accuracy: the exact step's error model", "[.accuracy_model]") {
 
 // The polyhedra, Hertz and friction models (sim/step_accuracy.cpp's kCubes, kHertz, kOblique):
 // at each fraction the largest error of the model's cases measured there, at any smaller
-// fraction (the model must not fall as the step grows) and, from 0.05 to 0.3, where the grid
-// is 0.005 apart, at the next (the worst touch place's error jumps by up to 2x between
-// neighbouring steps: a step between two points is held to the larger), rounded up in the third
-// digit. The cube corner counts from 0.05 up: below, its error is its answer's floor (5.6e-4,
-// the instantaneous impulse against a finite contact), not the step's. Hidden, a table to
-// paste: `tests_validation "[.accuracy_models]"`; test_accuracy_model.cpp checks it bounds them.
+// fraction (the model must not fall as the step grows) and up to the next fraction, rounded up
+// in the third digit. The worst touch place's error jumps between neighbouring steps: the cubes
+// and Hertz by up to 2x between points 0.005 apart (from 0.05 to 0.35 each is held to the next
+// point's error too); the oblique impact in spikes narrower than 1e-4 x critical, up to 2x its
+// neighbours', so it is measured every 1e-5 x critical up to the next point, 2% added. The cube
+// corner counts from 0.05 up: below, its error is its answer's floor (5.6e-4, the instantaneous
+// impulse against a finite contact), not the step's. Hidden, a table to paste:
+// `tests_validation "[.accuracy_models]"`; test_accuracy_model.cpp checks it bounds them.
 TEST_CASE("accuracy: the polyhedra, Hertz and friction models", "[.accuracy_models]") {
   std::vector<double> fractions = {0.002, 0.005, 0.01, 0.02, 0.03, 0.04};
-  for (int k = 10; k <= 60; ++k) fractions.push_back(0.005 * k);
-  for (double f : {0.35, 0.4, 0.45, 0.5}) fractions.push_back(f);
+  for (int k = 10; k <= 70; ++k) fractions.push_back(0.005 * k);
+  for (double f : {0.4, 0.45, 0.5}) fractions.push_back(f);
   struct Model {
     const char* name;
     std::function<double(double)> worst;
+    long per_unit = 0;  // samples per unit fraction between the points (0: the points alone)
   };
   const Model models[] = {
       {"kCubes", [](double f) { return std::max({cube_flat_error(f), cube_tilted_error(f), f >= 0.05 ? cube_landing(f) : 0.0}); }},
       {"kHertz", [](double f) { return std::max({hertz_impact(f, 0.1), hertz_impact(f, 0.5), hertz_impact(f, 0.9)}); }},
-      {"kOblique", [](double f) { return oblique_impact_worst_phase(f); }}};
-  for (const auto& [name, worst] : models) {
+      {"kOblique", [](double f) { return oblique_impact_worst_phase(f); }, 100000}};
+  for (const auto& [name, worst, per_unit] : models) {
     std::vector<double> errors;
     for (double f : fractions) errors.push_back(worst(f));
     std::printf("%s (%zu points):\n", name, fractions.size());
     double running = 0.0;
     for (std::size_t k = 0; k < fractions.size(); ++k) {
       running = std::max(running, errors[k]);
-      const bool fine = fractions[k] >= 0.05 - 1e-9 && fractions[k] < 0.3 - 1e-9;
-      const double bound = fine ? std::max(running, errors[k + 1]) : running;
+      const bool last = k + 1 == fractions.size();
+      const bool fine = fractions[k] >= 0.05 - 1e-9 && fractions[k] < 0.35 - 1e-9;
+      double bound = fine || (per_unit > 0 && !last) ? std::max(running, errors[k + 1]) : running;
+      if (per_unit > 0 && !last)  // between this point and the next, ends excluded
+        for (long i = std::lround(fractions[k] * per_unit) + 1; i < std::lround(fractions[k + 1] * per_unit); ++i)
+          running = std::max(running, worst(double(i) / per_unit)), bound = std::max(bound, running);
+      if (per_unit > 0) bound *= 1.02;  // a spike's peak between samples (a scan every 1.37e-5: 0.3% over)
       const double unit = std::pow(10.0, std::floor(std::log10(bound)) - 2);
       std::printf("    {%g, %.2e},  // measured %.3e\n", fractions[k], (std::floor(bound / unit) + 1.0) * unit, errors[k]);
     }

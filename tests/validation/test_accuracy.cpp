@@ -58,6 +58,20 @@ TEST_CASE("accuracy: sphere-sphere restitution, masses 1 : 2.74, at 0.1 and 0.3 
   CHECK(order >= 1.8);
 }
 
+TEST_CASE("accuracy: oblique impact 45 deg, no spike between 0.24 and 0.3 x critical", "[validation][second_order]") {
+  // A spring that stuck at its cap (read at n+1) takes the slip push of a kink at the step's
+  // start (law.hpp): without it the worst of 16 touch places spiked to 1.34e-2 at 0.26 and
+  // 1.38e-2 at 0.273 between neighbours of 7-8e-3. Measured every 1e-4 with it: largest 1.04e-2
+  // (0.2541, the normal force's tail at the release). Every 0.001 x critical: 61 x 16 impacts.
+  double worst = 0.0, at = 0.0;
+  for (int k = 240; k <= 300; ++k) {
+    const double e = oblique_impact_worst_phase(k / 1000.0);
+    if (e > worst) worst = e, at = k / 1000.0;
+  }
+  std::printf("oblique 45 deg: largest worst-of-16 error over 0.24-0.3 x critical %.3e at %.3f\n", worst, at);
+  CHECK(worst <= 1.1e-2);
+}
+
 TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical", "[validation][second_order]") {
   const double at_auto = oblique_impact(0.1), at_03 = oblique_impact(0.3);
   const double worst_auto = oblique_impact_worst_phase(0.1), worst_03 = oblique_impact_worst_phase(0.3);
@@ -67,7 +81,7 @@ TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical
   // where it slips, and its tangential spring starts at the touch inside the step where the
   // overlap starts (law.hpp). The tangential force kinks where the spring starts and where it
   // starts to slip: the steps there take the kink's push (tangential_spring.hpp). Measured
-  // 5.2e-6 and 4.13e-3 at one place, at the worst of 16 touch places 9.28e-4 and 9.46e-3 (1.37e-3
+  // 5.2e-6 and 4.13e-3 at one place, at the worst of 16 touch places 9.28e-4 and 7.65e-3 (1.37e-3
   // and 9.24e-3 without the pushes). The goals: 0.2% at 0.1, 1% at 0.3.
   CHECK(at_auto <= 2e-3);
   CHECK(at_03 <= 1e-2);
