@@ -330,7 +330,7 @@ template <class Parts, bool kLone = false>
       push_t = started_spring_push(vt, kt_w, dt_on, dt);
       pushed = true;
     }
-    if (pushed) [[unlikely]] out.dissipated -= push_t.dot(vt) * dt;
+    if (pushed) [[unlikely]] out.dissipated -= push_t.dot(vt) * dt;  // what the kicks take from the bodies for it
   } else if constexpr (Normal::kCurved) {
     // Hertz in the cohesion band (x = 0, so kt = 0): the tangential spring lets go.
     if (overlap == 0.0 && h.ft.squaredNorm() > 0.0) {
