@@ -6,13 +6,9 @@
 # usage: resume.sh PATH/TO/polydem
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
-sed -e "s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/drop.yaml"
-cat >> "$tmp/drop.yaml" << 'YAML'
-  probes:
-    - flow: {name: through, point: [0, 0, 0.05], normal: [0, 0, -1]}
-YAML
+source "$here/drop_lib.bash"
 same_outputs() {  # same_outputs DIR_A DIR_B: every CSV and the .pvd identical
-  for f in energy.csv driver_floor.csv driver_left.csv driver_right.csv through.csv scene.pvd; do
+  for f in "${drop_outputs[@]}"; do
     cmp "$1/$f" "$2/$f" || fail "$f differs between $1 and $2"
   done
 }

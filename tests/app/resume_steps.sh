@@ -8,15 +8,11 @@
 # usage: resume_steps.sh PATH/TO/polydem
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
-sed -e "s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/drop.yaml"
-cat >> "$tmp/drop.yaml" << 'YAML'
-  probes:
-    - flow: {name: through, point: [0, 0, 0.05], normal: [0, 0, -1]}
-YAML
+source "$here/drop_lib.bash"
 dt=$(awk 'BEGIN { printf "%.17g", 0.04 / 10476 }')  # s, the drop's step (40 ms in 10,476 steps)
 at_step() { awk -v s="$1" -v dt="$dt" 'BEGIN { printf "%.17g", (s - 0.5) * dt }'; }  # --until ending at step $1
 same() {  # reference folder, resumed folder, final checkpoint
-  for f in energy.csv driver_floor.csv driver_left.csv driver_right.csv through.csv scene.pvd "$3"; do
+  for f in "${drop_outputs[@]}" "$3"; do
     cmp -s "$1/$f" "$2/$f" || fail "stopped at step $4: $f differs from the uninterrupted run's"
   done
 }

@@ -10,6 +10,7 @@
 
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
+#include "law_cases.hpp"
 #include "pile.hpp"
 #include "sim_fixtures.hpp"
 
@@ -89,26 +90,7 @@ EqualRun run_equal(const ContactParams& config, bool exact_step, int steps) {
 }  // namespace
 
 TEST_CASE("contact: the equal-sphere kernel gives the per-sphere kernel's bits", "[contact][sphere]") {
-  struct Case {
-    const char* name;
-    ContactParams config;
-    bool exact_step;
-  };
-  ContactParams dashpot = law(1e5, 0.5, 0.4, 0.8e5);
-  dashpot.damp_tangential = 0.2;
-  ContactParams rolling = law(1e5, 0.3, 0.5, 0.8e5);
-  rolling.kr = 1e-3;
-  rolling.mur = 0.1;
-  rolling.fc = 0.05;
-  rolling.dncut = 2e-4;
-  ContactParams hertz = law(0.0, 0.5, 0.4);
-  hertz.hertz = true;
-  hertz.young = 5e6;
-  hertz.poisson = 0.3;
-  for (const Case& c : {Case{"linear, exact step", law(1e5, 0.5, 0.4, 0.8e5), true},
-                        Case{"linear, end-of-step dashpot", law(1e5, 0.5, 0.4, 0.8e5), false},
-                        Case{"tangential dashpot", dashpot, true}, Case{"rolling and cohesion", rolling, true},
-                        Case{"hertz", hertz, false}}) {
+  for (const LawCase& c : kernel_law_cases()) {
     INFO(c.name);
     const EqualRun r = run_equal(c.config, c.exact_step, 200);
     CHECK(r.equal_path);

@@ -10,6 +10,7 @@
 
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
+#include "law_cases.hpp"
 #include "pile.hpp"
 #include "sim_fixtures.hpp"
 
@@ -106,28 +107,11 @@ WallRun run_walls(const ContactParams& config, bool exact_step, int steps) {
 }  // namespace
 
 TEST_CASE("contact: the sphere-wall kernel gives the general path's bits", "[contact][sphere]") {
-  struct Case {
-    const char* name;
-    ContactParams config;
-    bool exact_step;
-  };
-  ContactParams dashpot = law(1e5, 0.5, 0.4, 0.8e5);
-  dashpot.damp_tangential = 0.2;
-  ContactParams rolling = law(1e5, 0.3, 0.5, 0.8e5);
-  rolling.kr = 1e-3;
-  rolling.mur = 0.1;
-  rolling.fc = 0.05;
-  rolling.dncut = 2e-4;
+  std::vector<LawCase> cases = kernel_law_cases();
   ContactParams contact_mass = law(1e5, 0.5, 0.4, 0.8e5);
   contact_mass.damping_contact_mass = true;
-  ContactParams hertz = law(0.0, 0.5, 0.4);
-  hertz.hertz = true;
-  hertz.young = 5e6;
-  hertz.poisson = 0.3;
-  for (const Case& c : {Case{"linear, exact step", law(1e5, 0.5, 0.4, 0.8e5), true},
-                        Case{"linear, end-of-step dashpot", law(1e5, 0.5, 0.4, 0.8e5), false},
-                        Case{"tangential dashpot", dashpot, true}, Case{"rolling and cohesion", rolling, true},
-                        Case{"damping_mass: contact", contact_mass, true}, Case{"hertz", hertz, false}}) {
+  cases.push_back({"damping_mass: contact", contact_mass, true});
+  for (const LawCase& c : cases) {
     INFO(c.name);
     const WallRun r = run_walls(c.config, c.exact_step, 400);
     CHECK(r.mismatches == 0);
