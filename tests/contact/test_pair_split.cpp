@@ -70,7 +70,7 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
   DirectSums direct;
   direct.reset(n_bodies);
   int step = 0;
-  for (int threads : {1, 2, 3, 5, 2}) {  // the team size changes between steps: cut again
+  for (int threads : {1, 2, 3, 4, 2}) {  // the team size changes between steps: cut again (a team of 5 leaks in libomp under ASan)
     const std::vector<PairTotals>& terms = step++ % 2 ? parting : touching;
     std::vector<BodySum> plain(n_bodies);  // one thread's pair-order sum
     std::vector<std::uint32_t> contacts(blocks, 0);
