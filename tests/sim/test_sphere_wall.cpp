@@ -6,7 +6,6 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
-#include <random>
 
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
@@ -50,26 +49,10 @@ struct WallRun {
 
 // 300 spheres of 5 mm thrown about a 9 cm box; `config` for particles and walls.
 WallRun run_walls(const ContactParams& config, bool exact_step, int steps) {
-  Scene scene = base_scene(config, true, Vec3(0, 0, -9.807));
-  scene.simulation.exact_step = exact_step;
-  add_side_walls(scene);
-  ShapeLibrary lib = library({sphere_shape(0.005)});
-  std::vector<BodySpec> specs;
-  std::mt19937_64 rng(11);
-  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53 - 0.5; };
-  for (int k = 0; k < 300; ++k) {  // 8 x 8 layers 1 cm apart, a slight jitter, thrown sideways and down
-    const Vec3 x(0.0105 * (k % 8 - 3.5), 0.0105 * ((k / 8) % 8 - 3.5), 0.006 + 0.0105 * (k / 64));
-    BodySpec b = body("sphere", x + 1e-4 * Vec3(u(), u(), u()), 1.5 * Vec3(u(), u(), u() - 0.5));
-    b.angular_velocity = 100.0 * Vec3(u(), u(), u());  // rad/s
-    specs.push_back(b);
-  }
-  Simulation sim(scene, lib, specs);
+  const ThrownSpheres thrown = thrown_spheres(config, exact_step, 11, 0.0105);
+  Simulation sim(thrown.scene, thrown.lib, thrown.specs);
   Bodies bodies = sim.bodies;
-  ContactSettings fast;
-  fast.particle = prepare_law(config);
-  fast.driver = prepare_law(config, &config);
-  fast.particle.exact_step = fast.driver.exact_step = exact_step;
-  fast.skin = 0.0005;  // m
+  const ContactSettings fast = kernel_settings(config, exact_step);
   ContactSettings general = fast;
   general.spheres_only = 0;  // the general path for every pair
   Drivers drivers_fast = sim.drivers, drivers_general = sim.drivers;
