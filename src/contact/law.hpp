@@ -316,8 +316,9 @@ template <class Parts, bool kLone = false>
       if (!kink_pushes || h.slipping || tangential_damping || cap <= 0.0) return;  // the dashpot's share of the last cap is not kept
       // N, the cap at n; a spring that stuck over this estimate (its stick read the force at n+1)
       // was at its cap then: the kink at n (without it, 1.34e-2 at 0.26 x critical for 8.2e-3 at 0.2601).
-      const double c0 = std::max(law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h), std::sqrt(old2));
-      push_t = (slip_start_push(std::sqrt(old2), trial, c0, cap) / trial) * trial_spring;
+      const double old = std::sqrt(old2);  // N
+      const double c0 = std::max(law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h), old);
+      push_t = (slip_start_push(old, trial, c0, cap) / trial) * trial_spring;
       pushed = true;
     };
     out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt_on,
