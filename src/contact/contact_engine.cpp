@@ -106,6 +106,37 @@ double core_reach(const Shape& s) {
   return r;
 }
 
+// What pose reads and writes, by address (ContactEngine::pose).
+struct PoseArrays {
+  const Vec3* position;  // m
+  const Quat* orientation;
+  const int* shape;
+  const double* scale;
+  const Shape* shapes;
+  const std::optional<BoxCorners>* boxes;  // per shape
+  const std::uint32_t* listed;
+  const std::uint32_t* vertex_offset;
+  Vec3* world_vertices;  // m
+  PosedBody* posed;
+};
+
+// Body b's rotation and world vertices, filled in place: no temporary pose to copy.
+[[gnu::always_inline]] inline void pose_body(const PoseArrays& a, std::uint32_t b) {
+  const Shape& s = a.shapes[a.shape[b]];
+  Vec3* v = a.world_vertices + a.vertex_offset[b];
+  PosedBody& posed = a.posed[b];
+  posed.rotation = a.orientation[b].toRotationMatrix();  // once per body and step
+  if (const std::optional<BoxCorners>& box = a.boxes[a.shape[b]])
+    pose_box(*box, a.scale[b], a.position[b], posed.rotation, v);  // the same bits in a third of the arithmetic
+  else
+    pose_vertices(s, a.scale[b], a.position[b], posed.rotation, v);
+  posed.shape = &s;
+  posed.vertices = v;
+  posed.position = a.position[b];
+  posed.radius = s.radius * a.scale[b];
+  posed.scale = a.scale[b];
+}
+
 }  // namespace
 
 ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies,
@@ -159,25 +190,18 @@ void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
 }
 
 void ContactEngine::pose(const LocalBodies& bodies) {
-  const std::vector<Vec3>& position = *bodies.position;
-  const std::vector<Quat>& orientation = *bodies.orientation;
-  const std::vector<int>& shape = *bodies.shape;
-  const std::vector<double>& scale = *bodies.scale;
-  parallel_for(listed_.size(), [&](std::size_t e) {
-    const std::uint32_t b = listed_[e];
-    const Shape& s = shapes_[shape[b]];
-    Vec3* v = world_vertices_.data() + vertex_offset_[b];
-    PosedBody& posed = posed_[b];  // filled in place: no temporary pose to copy
-    posed.rotation = orientation[b].toRotationMatrix();  // once per body and step
-    if (const std::optional<BoxCorners>& box = boxes_[shape[b]])
-      pose_box(*box, scale[b], position[b], posed.rotation, v);  // the same bits in a third of the arithmetic
-    else
-      pose_vertices(s, scale[b], position[b], posed.rotation, v);
-    posed.shape = &s;
-    posed.vertices = v;
-    posed.position = position[b];
-    posed.radius = s.radius * scale[b];
-    posed.scale = scale[b];
+  const std::size_t n = listed_.size();
+  if (n == 0) return;  // the same on every thread: no barrier skipped by some only
+  // The arrays' addresses, copied into each thread's loop: read through the vectors, each body
+  // reloaded them (Eigen's stores may alias anything), ~25 instructions a body.
+  const PoseArrays arrays{bodies.position->data(), bodies.orientation->data(), bodies.shape->data(),
+                          bodies.scale->data(),    shapes_.data(),             boxes_.data(),
+                          listed_.data(),          vertex_offset_.data(),      world_vertices_.data(),
+                          posed_.data()};
+  in_team(n >= kParallelMinItems, [&] {
+    const PoseArrays a = arrays;
+#pragma omp for schedule(static)
+    for (std::size_t e = 0; e < n; ++e) pose_body(a, a.listed[e]);
   });
 }
 

@@ -19,39 +19,4 @@ std::optional<BoxCorners> box_corners(const Shape& s) {
   return box;
 }
 
-namespace {
-// +-a +- b for the four signs, [a > 0][b > 0], each as one sum of the signed terms (a zero
-// keeps the sign Eigen's sum gives it).
-struct SignedSums {
-  double v[2][2];
-  SignedSums(double a, double b) : v{{-a - b, -a + b}, {a - b, a + b}} {}
-};
-
-// Corner (sx, sy, sz) at position: Eigen's product rs v sums rows x and y as (a + b) + c and
-// row z as a + (b + c), a, b, c the terms along the columns c0, c1, c2.
-template <int sx, int sy, int sz>
-[[gnu::always_inline]] inline Vec3 corner(const Vec3& position, const SignedSums& x01, const SignedSums& y01,
-                                          const SignedSums& z12, const Vec3& c0, const Vec3& c2) {
-  constexpr int i = sx > 0, j = sy > 0, k = sz > 0;
-  const double x = sz > 0 ? x01.v[i][j] + c2.x() : x01.v[i][j] - c2.x();
-  const double y = sz > 0 ? y01.v[i][j] + c2.y() : y01.v[i][j] - c2.y();
-  const double z = sx > 0 ? c0.z() + z12.v[j][k] : -c0.z() + z12.v[j][k];
-  return position + Vec3(x, y, z);
-}
-}  // namespace
-
-void pose_box(const BoxCorners& box, double scale, const Vec3& position, const Mat3& rotation, Vec3* out) {
-  const Mat3 rs = rotation * scale;
-  const Vec3 c0 = rs.col(0) * box.half.x(), c1 = rs.col(1) * box.half.y(), c2 = rs.col(2) * box.half.z();  // m
-  const SignedSums x01(c0.x(), c1.x()), y01(c0.y(), c1.y()), z12(c1.z(), c2.z());
-  out[box.vertex[0]] = corner<-1, -1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[1]] = corner<+1, -1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[2]] = corner<-1, +1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[3]] = corner<+1, +1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[4]] = corner<-1, -1, +1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[5]] = corner<+1, -1, +1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[6]] = corner<-1, +1, +1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[7]] = corner<+1, +1, +1>(position, x01, y01, z12, c0, c2);
-}
-
 }  // namespace polydem
