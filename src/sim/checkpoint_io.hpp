@@ -33,14 +33,28 @@ constexpr double kUnitTolerance = 1e-6;  // |q| - 1 of a stored orientation (rou
 // Streams the checkpoint to its file with the running checksum; with no file it only counts
 // bytes (the payload's size goes in the header before it). The state is never copied whole in
 // memory: a buffer of the file tripled the peak memory of a run at each checkpoint.
+// Fields go to the file through a small buffer: a stream write per field cost ~150 instructions
+// (a checkpoint of 3,375 packed cubes writes ~200,000 fields).
 struct Writer {
+  static constexpr std::size_t kBufferBytes = 1 << 16;
   std::ofstream* out = nullptr;
   std::uint64_t size = 0, checksum = fnv1a(nullptr, 0);
+  std::string buffer{};  // bytes not yet written to out, fewer than kBufferBytes after each raw
   void raw(const char* data, std::size_t n) {
     size += n;
     if (!out) return;
     checksum = fnv1a(data, n, checksum);
-    out->write(data, std::streamsize(n));
+    if (n >= kBufferBytes) {  // a whole array: straight to the file, not copied
+      flush();
+      out->write(data, std::streamsize(n));
+      return;
+    }
+    buffer.append(data, n);
+    if (buffer.size() >= kBufferBytes) flush();
+  }
+  void flush() {
+    out->write(buffer.data(), std::streamsize(buffer.size()));
+    buffer.clear();
   }
   template <class T> void pod(const T& v) { raw(reinterpret_cast<const char*>(&v), sizeof(T)); }
   void flag(const bool& b) { pod(b); }
@@ -159,6 +173,7 @@ FileSeal write_sealed(const std::string& path, const char (&magic)[kMagicBytes],
   payload(w);
   const std::uint64_t checksum = w.checksum;  // of all bytes before it
   w.pod(checksum);
+  w.flush();
   out.close();
   if (!out) throw RunError("cannot write checkpoint " + tmp);
   if (std::rename(tmp.c_str(), path.c_str()) != 0)

@@ -7,6 +7,8 @@
 namespace polydem {
 
 std::uint64_t fnv1a(const char* data, std::size_t size, std::uint64_t hash) {
+  // Unrolled: a checkpoint's bytes (written, then read back on resume) took 6 instructions each.
+#pragma GCC unroll 8
   for (std::size_t k = 0; k < size; ++k) hash = (hash ^ std::uint8_t(data[k])) * 1099511628211ull;
   return hash;
 }
