@@ -292,9 +292,6 @@ template <class Parts, bool kLone = false>
     out.fn += cohesion_force(w * law.fc, law.dncut, k.dn);
     out.dissipated += cohesion_dissipated(law, h.weight, h.gap, w, k.dn);
   }
-  // The springs' kink pushes where the exact normal step is taken (spheres, the same bits on the sphere and general
-  // paths): on polyhedra an undamped cube heap stopped ringing with them (test_rest), not understood.
-  const bool kink_pushes = law.exact_step && (kLone || k.exact_step);
   Vec3 damper = Vec3::Zero();  // N, tangential dashpot
   Vec3 push_t = Vec3::Zero();  // N, the tangential spring's push where it starts or starts to slip
   bool pushed = false;
@@ -311,6 +308,9 @@ template <class Parts, bool kLone = false>
     }
     // The linear spring is on within reach, Hertz's (kt ~ x^1/2) within the overlap.
     const double dt_on = spring_on_time(Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
+    // Where the exact normal step is taken (spheres, the same bits on the sphere and general
+    // paths): on polyhedra an undamped cube heap stopped ringing with them (test_rest), not understood.
+    const bool kink_pushes = law.exact_step && (kLone || k.exact_step);
     const auto on_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
       // Only where a spring that stuck at n starts to slip (a sliding one has no kink).
       if (!kink_pushes || h.slipping || tangential_damping || cap <= 0.0) return;  // the dashpot's share of the last cap is not kept
@@ -344,6 +344,7 @@ template <class Parts, bool kLone = false>
     out.patch += reweighted(h.mr, law.kr, h.weight, w);
     // s, the rolling spring (kr constant) is on within reach: from the touch where it starts.
     const double on = spring_on_time(reach, h.gap, k.dn, vn, dt);
+    const bool kink_pushes = law.exact_step && (kLone || k.exact_step);  // as the tangential spring's
     Vec3 push_r = Vec3::Zero();  // N m, the rolling spring's push where it starts or starts to slip
     const auto on_roll_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
       if (!kink_pushes || h.rolling_slipping || cap <= 0.0) return;  // as the tangential spring's
