@@ -270,7 +270,7 @@ template <class Parts, bool kLone = false>
   const double overlap = std::max(-k.dn, 0.0);  // m
   const double spring = Normal::spring(law, k.r_star, w, overlap);  // N
   // A contact that starts: one step back it was a stroke vn dt away, with no dashpot force.
-  if (h.gap == kNoGap) h = ContactHistory{h.ft, h.mr, 0.0, k.dn - vn * dt, w, h.slipping};
+  if (h.gap == kNoGap) h = ContactHistory{h.ft, h.mr, 0.0, k.dn - vn * dt, w, h.slipping, h.rolling_slipping};
   const law_detail::NormalForce normal = law_detail::normal_force<Normal, kLone>(law, k, h, dt, vn, spring);
   out.fn = normal.fp + normal.push;  // N
   double fp = out.fn;  // N, the compressive force the caps scale with
@@ -342,9 +342,26 @@ template <class Parts, bool kLone = false>
   }
   if (rolling) {
     out.patch += reweighted(h.mr, law.kr, h.weight, w);
-    rolling_spring(law, k, fp, dt, h, out.rolling, fp_at_slip);
-    out.dissipated += out.rolling;
+    // s, the rolling spring (kr constant) is on within reach: from the touch where it starts.
+    const double on = spring_on_time(reach, h.gap, k.dn, vn, dt);
+    const bool kink_pushes = law.exact_step && (kLone || k.exact_step);  // as the tangential spring's
+    Vec3 push_r = Vec3::Zero();  // N m, the rolling spring's push where it starts or starts to slip
+    const auto on_roll_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
+      if (!kink_pushes || h.rolling_slipping || cap <= 0.0) return;  // as the tangential spring's
+      const double old = std::sqrt(old2);  // N m
+      const double c0 = std::max(law.mur * k.lever * law_detail::last_normal_force<Normal, kLone>(law, k, h), old);  // N m
+      push_r = (slip_start_push(old, trial, c0, cap) / trial) * trial_spring;
+    };
+    rolling_spring(law, k, fp, on, h, out.rolling, fp_at_slip, on_roll_slip);
+    out.dissipated += out.rolling + started_spring_work(h.mr, k.w_rel, dt - on);
+    h.rolling_slipping = kink_pushes && out.rolling != 0.0;
+    if (kink_pushes && on < dt && !h.rolling_slipping) [[unlikely]]  // started and sticking: the ramp's push
+      push_r = started_spring_push(k.w_rel, w * law.kr, on, dt);
     out.moment = h.mr;
+    if (push_r != Vec3::Zero()) [[unlikely]] {
+      out.moment += push_r;
+      out.dissipated -= push_r.dot(k.w_rel) * dt;  // what the kicks take from the bodies for it
+    }
   }
   h.fd = fd;
   h.gap = k.dn;

@@ -58,6 +58,7 @@ struct Writer {
   }
   template <class T> void pod(const T& v) { raw(reinterpret_cast<const char*>(&v), sizeof(T)); }
   void flag(const bool& b) { pod(b); }
+  void byte(const std::uint8_t& v, std::uint8_t) { pod(v); }
   template <class T> void array(const std::vector<T>& v) {
     pod<std::uint64_t>(v.size());
     raw(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
@@ -84,6 +85,10 @@ struct Reader {
     pod(v);
     if (v > 1) fail("a flag byte holds " + std::to_string(v) + " at byte " + std::to_string(at - 1));
     b = v;
+  }
+  void byte(std::uint8_t& v, std::uint8_t largest) {
+    pod(v);
+    if (v > largest) fail("a state byte holds " + std::to_string(v) + " at byte " + std::to_string(at - 1));
   }
   void count(std::uint64_t n, std::size_t entry_bytes, const std::string& what) const {
     if (n > left() / entry_bytes)
@@ -114,10 +119,11 @@ struct Reader {
 template <class IO, class Key, class Slot, class Record>
 void slot_fields(IO& io, Key& f, Slot& s, Record& r, bool last_step_fields = true) {
   // The byte formats 03-06 kept constant at 1 (only active slots are stored) holds whether the
-  // tangential spring stuck at the last step: files of older builds resume as stuck.
-  bool stuck = !s.history.slipping;
-  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.flag(stuck);
-  if constexpr (!std::is_const_v<Slot>) s.history.slipping = !stuck;
+  // tangential spring stuck at the last step (1) and, + 2, whether the rolling spring slipped:
+  // files of older builds resume as stuck.
+  std::uint8_t state = std::uint8_t((s.history.slipping ? 0 : 1) + (s.history.rolling_slipping ? 2 : 0));
+  io.pod(f.type); io.pod(f.a); io.pod(f.b); io.byte(state, 3);
+  if constexpr (!std::is_const_v<Slot>) s.history.slipping = !(state & 1), s.history.rolling_slipping = state & 2;
   io.pod(s.history.ft); io.pod(s.history.mr); io.pod(r.point); io.pod(r.force); io.pod(r.fn);
   io.pod(s.history.gap);  // the last gap, stored twice: format 03 has it here and not below
   if (!last_step_fields) return;

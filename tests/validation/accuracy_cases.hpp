@@ -8,6 +8,7 @@
 
 #include "corner_reference.hpp"
 #include "oblique_reference.hpp"
+#include "rolling_reference.hpp"
 
 namespace polydem::validation::accuracy {
 
@@ -150,6 +151,39 @@ inline double oblique_impact(double fraction, bool exact = true, double phase = 
 inline double oblique_impact_worst_phase(double fraction, int phases = 16) {
   double worst = 0.0;
   for (int k = 0; k < phases; ++k) worst = std::max(worst, oblique_impact(fraction, true, double(k) / phases));
+  return worst;
+}
+
+// Sphere landing at 0.2 m/s spinning at 20 rad/s on a wall with rolling resistance (kr = 0.2 kn
+// R^2, mur 0.1) and no friction: the rolling spring slips from the touch, sticks and slips out as
+// the normal force falls. Error of the spin after, against the RK4 reference, / the spin before.
+// `phase` as in sphere_wall_error (negative: a gap of 0.1 um).
+inline double rolling_impact(double fraction, double phase = -1.0) {
+  const double v = 0.2, w0 = 20.0, kr = 0.2 * kKn * kRadius * kRadius, mur = 0.1;  // m/s, rad/s, N m/rad, -
+  ContactParams config = law(kKn, kEn);
+  config.kr = kr, config.mur = mur;
+  Scene scene = base_scene(config, true);
+  const ShapeLibrary lib = library({sphere_shape(kRadius)});
+  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {0, 0, -v})};
+  specs[0].angular_velocity = Vec3(0, w0, 0);
+  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * v * *scene.simulation.dt;
+  Simulation sim(scene, lib, specs);
+  run_impact(
+      sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
+      [&] { return sim.bodies.velocity[0].z(); });
+  static const double ref = [&] {  // the same for every step size: computed once
+    const double m = sim.bodies.mass[0], z = prepare_law(scene.forces.contact.config).alpha_n;
+    const RollingContact reference{m, 0.4 * m * kRadius * kRadius, 2.0 * z * std::sqrt(kKn * m), kRadius, kKn, kr, mur};
+    return reference.extrapolated(w0, v, ClampedImpact{z, std::sqrt(kKn / m), v, m}.release_time());
+  }();
+  return std::abs(sim.bodies.angular_velocity[0].y() - ref) / w0;
+}
+
+// The largest error over `phases` touch places in the step (rolling_impact).
+inline double rolling_impact_worst_phase(double fraction, int phases = 16) {
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k) worst = std::max(worst, rolling_impact(fraction, double(k) / phases));
   return worst;
 }
 

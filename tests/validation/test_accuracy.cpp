@@ -206,3 +206,17 @@ TEST_CASE("accuracy: exact step, sphere-sphere restitution, masses 1 : 2.74, at 
   CHECK(at_03 <= 5e-3);    // measured 1.7e-3
   check_second_order(run, 5e-3);
 }
+
+TEST_CASE("accuracy: rolling resistance, a spinning sphere's landing against RK4, second order", "[validation][second_order]") {
+  // The rolling spring is loaded from the touch where it starts, and its kinks (where it starts,
+  // where one that stuck starts to slip) take their pushes as the tangential spring's (law.hpp).
+  // Worst of 16 touch places, measured: 1.65e-3 at 0.1, 3.66e-4 at 0.05 (order 2.17), 3.95e-2 at
+  // 0.3; loaded over the whole step from the touch (main at 372a7f8) 5.88e-2, 2.97e-2 (order 0.99), 0.136.
+  const double at_auto = rolling_impact_worst_phase(0.1), at_005 = rolling_impact_worst_phase(0.05);
+  const double at_03 = rolling_impact_worst_phase(0.3), order = std::log2(at_auto / at_005);
+  std::printf("rolling: worst of 16 touch places %.2e at 0.1, %.2e at 0.05 (order %.2f), %.2e at 0.3\n", at_auto, at_005,
+              order, at_03);
+  CHECK(at_auto <= 2e-3);
+  CHECK(order >= 1.8);
+  CHECK(at_03 <= 4.5e-2);  // the goal of 1% is not reached
+}

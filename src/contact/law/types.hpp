@@ -38,6 +38,7 @@ struct ContactHistory {
   double gap = kNoGap;     // m (negative: overlap)
   double weight = 1.0;     // -, patch share
   bool slipping = false;   // the tangential spring was capped (law.hpp: a push only where a stuck one starts to slip)
+  bool rolling_slipping = false;  // the rolling spring was capped, likewise
 };
 
 struct ContactKinematics {
