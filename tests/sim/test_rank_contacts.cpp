@@ -1,7 +1,7 @@
 // The distributed step without MPI: ranks as threads joined by an in-process link. The pile
 // of 150 cubes and spheres (walls, fast spins, many rebuilds) stepped over 2 and 3 ranks ends
 // on the bits of one process on every rank: bodies, driver reactions, the energy ledger, the
-// contact count and, after the table is gathered, the stored energy.
+// contact count and a CSV row's energies (each rank's part, summed exactly: no state gathered).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -31,8 +31,10 @@ struct Outcome {
 };
 
 Outcome outcome(Simulation& sim) {
+  sim.sum_energy();  // a CSV row's energies from each rank's own bodies and pairs: no state gathered
+  const EnergyRow row = sim.energy();
   sim.gather_state(true);
-  Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
+  Outcome o{sim.bodies, sim.ledger, row, {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
   if (const RankContacts* r = sim.rank_contacts()) o.cuts = r->cuts(), o.share = r->load_share();
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     o.driver_force.push_back(sim.drivers[j].force);
@@ -72,6 +74,9 @@ void require_same(const Outcome& a, const Outcome& b) {
   CHECK(a.energy.contacts == b.energy.contacts);
   CHECK(same_bits(a.energy.elastic, b.energy.elastic));
   CHECK(same_bits(a.energy.elastic_parts.tangential, b.energy.elastic_parts.tangential));
+  CHECK(same_bits(a.energy.kinetic, b.energy.kinetic));
+  CHECK(same_bits(a.energy.rotational, b.energy.rotational));
+  CHECK(same_bits(a.energy.gravity_work, b.energy.gravity_work));
 }
 
 }  // namespace
