@@ -219,7 +219,7 @@ class OutputWriter {
     const OutputSettings& out = sim_.scene().output;
     const bool whole = sim_.external() || !out.flow_probes.empty() || !out.repose_probes.empty() || !sim_.distributed();
     if (whole) sim_.gather_state();  // the fluid's row and the probes read every body
-    else sim_.sum_energy();          // each rank's part of the energies, reduced exactly
+    sim_.sum_energy();               // each rank's part of the energies, reduced exactly
     if (!energy_) return whole;
     const EnergyRow e = sim_.energy();
     if (fluid_) fluid_->row();

@@ -135,7 +135,6 @@ void Simulation::gather_state(bool onto_every_rank) {
   if (!ranks_) return;
   ranks_->sync_bodies(bodies, !onto_every_rank);
   ranks_->gather_table(*engine_, !onto_every_rank);
-  sum_energy();
 }
 
 void Simulation::sum_energy() {

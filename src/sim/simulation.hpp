@@ -57,7 +57,7 @@ class Simulation {
   void close_ledger();
 
   // A CSV row's energies; distributed runs: as the last sum_energy() summed them (a
-  // collective: each rank's owned bodies and pairs, reduced exactly; gather_state calls it).
+  // collective: each rank's owned bodies and pairs, reduced exactly: no state gathered).
   EnergyRow energy() const;
   void sum_energy();
   const TimeStepEstimate& time_step() const { return dt_estimate_; }
