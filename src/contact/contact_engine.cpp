@@ -483,25 +483,27 @@ ExactEnergy ContactEngine::open_energy(const std::vector<std::uint8_t>* ghost) c
   return sum;
 }
 
-// Sums the active slots in order: the same bits for any thread count.
+// Adds the active slots of the pairs whose lower body is not a ghost (exactly: any order).
 // r_star(k): m, pair k's curvature radius (Hertz).
 template <class RStar>
-static void add_stored_energy(const PairList& list, const LawParams& law, const RStar& r_star_of, StoredParts& total) {
+static void add_stored_energy(const PairList& list, const LawParams& law, const RStar& r_star_of,
+                              const std::vector<std::uint8_t>* ghost, ExactStored& total) {
   for (std::size_t k = 0; k < list.size(); ++k) {
+    if (ghost && (*ghost)[list.pairs[k].i]) continue;
     const double r_star = law.normal == NormalModel::hertz ? r_star_of(list.pairs[k]) : 0.0;  // m
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.active[s]) total += stored_parts(law, list.slots[s].history, r_star);
+      if (list.active[s]) total.add(stored_parts(law, list.slots[s].history, r_star));
   }
 }
 
-StoredParts ContactEngine::elastic(const Drivers& drivers) const {
-  StoredParts total;  // J
+ExactStored ContactEngine::elastic(const Drivers& drivers, const std::vector<std::uint8_t>* ghost) const {
+  ExactStored total;  // J
   add_stored_energy(body_list_, settings_.particle, [&](BodyPair p) {
     return radius_[p.i] * radius_[p.j] / (radius_[p.i] + radius_[p.j]);
-  }, total);
+  }, ghost, total);
   add_stored_energy(driver_list_, settings_.driver, [&](BodyPair p) {
     return drivers.r_star(p.j, radius_[p.i]);
-  }, total);
+  }, ghost, total);
   return total;
 }
 

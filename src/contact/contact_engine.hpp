@@ -119,8 +119,9 @@ class ContactEngine {
   ExactEnergy& flushed() { return flushed_; }
   const ExactEnergy& flushed() const { return flushed_; }
   // J, stored in the springs of the active contacts now (from their histories: output steps
-  // only), over this process's lists.
-  StoredParts elastic(const Drivers& drivers) const;
+  // only), over this process's lists, summed exactly (any split over ranks gives one sum);
+  // `ghost` as above.
+  ExactStored elastic(const Drivers& drivers, const std::vector<std::uint8_t>* ghost = nullptr) const;
   const PairList& body_pairs() const { return body_list_; }
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }

@@ -75,4 +75,15 @@ struct ExactEnergy {
   static ExactEnergy from_words(const std::vector<std::uint64_t>& w, std::uint64_t terms);
 };
 
+// The springs' stored energy by part (energy.csv's elastic_*), each summed exactly.
+struct ExactStored {
+  ExactSum normal, tangential, rolling;
+  void add(const StoredParts& e) {
+    normal.add(e.normal);
+    tangential.add(e.tangential);
+    rolling.add(e.rolling);
+  }
+  StoredParts value() const { return {normal.value(), tangential.value(), rolling.value()}; }
+};
+
 }  // namespace polydem

@@ -21,6 +21,7 @@
 #include "sim/local_store.hpp"
 #include "sim/rank_energy.hpp"
 #include "sim/rank_link.hpp"
+#include "sim/state_energy.hpp"
 
 namespace polydem {
 
@@ -42,6 +43,10 @@ class RankContacts {
   // all bodies, whose lists hold the table of histories (read at a forced rebuild, written by
   // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
+  // Whether the next steps share the drivers' reactions (the servo and the driver work of a
+  // moving driver read them each step, output only at its rows); when not, only the contact
+  // count, and the drivers keep their last reactions.
+  void want_reactions(bool wanted) { reactions_wanted_ = wanted; }
   // Rebuilds at the next step from `whole`'s lists (a checkpoint read: the table on every rank).
   void force_rebuild() { forced_ = true; }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
@@ -73,10 +78,9 @@ class RankContacts {
   // The ledger's contact energies of every rank's pairs since the last take (J; a collective):
   // ContactEngine::take_energy on each rank, summed exactly.
   EnergyParts take_energy();
-  // What take_energy would return, changing nothing (a collective; Simulation::gather_state),
-  // then read on any rank by open_energy.
-  void sum_open_energy();
-  const EnergyParts& open_energy() const { return open_energy_; }
+  // A CSV row's energies over every rank (a collective): each rank's owned bodies and the
+  // pairs it answers for, and what take_energy would return, changing nothing.
+  StateEnergy state_energy(const Bodies& bodies, const Drivers& drivers) const;
   // The energies of the set-up's contact stage: not stepped, not counted (this rank's alone).
   void drop_energy();
   std::size_t contacts() const { return contacts_; }    // active sub-contacts, every rank's pairs
@@ -126,10 +130,10 @@ class RankContacts {
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   bool forced_ = true;
   bool rebuild_asked_ = false;
+  bool reactions_wanted_ = true;
   std::size_t rebuilds_ = 0;
   LinkCounts rebuild_traffic_;
   ExactEnergy taken_;        // J, the ended contacts' energies of earlier engines (rebuilds) since the last take_energy
-  EnergyParts open_energy_;  // J, at the last sum_open_energy
   std::size_t contacts_ = 0;
 };
 

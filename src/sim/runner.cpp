@@ -213,10 +213,14 @@ class OutputWriter {
     progress_.frames.push_back(f);
   }
 
-  void energy_row() {
-    if (!sim_.scene().output.csv_every) return;
-    sim_.gather_state();  // the energies and probes read every rank's bodies and contacts
-    if (!energy_) return;
+  // Returns whether the state was gathered (one process: always whole).
+  bool energy_row() {
+    if (!sim_.scene().output.csv_every) return false;
+    const OutputSettings& out = sim_.scene().output;
+    const bool whole = sim_.external() || !out.flow_probes.empty() || !out.repose_probes.empty() || !sim_.distributed();
+    if (whole) sim_.gather_state();  // the fluid's row and the probes read every body
+    sim_.sum_energy();               // each rank's part of the energies, reduced exactly
+    if (!energy_) return whole;
     const EnergyRow e = sim_.energy();
     if (fluid_) fluid_->row();
     energy_->row({sim_.time(), e.kinetic, e.rotational, e.elastic, e.dissipated, e.gravity_work, e.driver_work,
@@ -230,6 +234,7 @@ class OutputWriter {
                               d.torque.z(), x.x(), x.y(), x.z()});
     }
     probes_->row();
+    return whole;
   }
 
   std::string checkpoint(Simulation& sim) {
@@ -392,7 +397,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const ContactOperator& law = sim.scene().forces.contact;
   const double kn = sim.time_step().kn_particle, kn_driver = sim.time_step().kn_driver;  // N/m
   OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
-  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check, after their gather_state
+  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check that gathered the state
     if (!law.present || !io) return;
     const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
                                          kn_driver, sim.time());
@@ -412,6 +417,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     const bool recorded = (out.contacts && vtk.due_at(t_next, dt)) || ckpt.due_at(t_next, dt) || next == last_step ||
                           stopping;
     sim.engine().record_contacts(recorded);
+    sim.want_driver_reactions(recorded || csv.due_at(t_next, dt));  // the driver CSVs and checkpoints read them
     try {
       const auto step_start = Clock::now();
       sim.step();
@@ -435,10 +441,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       check_overlaps();
     }
     if (vtk.due(sim.time(), dt)) writer.frame();
-    if (csv.due(sim.time(), dt)) {
-      writer.energy_row();
-      check_overlaps();
-    }
+    if (csv.due(sim.time(), dt) && writer.energy_row()) check_overlaps();  // distributed: its pairs on rank 0 if gathered
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
     const bool interrupted = sim.any_rank(g_interrupted);  // a collective: every rank stops at the same step
     if (interrupted && !recorded) {  // the checkpoint needs the contacts' records: one more step

@@ -83,6 +83,10 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
   if (link && link->ranks() > 1) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
+  for (std::uint32_t j = 0; j < drivers.size(); ++j) {
+    const MotionSettings& m = drivers.motion(j);
+    drivers_move_ |= m.rotates || m.velocity != Vec3::Zero() || m.force || m.pressure;
+  }
   const bool contacts = scene.forces.contact.present;
   const ImpactModel model = contacts ? impact_model(cs, bodies, library_.shapes, !drivers.empty()) : ImpactModel{};
   dt_estimate_ = estimate_time_step(bodies, library_.shapes, cs.particle, drivers.empty() ? nullptr : &cs.driver,
@@ -96,7 +100,9 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   if (!std::isfinite(dt_) || dt_ <= 0.0)
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
                                    "cannot choose a time step automatically for this scene; give simulation.dt"));
-  for (std::size_t b = 0; b < bodies.size(); ++b) ledger.initial_mass_moment += bodies.mass[b] * bodies.position[b];
+  StateEnergy start;  // the mass moment summed as energy() sums it (exactly): no gravity work at t = 0
+  for (std::size_t b = 0; b < bodies.size(); ++b) start.add_body(bodies, b);
+  ledger.initial_mass_moment = start.mass_moment();
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   external_forces();
@@ -129,7 +135,19 @@ void Simulation::gather_state(bool onto_every_rank) {
   if (!ranks_) return;
   ranks_->sync_bodies(bodies, !onto_every_rank);
   ranks_->gather_table(*engine_, !onto_every_rank);
-  if (scene_.forces.contact.present) ranks_->sum_open_energy();
+}
+
+void Simulation::sum_energy() {
+  if (ranks_) summed_ = ranks_->state_energy(bodies, drivers);
+}
+
+StateEnergy Simulation::state_energy() const {
+  if (ranks_) return summed_;
+  StateEnergy s;
+  for (std::size_t b = 0; b < bodies.size(); ++b) s.add_body(bodies, b);
+  s.elastic = engine_->elastic(drivers);
+  s.open = engine_->open_energy(nullptr);
+  return s;
 }
 
 void Simulation::close_ledger() {
@@ -213,25 +231,20 @@ void Simulation::step() {
 
 EnergyRow Simulation::energy() const {
   EnergyRow e{};
-  Vec3 mass_moment = Vec3::Zero();
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    e.kinetic += 0.5 * bodies.mass[b] * bodies.velocity[b].squaredNorm();
-    const Vec3& L = bodies.angular_momentum[b];
-    e.rotational += 0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum();
-    mass_moment += bodies.mass[b] * bodies.position[b];
-  }
-  e.elastic_parts = engine_->elastic(drivers);
+  const StateEnergy s = state_energy();
+  e.kinetic = s.kinetic.value();
+  e.rotational = s.rotational.value();
+  e.elastic_parts = s.elastic.value();
   e.elastic = e.elastic_parts.normal + e.elastic_parts.tangential + e.elastic_parts.rolling;
-  // J, since the ledger last closed (distributed: summed by the last gather_state)
-  EnergyParts open;
-  if (scene_.forces.contact.present) open = ranks_ ? ranks_->open_energy() : engine_->open_energy(nullptr).value();
+  // J, since the ledger last closed
+  const EnergyParts open = scene_.forces.contact.present ? s.open.value() : EnergyParts{};
   e.dissipated = ledger.dissipated + open.net;
   e.dissipated_sliding = ledger.sliding + open.sliding;
   e.dissipated_rolling = ledger.rolling + open.rolling;
   e.patch_work = ledger.patch_work + open.patch;
   // the dashpots (normal, tangential) and cohesion: what the other two mechanisms leave
   e.dissipated_dashpot = e.dissipated + e.patch_work - e.dissipated_sliding - e.dissipated_rolling;
-  e.gravity_work = gravity_.dot(mass_moment - ledger.initial_mass_moment);
+  e.gravity_work = gravity_.dot(s.mass_moment() - ledger.initial_mass_moment);
   e.driver_work = ledger.driver_work;
   e.external_work = ledger.external_work;
   e.contacts = contacts();

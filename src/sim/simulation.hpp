@@ -56,7 +56,10 @@ class Simulation {
   static bool ledger_closes(std::int64_t step) { return step % kLedgerSteps == 0; }
   void close_ledger();
 
+  // A CSV row's energies; distributed runs: as the last sum_energy() summed them (a
+  // collective: each rank's owned bodies and pairs, reduced exactly: no state gathered).
   EnergyRow energy() const;
+  void sum_energy();
   const TimeStepEstimate& time_step() const { return dt_estimate_; }
   double dt() const { return dt_; }
   double time() const { return double(step_) * dt_; }
@@ -98,6 +101,11 @@ class Simulation {
   std::size_t ghost_bodies() const { return ranks_ ? ranks_->ghosts() : 0; }
   const RankContacts* rank_contacts() const { return ranks_.get(); }  // null: one process
   const RankLink* link() const { return ranks_ ? link_ : nullptr; }  // null: one process
+  // Distributed runs: the next step's driver reactions are read (output after it); a moving
+  // driver's are read every step (servo, driver work), a fixed one's only then.
+  void want_driver_reactions(bool read) {
+    if (ranks_) ranks_->want_reactions(read || drivers_move_);
+  }
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
   std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
   std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }
@@ -106,6 +114,7 @@ class Simulation {
   void external_forces();
   void driver_work_half();
   void contact_stage();
+  StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 
   Scene scene_;
   ShapeLibrary library_;
@@ -118,6 +127,8 @@ class Simulation {
   std::unique_ptr<ExternalForces> external_;
   const RankLink* link_ = nullptr;
   std::unique_ptr<RankContacts> ranks_;  // distributed runs: this rank's contact stage
+  StateEnergy summed_;                   // distributed runs: at the last sum_energy
+  bool drivers_move_ = false;            // a driver translates, turns or is a servo
 };
 
 // Index of the first body whose state is not finite, or -1.

@@ -1,7 +1,7 @@
 // The distributed step without MPI: ranks as threads joined by an in-process link. The pile
 // of 150 cubes and spheres (walls, fast spins, many rebuilds) stepped over 2 and 3 ranks ends
 // on the bits of one process on every rank: bodies, driver reactions, the energy ledger, the
-// contact count and, after the table is gathered, the stored energy.
+// contact count and a CSV row's energies (each rank's part, summed exactly: no state gathered).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -31,8 +31,10 @@ struct Outcome {
 };
 
 Outcome outcome(Simulation& sim) {
+  sim.sum_energy();  // a CSV row's energies from each rank's own bodies and pairs: no state gathered
+  const EnergyRow row = sim.energy();
   sim.gather_state(true);
-  Outcome o{sim.bodies, sim.ledger, sim.energy(), {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
+  Outcome o{sim.bodies, sim.ledger, row, {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
   if (const RankContacts* r = sim.rank_contacts()) o.cuts = r->cuts(), o.share = r->load_share();
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     o.driver_force.push_back(sim.drivers[j].force);
@@ -72,6 +74,9 @@ void require_same(const Outcome& a, const Outcome& b) {
   CHECK(a.energy.contacts == b.energy.contacts);
   CHECK(same_bits(a.energy.elastic, b.energy.elastic));
   CHECK(same_bits(a.energy.elastic_parts.tangential, b.energy.elastic_parts.tangential));
+  CHECK(same_bits(a.energy.kinetic, b.energy.kinetic));
+  CHECK(same_bits(a.energy.rotational, b.energy.rotational));
+  CHECK(same_bits(a.energy.gravity_work, b.energy.gravity_work));
 }
 
 }  // namespace
@@ -112,4 +117,35 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
     CHECK(held < std::size_t(n) * one.bodies.size());  // 272 of 300 at 2 ranks, 361 of 450 at 3: not replicated
     CHECK(fewest < one.bodies.size());  // an end box holds its share and the ghosts near its cut
   }
+}
+
+TEST_CASE("Driver reactions from ranks' sorted runs are summed in one process's (body, driver) order") {
+  Pile p;  // its floor and four side walls
+  Drivers drivers(p.scene.drivers), expect(p.scene.drivers);
+  std::mt19937_64 rng(3);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53 - 0.5; };
+  std::vector<ReactionShare> sorted;  // (body, driver) increasing, as one process sums them
+  for (std::uint32_t i = 0; i < 400; ++i)
+    for (std::uint32_t j = 0; j < drivers.size(); ++j)
+      if (rng() % 3 == 0) sorted.push_back({i, j, {u(), u() * 1e-9, u() * 1e6}, {u(), u(), u()}});
+  for (std::size_t j = 0; j < expect.size(); ++j) expect[j].force = expect[j].torque = Vec3::Zero();
+  for (const ReactionShare& r : sorted) {
+    expect[r.j].force -= Vec3(r.force_i[0], r.force_i[1], r.force_i[2]);
+    expect[r.j].torque += Vec3(r.torque_j[0], r.torque_j[1], r.torque_j[2]);
+  }
+  for (int ranks : {1, 2, 3, 7}) {
+    std::vector<std::vector<ReactionShare>> runs(ranks);  // each rank's share keeps the order
+    for (const ReactionShare& r : sorted) runs[rng() % ranks].push_back(r);
+    std::vector<ReactionShare> joined;
+    for (const auto& run : runs) joined.insert(joined.end(), run.begin(), run.end());
+    add_reactions(joined, drivers);
+    for (std::size_t j = 0; j < drivers.size(); ++j) {
+      INFO(ranks << " ranks, driver " << j);
+      CHECK(same_bits(std::vector<Vec3>{drivers[j].force}, std::vector<Vec3>{expect[j].force}));
+      CHECK(same_bits(std::vector<Vec3>{drivers[j].torque}, std::vector<Vec3>{expect[j].torque}));
+    }
+  }
+  std::shuffle(sorted.begin(), sorted.end(), rng);  // no runs at all: still the same sums
+  add_reactions(sorted, drivers);
+  CHECK(same_bits(std::vector<Vec3>{drivers[0].force}, std::vector<Vec3>{expect[0].force}));
 }
