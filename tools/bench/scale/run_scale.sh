@@ -8,7 +8,9 @@
 # (ROUNDS pairs, alternated: the machine's speed drifts) and stated as the ratio of the pair's
 # costs. Peak memory is the longer run's. Prints and appends to tools/bench/scale/results.csv:
 # "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body".
-# usage: [COMMIT=label] tools/bench/scale/run_scale.sh [POLYDEM] [STEPS] [ROUNDS] [N_SIDE ...]
+# SHAPE=cube: scene.py's lattice of rounded cubes, face to face, against 3,375 of them (rows in
+# results_cube.csv).
+# usage: [COMMIT=label] [SHAPE=cube] tools/bench/scale/run_scale.sh [POLYDEM] [STEPS] [ROUNDS] [N_SIDE ...]
 #        (defaults: build/polydem 200 3 30 60 100; 15 is the reference size)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -19,7 +21,8 @@ shift 3 || shift $#
 sides=("${@:-30 60 100}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-csv=tools/bench/scale/results.csv
+export SHAPE=${SHAPE:-sphere}  # read by scene.py
+csv=tools/bench/scale/results$([ "$SHAPE" = sphere ] || echo "_$SHAPE").csv
 [ -s "$csv" ] || echo "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body" > "$csv"
 commit=${COMMIT:-$(git rev-parse --short HEAD)}  # COMMIT: the label of another build
 
@@ -37,7 +40,7 @@ cpu_seconds() {  # n steps -> user + system CPU seconds of one run of n^3 sphere
 
 run_side() {  # n steps -> "us_per_particle_step peak_kB": the CPU time of `steps` more steps, per body-step
   local n=$1 steps=$2 short long peak
-  python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" > "$work/scene_$n.yaml"
+  python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" lattice "$work/bodies_$n.csv" > "$work/scene_$n.yaml"
   read -r short _ <<< "$(cpu_seconds "$n" "$steps")"
   read -r long peak <<< "$(cpu_seconds "$n" $((2 * steps)))"
   echo "$(python3 -c "print(round(1e6 * ($long - $short) / ($steps * $n ** 3), 4))") $peak"
