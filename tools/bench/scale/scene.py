@@ -8,7 +8,13 @@ ORDER `lattice` (default) numbers the bodies layer by layer, so neighbours sit n
 neighbours anywhere in memory), in a body table TABLE (a CSV the scene names; its path as
 the scene will read it, relative to the scene's folder or absolute). Cubes are always listed
 in a table (the lattice generator spaces bodies by their bounding diameter, 16.6 mm for a cube).
-usage: [SHAPE=sphere|cube] python3 scene.py N_SIDE SHAPE_LIBRARY [lattice | shuffled] [TABLE] > scene.yaml"""
+REST=1: each layer sits on the one below at the static overlap of the weight it carries (the
+law's linear kn), side neighbours 1 um apart (list pairs, never in contact): at rest from the
+first step, one contact a body (floor or body below) at every size. Without it the lattice
+starts untouched and compresses from the floor up (a wave of ~8 layers a ms: a larger N is
+counted with fewer bodies in contact in its first steps), and the side contacts at zero
+overlap come and go with the coordinates' rounding.
+usage: [SHAPE=sphere|cube] [REST=1] python3 scene.py N_SIDE SHAPE_LIBRARY [lattice | shuffled] [TABLE] > scene.yaml"""
 import os
 import random
 import sys
@@ -19,14 +25,34 @@ table = sys.argv[4] if len(sys.argv) > 4 else None
 shape = os.environ.get("SHAPE", "sphere")
 if shape not in ("sphere", "cube") or order not in ("lattice", "shuffled"):
     sys.exit(f"scene.py: SHAPE must be sphere or cube (got {shape}), ORDER lattice or shuffled (got {order})")
-if table is None and (order == "shuffled" or shape == "cube"):
-    sys.exit("scene.py: a shuffled order or SHAPE=cube needs TABLE, the body table's path")
+if table is None and (order == "shuffled" or shape == "cube" or os.environ.get("REST") == "1"):
+    sys.exit("scene.py: a shuffled order, SHAPE=cube or REST=1 needs TABLE, the body table's path")
 contact = "contact_sphere" if shape == "sphere" else "contact_polyhedron"
-side = n * 0.01 + 1e-9  # m, n spheres of diameter 1 cm, a hair more: the lattice fills the box, centred
+rest = os.environ.get("REST") == "1"
+kn, g, density, half = 1.0e5, 9.807, 2700.0, 0.005  # N/m, m/s^2, kg/m^3, m: the scene's law, gravity, bodies
+pitch = 0.01 + (1e-6 if rest else 0.0)  # m, side neighbours' centres
+side = n * pitch + 1e-9  # m, n bodies of 1 cm across, a hair more: the lattice fills the box, centred
+
+
+def library_volume():  # m^3, the shape's volume in the .shp library
+    lines = open(library).read().split("\n")
+    at = lines.index(f"name {shape}")
+    return next(float(l.split()[1]) for l in lines[at:] if l.startswith("volume "))
+
+
+def layer_heights():  # m, centre height of each layer: resting on the one below at kn's static overlap
+    if not rest:
+        return [half + 0.01 * k + 0.5e-9 for k in range(n)]  # the lattice generator's centred sites
+    weight = density * library_volume() * g  # N, one body's
+    z, heights = half - n * weight / kn, []
+    for k in range(n):
+        heights.append(z)
+        z += 2 * half - (n - k - 1) * weight / kn
+    return heights
 
 
 def bodies_block():
-    if order == "lattice" and shape == "sphere":
+    if order == "lattice" and shape == "sphere" and not rest:
         return f"""  - generate: lattice
     shapes: sphere
     count: {n ** 3}
@@ -35,10 +61,11 @@ def bodies_block():
     sites = [(i, j, k) for k in range(n) for j in range(n) for i in range(n)]
     if order == "shuffled":
         random.Random(1).shuffle(sites)
-    at = lambda i: repr(0.005 + 0.01 * i + 0.5e-9)  # m, the lattice generator's centred site
+    at = lambda i: repr(half + pitch * i + 0.5e-9)  # m, the lattice generator's centred site
+    z = [repr(h) for h in layer_heights()]
     with open(table, "w") as out:
         out.write("shape,x,y,z\n")
-        out.writelines(f"{shape},{at(i)},{at(j)},{at(k)}\n" for i, j, k in sites)
+        out.writelines(f"{shape},{at(i)},{at(j)},{z[k]}\n" for i, j, k in sites)
     return f"  - {{file: {table}, density: 2700}}"
 
 
