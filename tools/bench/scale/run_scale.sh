@@ -9,7 +9,7 @@
 # costs. Peak memory is the longer run's. Prints and appends to tools/bench/scale/results.csv:
 # "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body".
 # SHAPE=cube: scene.py's lattice of rounded cubes, face to face, against 3,375 of them (rows in
-# results_cube.csv).
+# results_cube.csv), at rest from the first step (scene.py's REST=1, its default for cubes).
 # usage: [COMMIT=label] [SHAPE=cube] tools/bench/scale/run_scale.sh [POLYDEM] [STEPS] [ROUNDS] [N_SIDE ...]
 #        (defaults: build/polydem 200 3 30 60 100; 15 is the reference size)
 set -euo pipefail
