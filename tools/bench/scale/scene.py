@@ -1,6 +1,6 @@
 """Writes the scale benchmark's scene: n^3 spheres (r = 5 mm) touching in a simple cubic
 lattice, the lowest layer on the floor, between four walls 0.5 mm clear of the outer spheres,
-at rest under gravity (a settled bed's 3 contacts a sphere, no settling run needed).
+under gravity (a settled bed's list pairs, no settling run needed; REST=1 below: at rest).
 SHAPE=cube: the same lattice of the library's rounded cubes (side 1 cm, rounding 0.5 mm, axes
 along the box's: tools/bench/cubes.yaml's cubes) touching face to face, under contact_polyhedron.
 ORDER `lattice` (default) numbers the bodies layer by layer, so neighbours sit near in memory;
@@ -9,12 +9,13 @@ neighbours anywhere in memory), in a body table TABLE (a CSV the scene names; it
 the scene will read it, relative to the scene's folder or absolute). Cubes are always listed
 in a table (the lattice generator spaces bodies by their bounding diameter, 16.6 mm for a cube).
 REST=1 (the default for cubes; REST=0 turns it off): each layer sits on the one below at the
-static overlap of the weight it carries (the law's linear kn), side neighbours 1 um apart (list pairs, never in contact): at rest from the
-first step, one contact a body (floor or body below) at every size. Without it the lattice
-starts untouched and compresses from the floor up (a wave of ~8 layers a ms: a larger N is
-counted with fewer bodies in contact in its first steps), and the side contacts at zero
-overlap come and go with the coordinates' rounding.
-usage: [SHAPE=sphere|cube] [REST=0|1] python3 scene.py N_SIDE SHAPE_LIBRARY [lattice | shuffled] [TABLE] > scene.yaml"""
+static overlap of the weight it carries (the law's linear kn), side neighbours 1 um apart (list
+pairs, never in contact): at rest from the first step, one contact a body (floor or body below)
+at every size. Without it the lattice starts untouched and compresses from the floor up (a wave
+of ~8 layers a ms: a larger N is counted with fewer bodies in contact in its first steps), and
+the side contacts at zero overlap come and go with the coordinates' rounding.
+usage: [SHAPE=sphere|cube] [REST=0|1] python3 scene.py N_SIDE SHAPE_LIBRARY [lattice | shuffled] [TABLE]
+       > scene.yaml"""
 import os
 import random
 import sys
@@ -25,10 +26,10 @@ table = sys.argv[4] if len(sys.argv) > 4 else None
 shape = os.environ.get("SHAPE", "sphere")
 if shape not in ("sphere", "cube") or order not in ("lattice", "shuffled"):
     sys.exit(f"scene.py: SHAPE must be sphere or cube (got {shape}), ORDER lattice or shuffled (got {order})")
-if table is None and (order == "shuffled" or shape == "cube" or os.environ.get("REST") == "1"):  # cubes rest by default
+rest = os.environ.get("REST", "1" if shape == "cube" else "0") == "1"
+if table is None and (order == "shuffled" or shape == "cube" or rest):
     sys.exit("scene.py: a shuffled order, SHAPE=cube or REST=1 needs TABLE, the body table's path")
 contact = "contact_sphere" if shape == "sphere" else "contact_polyhedron"
-rest = os.environ.get("REST", "1" if shape == "cube" else "0") == "1"
 kn, g, density, half = 1.0e5, 9.807, 2700.0, 0.005  # N/m, m/s^2, kg/m^3, m: the scene's law, gravity, bodies
 pitch = 0.01 + (1e-6 if rest else 0.0)  # m, side neighbours' centres
 side = n * pitch + 1e-9  # m, n bodies of 1 cm across, a hair more: the lattice fills the box, centred
