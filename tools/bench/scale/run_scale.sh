@@ -8,7 +8,10 @@
 # (ROUNDS pairs, alternated: the machine's speed drifts) and stated as the ratio of the pair's
 # costs. Peak memory is the longer run's. Prints and appends to tools/bench/scale/results.csv:
 # "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body".
-# usage: [COMMIT=label] tools/bench/scale/run_scale.sh [POLYDEM] [STEPS] [ROUNDS] [N_SIDE ...]
+# SHAPE=cube: scene.py's lattice of rounded cubes, face to face, against 3,375 of them (rows in
+# results_cube.csv), at rest from the first step (scene.py's REST=1, its default for cubes;
+# REST=1 for spheres too: a rested run's commit reads "abc1234-rest").
+# usage: [COMMIT=label] [SHAPE=cube] tools/bench/scale/run_scale.sh [POLYDEM] [STEPS] [ROUNDS] [N_SIDE ...]
 #        (defaults: build/polydem 200 3 30 60 100; 15 is the reference size)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -19,9 +22,10 @@ shift 3 || shift $#
 sides=("${@:-30 60 100}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-csv=tools/bench/scale/results.csv
+export SHAPE=${SHAPE:-sphere} REST=${REST:-$([ "${SHAPE:-}" = cube ] && echo 1 || echo 0)}  # read by scene.py
+csv=tools/bench/scale/results$([ "$SHAPE" = sphere ] || echo "_$SHAPE").csv
 [ -s "$csv" ] || echo "commit,bodies,steps,round,us_per_particle_step,us_3375,ratio,peak_kB,kB_per_body" > "$csv"
-commit=${COMMIT:-$(git rev-parse --short HEAD)}  # COMMIT: the label of another build
+commit=${COMMIT:-$(git rev-parse --short HEAD)}$([ "$REST" = 1 ] && echo -rest)  # COMMIT: the label of another build
 
 cpu_seconds() {  # n steps -> user + system CPU seconds of one run of n^3 spheres, and its peak RSS (kB)
   local n=$1 steps=$2
@@ -37,7 +41,7 @@ cpu_seconds() {  # n steps -> user + system CPU seconds of one run of n^3 sphere
 
 run_side() {  # n steps -> "us_per_particle_step peak_kB": the CPU time of `steps` more steps, per body-step
   local n=$1 steps=$2 short long peak
-  python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" > "$work/scene_$n.yaml"
+  python3 tools/bench/scale/scene.py "$n" "$PWD/shapes/platonic.shp" lattice "$work/bodies_$n.csv" > "$work/scene_$n.yaml"
   read -r short _ <<< "$(cpu_seconds "$n" "$steps")"
   read -r long peak <<< "$(cpu_seconds "$n" $((2 * steps)))"
   echo "$(python3 -c "print(round(1e6 * ($long - $short) / ($steps * $n ** 3), 4))") $peak"

@@ -6,10 +6,13 @@
 # jobs share the cores. Each size runs in the lattice's order and shuffled (scene.py): a pour
 # leaves a body's neighbours anywhere in memory, which only the cache misses show.
 # The estimate is cachegrind's: cycles = Ir + 10 (L1 misses) + 100 (LL misses).
+# SHAPE=cube: scene.py's lattice of rounded cubes, face to face (rows in results_sim_cube.csv);
+# ORDERS: the orders to count (default "lattice shuffled"). REST=1 (scene.py; cubes' default):
+# the lattice at rest from the first step; its rows' order reads "lattice-rest".
 # Prints and appends to tools/bench/scale/results_sim.csv:
 # "commit,bodies,order,steps,ir,l1_miss,ll_miss,cycles_est,ratio" (per particle-step; ratio:
 # the estimate against the same order's first size).
-# usage: tools/bench/scale/run_scale_sim.sh [POLYDEM] [N_SIDE:STEPS ...]
+# usage: [SHAPE=cube] [ORDERS=lattice] tools/bench/scale/run_scale_sim.sh [POLYDEM] [N_SIDE:STEPS ...]
 #        (defaults: build/polydem 15:20 30:10 60:4 100:2)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -19,7 +22,8 @@ sizes=("${@:-15:20 30:10 60:4 100:2}")
 sizes=(${sizes[@]})
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-csv=tools/bench/scale/results_sim.csv
+export SHAPE=${SHAPE:-sphere} REST=${REST:-$([ "${SHAPE:-}" = cube ] && echo 1 || echo 0)}  # read by scene.py
+csv=tools/bench/scale/results_sim$([ "$SHAPE" = sphere ] || echo "_$SHAPE").csv
 [ -s "$csv" ] || echo "commit,bodies,order,steps,ir,l1_miss,ll_miss,cycles_est,ratio" > "$csv"
 commit=${COMMIT:-$(git rev-parse --short HEAD)}
 
@@ -34,7 +38,7 @@ counts() {  # scene steps -> "Ir L1misses LLmisses" of the steps
   awk '/^summary:/ {print $2, $5 + $6 + $7, $8 + $9 + $10}' "$work/cg.out"
 }
 
-for order in lattice shuffled; do
+for order in ${ORDERS:-lattice shuffled}; do
   first=""
   for size in "${sizes[@]}"; do
     n=${size%%:*} steps=${size##*:}
@@ -53,6 +57,6 @@ EOF
 )
     [ -n "$first" ] || first=$(echo "$row" | cut -d, -f6)
     IFS=, read -r bodies st ir l1 ll cyc ratio <<< "$row"
-    echo "$commit,$bodies,$order,$st,$ir,$l1,$ll,$cyc,$ratio" | tee -a "$csv"
+    echo "$commit,$bodies,$order$([ "$REST" = 1 ] && echo -rest),$st,$ir,$l1,$ll,$cyc,$ratio" | tee -a "$csv"
   done
 done
