@@ -314,11 +314,9 @@ template <class Parts, bool kLone = false>
     const auto on_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
       // Only where a spring that stuck at n starts to slip (a sliding one has no kink).
       if (!kink_pushes || h.slipping || tangential_damping || cap <= 0.0) return;  // the dashpot's share of the last cap is not kept
-      // N, the cap at n; a spring that stuck over this estimate (its stick read the force at n+1)
-      // was at its cap then: the kink at n (without it, 1.34e-2 at 0.26 x critical for 8.2e-3 at 0.2601).
-      const double old = std::sqrt(old2);  // N
-      const double c0 = std::max(law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h), old);
-      push_t = (slip_start_push(old, trial, c0, cap) / trial) * trial_spring;
+      // The cap at n at least |old| (without it, 1.34e-2 at 0.26 x critical for 8.2e-3 at 0.2601).
+      push_t = slip_start_push_along(old2, trial_spring, trial, cap,
+                                     law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h));
       pushed = true;
     };
     out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt_on,
@@ -348,9 +346,8 @@ template <class Parts, bool kLone = false>
     Vec3 push_r = Vec3::Zero();  // N m, the rolling spring's push where it starts or starts to slip
     const auto on_roll_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
       if (!kink_pushes || h.rolling_slipping || cap <= 0.0) return;  // as the tangential spring's
-      const double old = std::sqrt(old2);  // N m
-      const double c0 = std::max(law.mur * k.lever * law_detail::last_normal_force<Normal, kLone>(law, k, h), old);  // N m
-      push_r = (slip_start_push(old, trial, c0, cap) / trial) * trial_spring;
+      push_r = slip_start_push_along(old2, trial_spring, trial, cap,
+                                     law.mur * k.lever * law_detail::last_normal_force<Normal, kLone>(law, k, h));
     };
     rolling_spring(law, k, fp, on, h, out.rolling, fp_at_slip, on_roll_slip);
     out.dissipated += out.rolling + started_spring_work(h.mr, k.w_rel, dt - on);

@@ -58,6 +58,15 @@ template <class AtSlip>
   return 0.5 * d * late * late;
 }
 
+// The push along the trial spring (on_slip's arguments: |old|^2, trial, |trial|, cap) of a spring
+// that stuck at n and slips by n+1. `cap_then`: the cap the last step's normal force gives; a
+// spring that stuck over it (its stick read the force at n+1) was at its cap then, |old|.
+[[gnu::noinline]] inline Vec3 slip_start_push_along(double old2, const Vec3& trial_spring, double trial,
+                                                         double cap, double cap_then) {
+  const double old = std::sqrt(old2);
+  return (slip_start_push(old, trial, std::max(cap_then, old), cap) / trial) * trial_spring;
+}
+
 // Rotate ft into the plane normal to n keeping its length, add -kt_w vt dt, cap |ft| <= ft_max
 // (at_slip, on_slip: capped_spring). Returns J, the slip.
 template <class AtSlip, class OnSlip>
