@@ -239,6 +239,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   // A sphere list's records are written by the step's kernel, not carried: sized only once the
   // old lists are freed, so a rebuild at an output step holds no more than another.
   fresh.recording = !spheres_only_;
+  fresh.sparse = !spheres_only_;  // the sphere kernel's one slot a pair stays dense
+  fresh_d.sparse = true;
   {  // the broad phase's pairs are freed before the slots' state is sized
     std::vector<BodyPair> near;
     cells_.build_pairs(*bodies.position, bounding_, range_p, near);
@@ -294,7 +296,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   ++stats_.rebuilds;
   stats_.body_pairs = body_list_.size();
   stats_.driver_pairs = driver_list_.size();
-  stats_.slots = body_list_.slots.size() + driver_list_.slots.size();
+  stats_.slots = body_list_.slot_count() + driver_list_.slot_count();
 }
 
 std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodies) const {
@@ -492,7 +494,7 @@ static void add_stored_energy(const PairList& list, const LawParams& law, const 
     if (ghost && (*ghost)[list.pairs[k].i]) continue;
     const double r_star = law.normal == NormalModel::hertz ? r_star_of(list.pairs[k]) : 0.0;  // m
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.active[s]) total.add(stored_parts(law, list.slots[s].history, r_star));
+      if (list.active[s]) total.add(stored_parts(law, list.history(s), r_star));
   }
 }
 

@@ -35,8 +35,8 @@ PairList active_part(const PairList& list) {
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
       if (!list.active[s]) continue;
       kept.features.push_back(list.features[s]);
-      kept.slots.push_back(list.slots[s]);
-      if (list.recording) kept.records.push_back(list.records[s]);
+      kept.slots.push_back(ContactSlot{list.history(s)});
+      if (list.recording) kept.records.push_back(list.record(s));
     }
     if (kept.slots.size() == before) continue;
     kept.pairs.push_back(list.pairs[k]);
@@ -63,12 +63,11 @@ std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fre
     const std::uint32_t s_new_end = fresh.slot_begin[k_new + 1];
     for (std::uint32_t s = old_list.slot_begin[k_old]; s < old_list.slot_begin[k_old + 1]; ++s) {
       if (!old_list.active[s]) continue;
-      const ContactSlot& old_slot = old_list.slots[s];
       const std::uint64_t key = feature_key(old_list.features[s]);
       while (s_new < s_new_end && feature_key(fresh.features[s_new]) < key) ++s_new;
       if (s_new < s_new_end && feature_key(fresh.features[s_new]) == key) {
-        fresh.slots[s_new] = old_slot;
-        if (fresh.recording) fresh.records[s_new] = old_list.recording ? old_list.records[s] : SlotRecord{};
+        fresh.history(s_new) = old_list.history(s);  // a sparse list's states made here in slot order
+        if (fresh.recording) fresh.record(s_new) = old_list.recording ? old_list.record(s) : SlotRecord{};
         fresh.active[s_new] = 1;
         ++fresh.touching[k_new];
       }

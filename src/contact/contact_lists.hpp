@@ -4,33 +4,26 @@
 // A pair is (body i, partner j): another body (i < j) or a driver. Each pair owns a run of
 // slots, one per candidate feature pair found at the last rebuild, sorted by key. A slot
 // carries its contact's history (tangential spring, rolling moment) while the key lives, so
-// history needs no lookup between rebuilds; rebuilds hand it over by key.
+// history needs no lookup between rebuilds; rebuilds hand it over by key. A sparse list keeps
+// a state for the slots that touched since the rebuild only (slot_store.hpp).
 #include <cstdint>
 #include <vector>
 
 #include "contact/law.hpp"
+#include "contact/slot_store.hpp"
 #include "geometry/features.hpp"
 #include "neighbor/broad_phase.hpp"
 #include "polydem/release.hpp"
 
 namespace polydem {
 
-// The state of one slot that lives while its key does, touched only where a contact is (or
-// was) active; the slot's key lives apart in PairList::features, the array every step scans.
-// Its last gap is history.gap.
+// A dense list's state of one slot (the sphere fast path's one slot a pair), touched only
+// where a contact is (or was) active; the slot's key lives apart in PairList::features, the
+// array every step scans. Its last gap is history.gap.
 struct ContactSlot {
   ContactHistory history;     // N, N m: springs carried while the key lives
 };
 static_assert(sizeof(ContactSlot) == 80, "ContactSlot: the history alone");
-
-// What an active slot's contact was at the last step: contact output and checkpoints read it,
-// and a polyhedron pair hands an ended contact's history to the nearest new one by its point.
-// Apart from ContactSlot so a sphere list keeps it only for the steps something reads it.
-struct SlotRecord {
-  Vec3 point = Vec3::Zero();  // m, contact point
-  Vec3 force = Vec3::Zero();  // N on i
-  double fn = 0.0;            // N, normal force
-};
 
 // Packs a contact key of one pair into an integer that orders slots deterministically.
 inline std::uint64_t feature_key(FeaturePair f) {
@@ -44,10 +37,15 @@ struct PairList {
   std::vector<BodyPair> pairs;             // sorted by (i, j)
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
   std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
-  std::vector<ContactSlot> slots;          // per slot: contact state
-  // Per slot when `recording` (else empty): written for each active slot at every step. Lists
-  // of polyhedra and drivers always record (their hand-over reads the points); the sphere
-  // fast path only at the steps whose state is written (ContactEngine::record_contacts).
+  // Sparse (lists of polyhedra and drivers): a slot's state is states[state_of[s]], made at its
+  // first touch since the build (kNoState before), always with its record (the hand-over reads
+  // the points). Dense (spheres, and lists read from checkpoints and tables): `slots` and, when
+  // `recording`, `records` per slot; the sphere fast path records only at the steps whose state
+  // is written (ContactEngine::record_contacts). Only active slots' state is read.
+  bool sparse = false;
+  std::vector<std::uint32_t> state_of;
+  SlotStore states;
+  std::vector<ContactSlot> slots;
   std::vector<SlotRecord> records;
   bool recording = true;
   std::vector<std::uint8_t> active;        // per slot: in contact at the last step (compact: scanned)
@@ -65,6 +63,19 @@ struct PairList {
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
+  std::size_t slot_count() const { return features.size(); }
+  // Slot s's state; a sparse list's is made here at the slot's first touch (from the one
+  // thread that steps its pair).
+  SlotState& touch(std::uint32_t s) {
+    std::uint32_t& g = state_of[s];
+    if (g == kNoState) g = states.make();
+    return states[g];
+  }
+  // Slot s's history and record, made on first use in a sparse list (the const ones: an active slot's).
+  ContactHistory& history(std::uint32_t s) { return sparse ? touch(s).history : slots[s].history; }
+  const ContactHistory& history(std::uint32_t s) const { return sparse ? states[state_of[s]].history : slots[s].history; }
+  SlotRecord& record(std::uint32_t s) { return sparse ? touch(s).record : records.at(s); }
+  const SlotRecord& record(std::uint32_t s) const { return sparse ? states[state_of[s]].record : records.at(s); }
   void set_recording(bool on) {
     recording = on;
     if (on) records.resize(slots.size());

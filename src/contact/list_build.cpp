@@ -79,8 +79,13 @@ void free_results(PairList& list) {
 
 void size_slots(PairList& list) {
   const std::size_t n_slots = list.slot_begin.back();
-  list.slots.assign(n_slots, ContactSlot{});
-  list.records.assign(list.recording ? n_slots : 0, SlotRecord{});
+  if (list.sparse) {  // states made as slots touch
+    list.state_of.assign(n_slots, kNoState);
+    list.states.reset(n_slots);
+  } else {
+    list.slots.assign(n_slots, ContactSlot{});
+    list.records.assign(list.recording ? n_slots : 0, SlotRecord{});
+  }
   list.active.assign(n_slots, 0);
   list.touching.assign(list.size(), 0);
   list.pending.assign(list.size(), EnergyParts{});

@@ -64,8 +64,9 @@ void body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, d
 // held the whole old list.
 void free_results(PairList& list);
 
-// Sizes the per-slot state (springs, records, active flags) and the pairs' contact counts and
-// pending energies of a list whose pairs, runs and keys are laid out: what carry_history fills.
+// Sizes the per-slot state (springs, records, active flags; a sparse list's state indexes and an
+// empty store) and the pairs' contact counts and pending energies of a list whose pairs, runs
+// and keys are laid out: what carry_history fills.
 void size_slots(PairList& list);
 // Then the per-pair results, keeping the counts and pending energies: sized once the old list
 // is freed (a rebuild's peak held both, 98 bytes a pair). pair_steps: PairList::resize_results'.

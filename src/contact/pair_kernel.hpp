@@ -50,6 +50,7 @@ struct FoundContact {
   FoundContact(std::uint32_t s, const ContactPoint& g) : slot(s), geometry(g) {}
   std::uint32_t slot;
   ContactPoint geometry;
+  SlotState* state;  // the slot's in a sparse list (find_contacts): the law's history and record
 };
 
 // Patch weights (SPEC "faces in contact"): the sub-contacts of one pair share the pair's
@@ -185,27 +186,33 @@ struct RigidMotion {
 // Evaluates the candidate feature pairs of pair k (slots [s0, s1)) into scratch.found and drops
 // the shadowed ones. Out of line, as the law loop: one function for both runs short of registers.
 template <class Partner>
-[[gnu::noinline]] void find_contacts(double band, const PosedBody& a, const Partner& partner, const PairList& list,
+[[gnu::noinline]] void find_contacts(double band, const PosedBody& a, const Partner& partner, PairList& list,
                                      std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
   scratch.found.clear();
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
   bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
-  const std::uint32_t end = list.slot_begin[k + 1];  // read once: the stores to `found` might alias it
+  // Read once: the stores to `found` might alias them.
+  const std::uint32_t end = list.slot_begin[k + 1];
+  const float* const slot_gap = list.slot_gap.data();  // m
+  const FeaturePair* const features = list.features.data();
   for (std::uint32_t s = list.slot_begin[k]; s < end; ++s) {
-    if (list.slot_gap[s] - moved >= band) continue;  // cannot touch yet
+    if (slot_gap[s] - moved >= band) continue;  // cannot touch yet
     FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
-    if (!partner.contact(a, p.j, list.features[s], band, next.geometry)) {
+    const FeaturePair f = features[s];
+    if (!partner.contact(a, p.j, f, band, next.geometry)) {
       scratch.found.pop_back();
       continue;
     }
     next.slot = s;
-    shadowing |= shadows(list.features[s].type);
-    shadowable |= may_be_shadowed(list.features[s].type);
-    // The slot's state is read and written by the law, after the pair's other candidates: fetch it now.
-    const char* state = reinterpret_cast<const char*>(&list.slots[s]);
+    next.state = &list.touch(s);  // a shadowed one's too (rare): made, left as it was
+    shadowing |= shadows(f.type);
+    shadowable |= may_be_shadowed(f.type);
+    // The slot's history is read and written by the law, after the pair's other candidates: fetch it
+    // now (its 80 bytes, two lines at most; the record after it is only written).
+    const char* state = reinterpret_cast<const char*>(next.state);
     __builtin_prefetch(state, 1);
-    __builtin_prefetch(state + 64, 1);  // 72 bytes: two lines at most
+    __builtin_prefetch(state + 64, 1);
   }
   if (shadowing && shadowable)  // rare: nothing to drop otherwise
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
@@ -234,7 +241,7 @@ template <class Partner>
 [[gnu::always_inline]] inline void add_contact(const PairLaw<Partner>& pl, std::size_t c, const ContactForce& f,
                                                const Vec3& torque) {
   const FoundContact& found = pl.scratch.found[c];
-  SlotRecord& record = pl.list.records[found.slot];  // always recording: the hand-over reads the point
+  SlotRecord& record = found.state->record;  // always recording: the hand-over reads the point
   record.point = found.geometry.point;  // member by member: an aggregate went through a copy on the stack
   record.force = f.force;
   record.fn = f.fn;
@@ -274,7 +281,7 @@ template <class Parts, class Partner>
                         pl.r_star,
                         pl.exact_step,
                         law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k]};  // k', c' for the pair's fixed mass
-  const ContactForce f = contact_force<Parts>(law, kin, pl.list.slots[pl.scratch.found[c].slot].history, lc.dt);
+  const ContactForce f = contact_force<Parts>(law, kin, pl.scratch.found[c].state->history, lc.dt);
   if constexpr (Parts::rolling) add_contact(pl, c, f, motion.lever.cross(f.force) + f.moment);
   else add_contact(pl, c, f, motion.lever.cross(f.force));
 }
@@ -298,8 +305,8 @@ template <class Parts, class Partner>
     Vec3 torque[2];
     const unsigned steady = steady_lanes(pl.lc, scratch.found[c].geometry, scratch.found[c + 1].geometry,
                                          scratch.weight[c], scratch.weight[c + 1],
-                                         pl.list.slots[scratch.found[c].slot].history,
-                                         pl.list.slots[scratch.found[c + 1].slot].history, f, torque);
+                                         scratch.found[c].state->history, scratch.found[c + 1].state->history, f,
+                                         torque);
     if (steady & 1u) add_contact(pl, c, f[0], torque[0]);
     else contact_by_law_apart<Parts>(pl, c);
     if (steady & 2u) add_contact(pl, c + 1, f[1], torque[1]);
@@ -308,8 +315,7 @@ template <class Parts, class Partner>
   if (c == n) return;
   ContactForce f;
   Vec3 torque;
-  if (steady_alone(pl.lc, scratch.found[c].geometry, scratch.weight[c], pl.list.slots[scratch.found[c].slot].history,
-                   f, torque))
+  if (steady_alone(pl.lc, scratch.found[c].geometry, scratch.weight[c], scratch.found[c].state->history, f, torque))
     add_contact(pl, c, f, torque);
   else
     contact_by_law_apart<Parts>(pl, c);

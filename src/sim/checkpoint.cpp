@@ -39,7 +39,8 @@ void write_active(Writer& w, const PairList& list) {
       if (list.active[s]) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
-        slot_fields(w, list.features[s], list.slots[s], list.records.at(s));  // at: a list must record
+        const ContactSlot slot{list.history(s)};
+        slot_fields(w, list.features[s], slot, list.record(s));  // a dense list must record
       }
   for (std::size_t k = 0; k < list.size(); ++k)  // the pairs above, in order: their pending energies
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)

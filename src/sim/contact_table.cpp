@@ -13,8 +13,8 @@ std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& stor
     const std::size_t first = out.size();
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s], list.slots[s],
-                       list.recording ? list.records[s] : SlotRecord{}, EnergyParts{}});
+        out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s],
+                       {list.history(s)}, list.recording ? list.record(s) : SlotRecord{}, EnergyParts{}});
     if (out.size() > first) out[first].pending = list.pending[k];
   }
   return out;

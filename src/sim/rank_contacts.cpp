@@ -181,7 +181,7 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
     const std::size_t first = slots.size();
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], list.slots[s], list.records.at(s), {}});
+        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], {list.history(s)}, list.record(s), {}});
     if (slots.size() > first) slots[first].pending = list.pending[k];
   }
   return slots;
@@ -248,7 +248,7 @@ std::size_t RankContacts::pairs() const {
 }
 
 std::size_t RankContacts::candidates() const {
-  return engine_ ? engine_->body_pairs().slots.size() + engine_->driver_pairs().slots.size() : 0;
+  return engine_ ? engine_->body_pairs().slot_count() + engine_->driver_pairs().slot_count() : 0;
 }
 
 std::vector<ReactionShare> RankContacts::reaction_shares() const {

@@ -78,12 +78,12 @@ std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driv
       double weight = 0.0;
       for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
         if (!list.active[s]) continue;
-        const SlotRecord& r = list.records.at(s);  // at: recorded at the step just made
+        const SlotRecord& r = list.record(s);  // recorded at the step just made
         c.fn += r.fn;
         c.force += r.force;
         // force = fn n + ft with ft normal to n, so |ft| follows without storing n
         c.ft += std::sqrt(std::max(r.force.squaredNorm() - r.fn * r.fn, 0.0));
-        c.overlap = std::max(c.overlap, -list.slots[s].history.gap);
+        c.overlap = std::max(c.overlap, -list.history(s).gap);
         c.point += r.point * std::max(r.fn, 1e-300);
         weight += std::max(r.fn, 1e-300);
         c.type = int(list.features[s].type);

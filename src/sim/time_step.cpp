@@ -263,8 +263,9 @@ std::string OverlapWatch::check(const PairList& body_pairs, const PairList& driv
       const BodyPair& p = list->pairs[k];
       const double r = with_driver ? radius_[p.i] : std::min(radius_[p.i], radius_[p.j]);  // m
       for (std::uint32_t s = list->slot_begin[k]; s < list->slot_begin[k + 1]; ++s) {
-        const double overlap = -list->slots[s].history.gap;  // m
-        if (!list->active[s] || overlap <= kOverlapFraction * r) continue;
+        if (!list->active[s]) continue;  // only an active slot has a state in a sparse list
+        const double overlap = -list->history(s).gap;  // m
+        if (overlap <= kOverlapFraction * r) continue;
         warned_ = true;
         const std::string partner = with_driver ? "driver '" + drivers.name(p.j) + "'" : format("body %u", p.j);
         return format("warning: t = %.4g s: an overlap of %.3g mm between body %u and %s exceeds %.2g x the inscribed "

@@ -49,8 +49,8 @@ double mass_of(const Simulation& sim) {
 std::vector<std::pair<int, double>> floor_contacts(const Simulation& sim) {
   std::vector<std::pair<int, double>> out;
   const PairList& list = sim.engine().driver_pairs();
-  for (std::size_t s = 0; s < list.slots.size(); ++s)
-    if (list.active[s]) out.emplace_back(list.features[s].a, list.records[s].fn);
+  for (std::uint32_t s = 0; s < list.slot_count(); ++s)
+    if (list.active[s]) out.emplace_back(list.features[s].a, list.record(s).fn);
   return out;
 }
 

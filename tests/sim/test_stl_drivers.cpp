@@ -111,7 +111,7 @@ TEST_CASE("a cube's edge crossing an STL edge rebounds head-on with e_n and no s
   for (int s = 0; s < 40000 && sim.bodies.velocity[0].dot(n) < 0.0; ++s) {
     sim.step();
     const PairList& list = sim.engine().driver_pairs();
-    for (std::size_t k = 0; k < list.slots.size(); ++k)
+    for (std::size_t k = 0; k < list.slot_count(); ++k)
       if (list.active[k]) ++(list.features[k].type == PairType::edge_edge ? edge_edge_steps : other_steps);
   }
   REQUIRE(run_through_impact(sim, 40000));
