@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "contact/contact_lists.hpp"
+#include "contact/list_build.hpp"
 
 using namespace polydem;
 
@@ -30,7 +31,55 @@ PairList make_list(const std::vector<BodyPair>& pairs, const std::vector<std::ve
   return list;
 }
 
+// A sparse list with the same layout, no slot touched yet.
+PairList make_sparse(const std::vector<BodyPair>& pairs, const std::vector<std::vector<std::uint32_t>>& runs) {
+  PairList list;
+  list.sparse = true;
+  list.pairs = pairs;
+  list.slot_begin.push_back(0);
+  for (const auto& run : runs) {
+    for (std::uint32_t b : run) list.features.push_back(FeaturePair{PairType{}, 0, b});
+    list.slot_begin.push_back(std::uint32_t(list.features.size()));
+  }
+  size_slots(list);
+  return list;
+}
+
 }  // namespace
+
+TEST_CASE("a sparse list holds states for the carried slots alone, then for each slot at its first touch") {
+  const PairList old = make_list({{0, 1}, {1, 2}}, {{{1, true}, {4, false}}, {{3, true}, {5, true}}});
+  PairList fresh = make_sparse({{0, 1}, {1, 2}}, {{1, 2, 4, 8}, {3, 5, 7}});
+  REQUIRE(fresh.states.size() == 0);
+  carry_history(active_part(old), fresh);
+  CHECK(fresh.states.size() == 3);  // of 7 slots: the three carried
+  CHECK(fresh.history(0).fd == 1.0);  // old slot 0's tag
+  CHECK(fresh.history(4).fd == 3.0);
+  CHECK(fresh.history(5).fd == 4.0);
+  CHECK(fresh.record(5).fn == 4.0);   // its record with it
+  CHECK(fresh.state_of[1] == kNoState);
+  const SlotState& made = fresh.touch(6);  // a new contact: a zero state
+  CHECK(fresh.states.size() == 4);
+  CHECK(made.history.gap == kNoGap);
+  CHECK(made.record.fn == 0.0);
+  CHECK(&fresh.touch(6) == &made);  // made once
+}
+
+TEST_CASE("a sparse list's states made by several threads at once are distinct and stay put") {
+  const std::uint32_t n = 5000;  // slots, over many chunks
+  PairList list = make_sparse({{0, 1}}, {std::vector<std::uint32_t>(n, 0)});
+  std::vector<const SlotState*> at(n);
+#pragma omp parallel for schedule(dynamic, 7)
+  for (std::uint32_t s = 0; s < n; ++s) {
+    SlotState& state = list.touch(s);
+    state.history.fd = double(s);  // N, a tag
+    at[s] = &state;
+  }
+  CHECK(list.states.size() == n);
+  std::size_t wrong = 0;
+  for (std::uint32_t s = 0; s < n; ++s) wrong += !(&list.touch(s) == at[s] && list.history(s).fd == double(s));
+  CHECK(wrong == 0);
+}
 
 TEST_CASE("active_part keeps the active slots with their pairs, keys and state, in order") {
   const PairList old = make_list({{0, 1}, {0, 2}, {1, 2}}, {{{1, true}, {4, false}}, {{2, false}}, {{3, false}, {5, true}, {6, true}}});
