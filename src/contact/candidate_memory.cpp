@@ -1,6 +1,7 @@
 #include "contact/candidate_memory.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -31,7 +32,11 @@ void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<Feat
   turn_i.push_back(now.orientation[p.i]);
   turn_j.push_back(now.orientation[p.j]);
   features.insert(features.end(), found.begin(), found.end());
-  distance2.insert(distance2.end(), found2.begin(), found2.end());
+  for (double d2 : found2) {
+    // Rounded to nearest, then a step down where that went up (f > d2 >= 0: the float below f).
+    const float f = static_cast<float>(d2);
+    distance2.push_back(static_cast<double>(f) > d2 ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) - 1u) : f);
+  }
   begin.push_back(std::uint32_t(features.size()));
 }
 
