@@ -418,6 +418,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
                           stopping;
     sim.engine().record_contacts(recorded);
     sim.want_driver_reactions(recorded || csv.due_at(t_next, dt));  // the driver CSVs and checkpoints read them
+    sim.ask_stop(g_interrupted);
     try {
       const auto step_start = Clock::now();
       sim.step();
@@ -443,8 +444,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (vtk.due(sim.time(), dt)) writer.frame();
     if (csv.due(sim.time(), dt) && writer.energy_row()) check_overlaps();  // distributed: its pairs on rank 0 if gathered
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
-    const bool interrupted = sim.any_rank(g_interrupted);  // a collective: every rank stops at the same step
-    if (interrupted && !recorded) {  // the checkpoint needs the contacts' records: one more step
+    const std::optional<bool> seen = sim.stop_seen();  // in the step's collective: every rank stops at the same step
+    const bool interrupted = seen ? *seen : sim.any_rank(g_interrupted);  // else a collective of its own
+    const bool kept = recorded || seen.value_or(false);  // a stop seen inside the step kept the records
+    if (interrupted && !kept) {  // the checkpoint needs the contacts' records: one more step
       g_interrupted = stopping = true;
       continue;
     }
