@@ -198,13 +198,13 @@ ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
 }
 
 long RankContacts::first_non_finite(const Bodies& bodies) const {
-  long mine = -1;  // the owned bodies are in increasing id: the first is the smallest
-  for (std::uint32_t b : plan_.owned)
-    if (!bodies.finite(b)) {
-      mine = long(b);
-      break;
-    }
-  return least_over_ranks(link_, mine);
+  return least_over_ranks(link_, first_non_finite_owned(bodies));
+}
+
+long RankContacts::first_non_finite_owned(const Bodies& bodies) const {
+  for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
+    if (!bodies.finite(b)) return long(b);
+  return -1;
 }
 
 // The touching driver pairs' reactions, gathered at the steps that read them; the owned bodies'

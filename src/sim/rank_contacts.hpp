@@ -75,6 +75,10 @@ class RankContacts {
   ExactEnergy output_flushed(const ContactEngine& whole) const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
   long first_non_finite(const Bodies& bodies) const;
+  long first_non_finite_owned(const Bodies& bodies) const;  // this rank's alone
+  // This rank's lists (null before its first step) and their bodies (local ids).
+  const ContactEngine* lists() const { return engine_.get(); }
+  const LocalStore& store() const { return store_; }
   // The bodies this rank integrates, by rotation path (empty before the first compute).
   const RotorGroups& owned_rotors() const { return owned_rotors_; }
   std::size_t owned() const { return plan_.owned.size(); }
