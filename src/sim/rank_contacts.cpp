@@ -98,6 +98,7 @@ void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const
   local_of_.assign(bodies.size(), -1);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
   owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
+  size_parcels();
   store_.select(bodies, plan_.local, plan_.ghost);
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(body_table, local_of_, false);
@@ -151,14 +152,20 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its owner.
-void RankContacts::exchange_ghosts(Bodies& bodies) const {
-  std::vector<Parcel> out, in;
+void RankContacts::exchange_ghosts(Bodies& bodies) {
+  for (Parcel& p : out_) pack_ghosts(bodies, plan_.send[p.rank], p.bytes.data());
+  link_.exchange(out_, in_);
+  for (const Parcel& p : in_) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
+}
+
+// The ghost exchange's parcels, sized once per plan (no allocation a step).
+void RankContacts::size_parcels() {
+  out_.clear();
+  in_.clear();
   for (int q = 0; q < link_.ranks(); ++q) {
-    if (!plan_.send[q].empty()) out.push_back({q, pack_ghosts(bodies, plan_.send[q])});
-    if (!plan_.receive[q].empty()) in.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * kGhostBytes)});
+    if (!plan_.receive[q].empty()) in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
   }
-  link_.exchange(out, in);
-  for (const Parcel& p : in) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
 }
 
 void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {

@@ -119,7 +119,8 @@ class RankContacts {
   void recut_if_unbalanced(const Bodies& bodies);
   std::vector<char> cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void exchange_ghosts(Bodies& bodies) const;
+  void exchange_ghosts(Bodies& bodies);
+  void size_parcels();
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
 
@@ -136,6 +137,7 @@ class RankContacts {
   RotorGroups owned_rotors_;
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
+  std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   bool forced_ = true;
   bool rebuild_asked_ = false;
