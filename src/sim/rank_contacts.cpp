@@ -52,7 +52,7 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
 bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
   bool stale = forced_ || rebuild_asked_ || !engine_;
   if (!stale) {
-    store_.refresh(bodies);
+    store_.refresh(bodies, !settings_.spheres_only);  // a sphere's orientation stays the identity
     stale = engine_->lists_stale(store_.view(), drivers);
   }
   // One rank's moved body rebuilds every rank's lists; one rank's interrupt stops them all here.
