@@ -512,8 +512,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       last_print = now;
       const double wall = std::chrono::duration<double>(now - start).count();
       const double rate = double(s - first_step) / wall;
-      std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %zu contacts  left %s%s",
-                   sim.time(), end_time, static_cast<long long>(s), rate, sim.contacts(),
+      // Distributed runs count the contacts at CSV rows only (a reduction): none shown here.
+      const std::string contacts = sim.distributed() ? "" : std::to_string(sim.contacts()) + " contacts  ";
+      std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %sleft %s%s",
+                   sim.time(), end_time, static_cast<long long>(s), rate, contacts.c_str(),
                    format_duration(double(last_step - s) / rate).c_str(), isatty(2) ? "      \r" : "\n");
     }
   }
