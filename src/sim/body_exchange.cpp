@@ -46,9 +46,13 @@ void owned_fields(Io& io, B& b, std::size_t i) {
 
 std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {
   std::vector<char> bytes(ids.size() * kGhostBytes);
-  Writer w{bytes.data()};
-  for (std::uint32_t b : ids) ghost_fields(w, bodies, b);
+  pack_ghosts(bodies, ids, bytes.data());
   return bytes;
+}
+
+void pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids, char* into) {
+  Writer w{into};
+  for (std::uint32_t b : ids) ghost_fields(w, bodies, b);
 }
 
 void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies) {

@@ -15,6 +15,7 @@ constexpr std::size_t kOwnedBytes = sizeof(std::uint32_t) + 28 * sizeof(double);
 
 // The ghost state of bodies `ids`, in that order.
 std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
+void pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids, char* into);  // ids.size() x kGhostBytes
 // Writes a parcel of pack_ghosts(…, ids) into the bodies `ids`.
 void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies);
 

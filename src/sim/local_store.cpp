@@ -17,18 +17,20 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
   refresh(all);
 }
 
-void LocalStore::refresh(const Bodies& all) {
+void LocalStore::refresh(const Bodies& all, bool turning) {
   const std::size_t n = global_id.size();
   position.resize(n);
-  orientation.resize(n);
   velocity.resize(n);
   angular_velocity.resize(n);
   velocity_end.resize(n);
   angular_velocity_end.resize(n);
+  if (turning) {
+    orientation.resize(n);
+    for (std::size_t k = 0; k < n; ++k) orientation[k] = all.orientation[global_id[k]];
+  }
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t g = global_id[k];
     position[k] = all.position[g];
-    orientation[k] = all.orientation[g];
     velocity[k] = all.velocity[g];
     angular_velocity[k] = all.angular_velocity[g];
     velocity_end[k] = all.velocity_end[g];

@@ -25,8 +25,10 @@ struct LocalStore {
 
   // Holds the bodies `ids` of `all` (increasing), ghosts where `is_ghost` is 1.
   void select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost);
-  // Copies what changes every step (pose and velocities) from the global arrays, and zeroes the forces.
-  void refresh(const Bodies& all);
+  // Copies what changes every step (pose and velocities) from the global arrays, and zeroes the
+  // forces; `turning` false: no held body ever turns (spheres keep the identity), the
+  // orientations select() copied stand.
+  void refresh(const Bodies& all, bool turning = true);
   LocalBodies view() {
     return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
             &shape,    &scale,       &mass,     &ghost,            &force,        &torque};

@@ -52,10 +52,13 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
 bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
   bool stale = forced_ || rebuild_asked_ || !engine_;
   if (!stale) {
-    store_.refresh(bodies);
+    store_.refresh(bodies, !settings_.spheres_only);  // a sphere's orientation stays the identity
     stale = engine_->lists_stale(store_.view(), drivers);
   }
-  return link_.any(stale);  // one rank's moved body rebuilds every rank's lists
+  // One rank's moved body rebuilds every rank's lists; one rank's interrupt stops them all here.
+  const std::vector<std::uint64_t> any = link_.sum({std::uint64_t(stale), std::uint64_t(stop_asked_)});
+  stop_seen_ = any[1] > 0;
+  return any[0] > 0;
 }
 
 // Every rank holds every body and `whole`'s table (the start, a resume, after sync_bodies):
@@ -95,6 +98,7 @@ void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const
   local_of_.assign(bodies.size(), -1);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
   owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
+  size_parcels();
   store_.select(bodies, plan_.local, plan_.ghost);
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(body_table, local_of_, false);
@@ -137,7 +141,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     ++rebuilds_;
     add_traffic(rebuild_traffic_, before, link_.counts());
   }
-  engine_->record_contacts(whole.records_contacts());  // the run loop tells the whole engine
+  engine_->record_contacts(whole.records_contacts() || stop_seen_);  // the run loop tells the whole engine
   engine_->compute(store_.view(), drivers, dt, stale);
   for (std::size_t k = 0; k < plan_.local.size(); ++k) {  // force += the contact sum: one process's arithmetic
     if (plan_.ghost[k]) continue;
@@ -148,14 +152,20 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its owner.
-void RankContacts::exchange_ghosts(Bodies& bodies) const {
-  std::vector<Parcel> out, in;
+void RankContacts::exchange_ghosts(Bodies& bodies) {
+  for (Parcel& p : out_) pack_ghosts(bodies, plan_.send[p.rank], p.bytes.data());
+  link_.exchange(out_, in_);
+  for (const Parcel& p : in_) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
+}
+
+// The ghost exchange's parcels, sized once per plan (no allocation a step).
+void RankContacts::size_parcels() {
+  out_.clear();
+  in_.clear();
   for (int q = 0; q < link_.ranks(); ++q) {
-    if (!plan_.send[q].empty()) out.push_back({q, pack_ghosts(bodies, plan_.send[q])});
-    if (!plan_.receive[q].empty()) in.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * kGhostBytes)});
+    if (!plan_.receive[q].empty()) in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
   }
-  link_.exchange(out, in);
-  for (const Parcel& p : in) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
 }
 
 void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
@@ -195,30 +205,28 @@ ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
 }
 
 long RankContacts::first_non_finite(const Bodies& bodies) const {
-  long mine = -1;  // the owned bodies are in increasing id: the first is the smallest
-  for (std::uint32_t b : plan_.owned)
-    if (!bodies.finite(b)) {
-      mine = long(b);
-      break;
-    }
-  return least_over_ranks(link_, mine);
+  return least_over_ranks(link_, first_non_finite_owned(bodies));
 }
 
-// One gather of the touching driver pairs' reactions (when wanted) and the ranks' contact counts; the owned
-// bodies' work (the next cut's weights) at rebuilds only (the lists hold until the next).
+long RankContacts::first_non_finite_owned(const Bodies& bodies) const {
+  for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
+    if (!bodies.finite(b)) return long(b);
+  return -1;
+}
+
+// The touching driver pairs' reactions, gathered at the steps that read them; the owned bodies'
+// work (the next cut's weights) at rebuilds only (the lists hold until the next).
 void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
   if (rebuilt) owned_work_ = owned_work(engine_->body_pairs(), engine_->driver_pairs(), store_);
+  if (!reactions_wanted_ && !stop_seen_) return;  // no collective: the drivers keep their last reactions
   std::vector<char> bytes;
-  append_section(bytes, reactions_wanted_ ? reaction_shares() : std::vector<ReactionShare>{});
-  append_section(bytes, std::vector<std::uint64_t>{owned_contacts(engine_->body_pairs(), engine_->driver_pairs(), store_)});
-  std::vector<ReactionShare> reactions;
-  contacts_ = 0;
+  append_section(bytes, reaction_shares());
+  std::vector<ReactionShare> all;
   for (const std::vector<char>& from : link_.all_gather(bytes)) {
     std::size_t at = 0;
-    for (const ReactionShare& x : read_section<ReactionShare>(from, at)) reactions.push_back(x);
-    contacts_ += read_section<std::uint64_t>(from, at).at(0);
+    for (const ReactionShare& x : read_section<ReactionShare>(from, at)) all.push_back(x);
   }
-  if (reactions_wanted_) add_reactions(std::move(reactions), drivers);
+  add_reactions(std::move(all), drivers);
 }
 
 EnergyParts RankContacts::take_energy() {
@@ -227,7 +235,7 @@ EnergyParts RankContacts::take_energy() {
   return sum_over_ranks(link_, mine);
 }
 
-StateEnergy RankContacts::state_energy(const Bodies& bodies, const Drivers& drivers) const {
+StateEnergy RankContacts::state_energy(const Bodies& bodies, const Drivers& drivers) {
   StateEnergy mine;
   for (std::uint32_t b : output_bodies()) mine.add_body(bodies, b);  // before a cut: rank 0 every body
   mine.open = taken_;  // J
@@ -235,7 +243,12 @@ StateEnergy RankContacts::state_energy(const Bodies& bodies, const Drivers& driv
     mine.elastic = engine_->elastic(drivers, &store_.ghost);
     mine.open.add(engine_->open_energy(&store_.ghost));
   }
-  return StateEnergy::from_words(link_.sum(mine.words()), std::uint64_t(link_.ranks()));  // integers: exact in any order
+  std::vector<std::uint64_t> words = mine.words();
+  words.push_back(engine_ ? owned_contacts(engine_->body_pairs(), engine_->driver_pairs(), store_) : 0);
+  std::vector<std::uint64_t> total = link_.sum(words);  // integers: exact in any order
+  contacts_ = total.back();
+  total.pop_back();
+  return StateEnergy::from_words(total, std::uint64_t(link_.ranks()));
 }
 
 void RankContacts::drop_energy() {

@@ -3,9 +3,10 @@
 // (their centres in its box of a recursive bisection weighted by each body's measured contact
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
-// to point from their owners (sim/ghost_plan.hpp); one gather per step shares the drivers'
-// reactions (summed in the one-process pair order) and the contact counts; the energy
-// ledger's exact sums are reduced only when it closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
+// to point from their owners (sim/ghost_plan.hpp); one reduction per step decides the rebuild
+// (and carries an interrupt); a gather shares the drivers' reactions (summed in the one-process
+// pair order) at the steps that read them; the contact count and the energy ledger's exact
+// sums are reduced only at output rows and when the ledger closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
 // reads the loads summed over the ranks and a sample of the centres. Every rank keeps arrays
@@ -47,6 +48,10 @@ class RankContacts {
   // moving driver read them each step, output only at its rows); when not, only the contact
   // count, and the drivers keep their last reactions.
   void want_reactions(bool wanted) { reactions_wanted_ = wanted; }
+  // The step's one collective ORs each rank's stop request (an interrupt) with the rebuild
+  // decision; a step that sees one keeps the records and reactions a checkpoint reads.
+  void ask_stop(bool asked) { stop_asked_ = asked; }
+  bool stop_seen() const { return stop_seen_; }  // some rank asked before this step's collective
   // Rebuilds at the next step from `whole`'s lists (a checkpoint read: the table on every rank).
   void force_rebuild() { forced_ = true; }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
@@ -70,6 +75,10 @@ class RankContacts {
   ExactEnergy output_flushed(const ContactEngine& whole) const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
   long first_non_finite(const Bodies& bodies) const;
+  long first_non_finite_owned(const Bodies& bodies) const;  // this rank's alone
+  // This rank's lists (null before its first step) and their bodies (local ids).
+  const ContactEngine* lists() const { return engine_.get(); }
+  const LocalStore& store() const { return store_; }
   // The bodies this rank integrates, by rotation path (empty before the first compute).
   const RotorGroups& owned_rotors() const { return owned_rotors_; }
   std::size_t owned() const { return plan_.owned.size(); }
@@ -79,11 +88,11 @@ class RankContacts {
   // ContactEngine::take_energy on each rank, summed exactly.
   EnergyParts take_energy();
   // A CSV row's energies over every rank (a collective): each rank's owned bodies and the
-  // pairs it answers for, and what take_energy would return, changing nothing.
-  StateEnergy state_energy(const Bodies& bodies, const Drivers& drivers) const;
+  // pairs it answers for, and what take_energy would return, changing nothing but contacts().
+  StateEnergy state_energy(const Bodies& bodies, const Drivers& drivers);
   // The energies of the set-up's contact stage: not stepped, not counted (this rank's alone).
   void drop_energy();
-  std::size_t contacts() const { return contacts_; }    // active sub-contacts, every rank's pairs
+  std::size_t contacts() const { return contacts_; }  // active sub-contacts, every rank's pairs, at the last state_energy
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t cuts() const { return cuts_; }          // rebuilds that cut the domain again
   double load_share() const { return load_share_; }   // this rank's share of the weight at the last rebuild
@@ -110,7 +119,8 @@ class RankContacts {
   void recut_if_unbalanced(const Bodies& bodies);
   std::vector<char> cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void exchange_ghosts(Bodies& bodies) const;
+  void exchange_ghosts(Bodies& bodies);
+  void size_parcels();
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
 
@@ -127,10 +137,12 @@ class RankContacts {
   RotorGroups owned_rotors_;
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
+  std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   bool forced_ = true;
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;
+  bool stop_asked_ = false, stop_seen_ = false;
   std::size_t rebuilds_ = 0;
   LinkCounts rebuild_traffic_;
   ExactEnergy taken_;        // J, the ended contacts' energies of earlier engines (rebuilds) since the last take_energy

@@ -11,12 +11,15 @@ std::uint64_t count_owned(const PairList& list, const LocalStore& store) {
   return contacts;
 }
 
-// Adds each pair's candidate feature pairs to both its bodies (twice to a driver pair's body).
-void add_work(const PairList& list, bool driver, std::vector<std::uint32_t>& work) {
+// Adds each pair's candidate feature pairs to both its bodies: twice to a driver pair's body,
+// and to the owned body of a pair with a ghost (both ranks compute that pair whole).
+void add_work(const PairList& list, bool driver, const std::vector<std::uint8_t>& ghost,
+              std::vector<std::uint32_t>& work) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::uint32_t slots = list.slot_begin[k + 1] - list.slot_begin[k];
-    work[list.pairs[k].i] += slots;
-    work[driver ? list.pairs[k].i : list.pairs[k].j] += slots;
+    const std::uint32_t a = list.pairs[k].i, b = driver ? a : list.pairs[k].j;
+    work[ghost[a] ? b : a] += slots;
+    work[ghost[b] ? a : b] += slots;
   }
 }
 
@@ -34,8 +37,8 @@ std::uint64_t owned_contacts(const PairList& body_pairs, const PairList& driver_
 std::vector<std::uint32_t> owned_work(const PairList& body_pairs, const PairList& driver_pairs,
                                       const LocalStore& store) {
   std::vector<std::uint32_t> work(store.global_id.size(), 0), owned;
-  add_work(body_pairs, false, work);
-  add_work(driver_pairs, true, work);
+  add_work(body_pairs, false, store.ghost, work);
+  add_work(driver_pairs, true, store.ghost, work);
   for (std::size_t k = 0; k < work.size(); ++k)
     if (!store.ghost[k]) owned.push_back(work[k]);
   return owned;

@@ -22,8 +22,9 @@ EnergyParts sum_over_ranks(const RankLink& link, const ExactEnergy& mine);
 std::uint64_t owned_contacts(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store);
 
 // Each owned body's measured contact work, in local order: the candidate feature pairs of
-// every pair it is in (either side; a driver pair's twice, as it has one side), the weight of
-// the next cut (sim/domain_cut.hpp).
+// every pair it is in (either side; a driver pair's twice, as it has one side, and a pair's
+// with a ghost twice, as this rank computes it whole), the weight of the next cut
+// (sim/domain_cut.hpp).
 std::vector<std::uint32_t> owned_work(const PairList& body_pairs, const PairList& driver_pairs,
                                       const LocalStore& store);
 

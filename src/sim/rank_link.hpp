@@ -84,12 +84,8 @@ class RankLink {
     return in;
   }
 
-  // True on every rank when it is true on some rank.
-  bool any(bool mine) const {
-    for (const std::vector<char>& b : all_gather({char(mine)}))
-      if (b.at(0)) return true;
-    return false;
-  }
+  // True on every rank when it is true on some rank (one reduction).
+  bool any(bool mine) const { return sum({std::uint64_t(mine)}).at(0) > 0; }
 
  private:
   static void append_values(std::vector<char>& bytes, const std::vector<std::uint64_t>& values) {

@@ -1,11 +1,13 @@
 #include "sim/runner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <omp.h>
@@ -321,10 +323,13 @@ std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
   return buf;
 }
 
+// A collective in distributed runs: every rank calls it at the same step (its bodies to rank 0).
 [[noreturn]] void fail_non_finite(const Simulation& sim, const std::string& what, const LastGood& last_good,
                                   std::int64_t good_step, const std::string& dir, bool first_check_after_resume) {
   const std::string good = dir + "/bodies_last_good.vtu";
-  if (sim.rank() == 0) write_bodies_vtu(good, last_good.with_constants_of(sim.bodies), sim.shapes());
+  const LastGood gathered = sim.distributed() ? last_good.gathered(*sim.link()) : LastGood{};
+  const LastGood& whole = sim.distributed() ? gathered : last_good;
+  if (sim.rank() == 0) write_bodies_vtu(good, whole.with_constants_of(sim.bodies), sim.shapes());
   char msg[256];
   std::snprintf(msg, sizeof(msg), " became non-finite by step %lld (t = %.6g s). Likely cause: ",
                 static_cast<long long>(sim.step_index()), sim.time());
@@ -334,6 +339,49 @@ std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
 
 std::string body_name(const Simulation& sim, long body) {
   return "body " + std::to_string(body) + " (shape '" + sim.shapes()[sim.bodies.shape[body]].name + "')";
+}
+
+// One process keeps every body; a rank the bodies it owns (before a cut: rank 0 every body).
+void keep_last_good(const Simulation& sim, LastGood& last_good) {
+  if (const RankContacts* r = sim.rank_contacts()) last_good.keep(sim.bodies, r->output_bodies());
+  else last_good.keep(sim.bodies);
+}
+
+// What a finiteness check finds: the first body whose state is not finite (-1: none) and, in a
+// distributed run, the overlap warning due ("": none; one process checks after, as at rows).
+struct StateCheck {
+  long bad;
+  std::string overlap;
+};
+
+// Distributed runs: each rank checks the bodies it owns and the pairs it answers for, and one
+// all-gather gives every rank the least id and the first too-deep contact in one process's
+// scan order (the same answer as the whole state's, with no state gathered).
+StateCheck check_state(const Simulation& sim, const OverlapWatch& watch, double kn, double kn_driver) {
+  const RankContacts* r = sim.rank_contacts();
+  if (!r) return {first_non_finite_body(sim.bodies), ""};
+  std::optional<OverlapWatch::Deep> deep;
+  if (sim.scene().forces.contact.present && !watch.warned() && r->lists())
+    deep = watch.first_deep(r->lists()->body_pairs(), r->lists()->driver_pairs(), sim.drivers, kn, kn_driver,
+                            sim.time(), {&r->store().global_id, &r->store().ghost});
+  std::vector<char> mine;
+  append_record(mine, std::int64_t(r->first_non_finite_owned(sim.bodies)));
+  append_record(mine, deep ? deep->key : std::array<std::uint64_t, 2>{~0ull, ~0ull});
+  if (deep) mine.insert(mine.end(), deep->warning.begin(), deep->warning.end());
+  StateCheck c{-1, ""};
+  std::array<std::uint64_t, 2> least{~0ull, ~0ull};
+  for (const std::vector<char>& from : sim.link()->all_gather(mine)) {
+    std::int64_t bad = -1;
+    std::array<std::uint64_t, 2> key{};
+    std::memcpy(&bad, from.data(), sizeof bad);
+    std::memcpy(key.data(), from.data() + sizeof bad, sizeof key);
+    if (bad >= 0 && (c.bad < 0 || bad < c.bad)) c.bad = long(bad);
+    if (from.size() > sizeof bad + sizeof key && key < least) {
+      least = key;
+      c.overlap.assign(from.begin() + std::ptrdiff_t(sizeof bad + sizeof key), from.end());
+    }
+  }
+  return c;
 }
 
 // The energy ledger's driver and external work become non-finite while bodies may not.
@@ -387,7 +435,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   auto previous = std::signal(SIGINT, on_interrupt);
   auto previous_term = std::signal(SIGTERM, on_interrupt);  // batch schedulers send it before killing
   LastGood last_good;
-  last_good.keep(sim.bodies);
+  keep_last_good(sim, last_good);
   std::int64_t good_step = sim.step_index();
   bool first_check = !o.resume.empty();  // a blow-up before the first check after a resume blames the checkpoint
   const auto start = Clock::now();
@@ -397,7 +445,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   const ContactOperator& law = sim.scene().forces.contact;
   const double kn = sim.time_step().kn_particle, kn_driver = sim.time_step().kn_driver;  // N/m
   OverlapWatch overlaps(sim.bodies, sim.shapes());  // warns once when a contact is too deep
-  auto check_overlaps = [&]() {  // O(contacts): at each CSV row and finiteness check that gathered the state
+  auto check_overlaps = [&]() {  // O(contacts): at each CSV row that gathered the state, one process's checks
     if (!law.present || !io) return;
     const std::string w = overlaps.check(sim.engine().body_pairs(), sim.engine().driver_pairs(), sim.drivers, kn,
                                          kn_driver, sim.time());
@@ -418,6 +466,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
                           stopping;
     sim.engine().record_contacts(recorded);
     sim.want_driver_reactions(recorded || csv.due_at(t_next, dt));  // the driver CSVs and checkpoints read them
+    sim.ask_stop(g_interrupted);
     try {
       const auto step_start = Clock::now();
       sim.step();
@@ -430,21 +479,24 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (governor.after_step(stepping) != threads) omp_set_num_threads(threads = governor.threads());
     const std::int64_t s = sim.step_index();
     if (s % kCheckSteps == 0 || s == last_step) {
-      sim.gather_state();  // rank 0 keeps the last good state and checks the overlaps
-      const long bad = sim.first_non_finite();  // each rank its own bodies, the first over all: all stop alike
-      if (bad >= 0) fail_non_finite(sim, body_name(sim, bad), last_good, good_step, o.out_dir, first_check);
+      const StateCheck c = check_state(sim, overlaps, kn, kn_driver);  // distributed: all stop alike
+      if (c.bad >= 0) fail_non_finite(sim, body_name(sim, c.bad), last_good, good_step, o.out_dir, first_check);
       const std::string ledger = non_finite_ledger(sim.ledger);
       if (!ledger.empty()) fail_non_finite(sim, ledger, last_good, good_step, o.out_dir, first_check);
       first_check = false;
-      if (io) last_good.keep(sim.bodies);
+      keep_last_good(sim, last_good);
       good_step = s;
-      check_overlaps();
+      if (!sim.distributed()) check_overlaps();
+      if (!c.overlap.empty() && io && !overlaps.warned()) std::fprintf(stderr, "%s\n", c.overlap.c_str());
+      if (!c.overlap.empty()) overlaps.set_warned();
     }
     if (vtk.due(sim.time(), dt)) writer.frame();
     if (csv.due(sim.time(), dt) && writer.energy_row()) check_overlaps();  // distributed: its pairs on rank 0 if gathered
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
-    const bool interrupted = sim.any_rank(g_interrupted);  // a collective: every rank stops at the same step
-    if (interrupted && !recorded) {  // the checkpoint needs the contacts' records: one more step
+    const std::optional<bool> seen = sim.stop_seen();  // in the step's collective: every rank stops at the same step
+    const bool interrupted = seen ? *seen : sim.any_rank(g_interrupted);  // else a collective of its own
+    const bool kept = recorded || seen.value_or(false);  // a stop seen inside the step kept the records
+    if (interrupted && !kept) {  // the checkpoint needs the contacts' records: one more step
       g_interrupted = stopping = true;
       continue;
     }
@@ -460,8 +512,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       last_print = now;
       const double wall = std::chrono::duration<double>(now - start).count();
       const double rate = double(s - first_step) / wall;
-      std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %zu contacts  left %s%s",
-                   sim.time(), end_time, static_cast<long long>(s), rate, sim.contacts(),
+      // Distributed runs count the contacts at CSV rows only (a reduction): none shown here.
+      const std::string contacts = sim.distributed() ? "" : std::to_string(sim.contacts()) + " contacts  ";
+      std::fprintf(stderr, "t = %.4g / %.4g s  step %lld  %.0f steps/s  %sleft %s%s",
+                   sim.time(), end_time, static_cast<long long>(s), rate, contacts.c_str(),
                    format_duration(double(last_step - s) / rate).c_str(), isatty(2) ? "      \r" : "\n");
     }
   }

@@ -107,6 +107,16 @@ class Simulation {
     if (ranks_) ranks_->want_reactions(read || drivers_move_);
   }
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
+  // Distributed runs with contacts: the step's one collective ORs each rank's `asked` (the run
+  // loop's interrupt) and a step that sees one keeps what a checkpoint reads; stop_seen() says
+  // whether it did (nullopt: no such collective, ask any_rank).
+  void ask_stop(bool asked) {
+    if (ranks_) ranks_->ask_stop(asked);
+  }
+  std::optional<bool> stop_seen() const {
+    if (ranks_ && scene_.forces.contact.present) return ranks_->stop_seen();
+    return std::nullopt;
+  }
   std::size_t contacts() const { return ranks_ ? ranks_->contacts() : engine_->stats().contacts; }  // active sub-contacts
   std::size_t rebuilds() const { return ranks_ ? ranks_->rebuilds() : engine_->stats().rebuilds; }
 

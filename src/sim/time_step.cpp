@@ -257,25 +257,38 @@ OverlapWatch::OverlapWatch(const Bodies& bodies, const std::vector<Shape>& shape
 std::string OverlapWatch::check(const PairList& body_pairs, const PairList& driver_pairs, const Drivers& drivers,
                                 double kn_particle, double kn_driver, double time) {
   if (warned_) return "";
+  const std::optional<Deep> deep = first_deep(body_pairs, driver_pairs, drivers, kn_particle, kn_driver, time);
+  if (!deep) return "";
+  warned_ = true;
+  return deep->warning;
+}
+
+std::optional<OverlapWatch::Deep> OverlapWatch::first_deep(const PairList& body_pairs, const PairList& driver_pairs,
+                                                           const Drivers& drivers, double kn_particle,
+                                                           double kn_driver, double time, Local local) const {
   for (const PairList* list : {&body_pairs, &driver_pairs}) {
     const bool with_driver = list == &driver_pairs;
     for (std::size_t k = 0; k < list->size(); ++k) {
-      const BodyPair& p = list->pairs[k];
-      const double r = with_driver ? radius_[p.i] : std::min(radius_[p.i], radius_[p.j]);  // m
+      const BodyPair p = list->pairs[k];
+      if (local.ghost && (*local.ghost)[p.i]) continue;
+      const std::uint32_t i = local.global_id ? (*local.global_id)[p.i] : p.i;
+      const std::uint32_t j = local.global_id && !with_driver ? (*local.global_id)[p.j] : p.j;
+      const double r = with_driver ? radius_[i] : std::min(radius_[i], radius_[j]);  // m
       for (std::uint32_t s = list->slot_begin[k]; s < list->slot_begin[k + 1]; ++s) {
         if (!list->active[s]) continue;  // only an active slot has a state in a sparse list
         const double overlap = -list->history(s).gap;  // m
         if (overlap <= kOverlapFraction * r) continue;
-        warned_ = true;
-        const std::string partner = with_driver ? "driver '" + drivers.name(p.j) + "'" : format("body %u", p.j);
-        return format("warning: t = %.4g s: an overlap of %.3g mm between body %u and %s exceeds %.2g x the inscribed "
-                      "radius %.3g mm: the impact is too fast for kn = %.3g N/m (unphysical; raise kn or lower the speeds)",
-                      time, 1e3 * overlap, p.i, partner.c_str(), kOverlapFraction, 1e3 * r,
-                      with_driver ? kn_driver : kn_particle);
+        const std::string partner = with_driver ? "driver '" + drivers.name(j) + "'" : format("body %u", j);
+        return Deep{{(std::uint64_t(with_driver) << 32) | i, j},
+                    format("warning: t = %.4g s: an overlap of %.3g mm between body %u and %s exceeds %.2g x the "
+                           "inscribed radius %.3g mm: the impact is too fast for kn = %.3g N/m (unphysical; raise kn "
+                           "or lower the speeds)",
+                           time, 1e3 * overlap, i, partner.c_str(), kOverlapFraction, 1e3 * r,
+                           with_driver ? kn_driver : kn_particle)};
       }
     }
   }
-  return "";
+  return std::nullopt;
 }
 
 }  // namespace polydem

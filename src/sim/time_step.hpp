@@ -1,5 +1,7 @@
 #pragma once
 // The critical time step of the contact law and the step a run uses.
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,10 +83,28 @@ std::string fast_impact_warning(const Bodies& bodies, const std::vector<Shape>& 
 // reports once an overlap deeper than kOverlapFraction of the smaller inscribed radius.
 class OverlapWatch {
  public:
+  // A too-deep contact: where it comes in one process's scan (body pairs, then driver pairs,
+  // each by (i, j) in global ids) and its warning line.
+  struct Deep {
+    std::array<std::uint64_t, 2> key;
+    std::string warning;
+  };
+  // A rank's lists: its local ids' global ids, and which are ghosts (pairs whose lower body is
+  // a ghost are its owner's to check).
+  struct Local {
+    const std::vector<std::uint32_t>* global_id;
+    const std::vector<std::uint8_t>* ghost;
+  };
+
   OverlapWatch(const Bodies& bodies, const std::vector<Shape>& shapes);
   // A warning line the first time an active contact of the lists is too deep, else "".
   std::string check(const PairList& body_pairs, const PairList& driver_pairs, const Drivers& drivers, double kn_particle,
                     double kn_driver, double time);
+  // The first too-deep active contact of the lists, if any (whether warned or not).
+  std::optional<Deep> first_deep(const PairList& body_pairs, const PairList& driver_pairs, const Drivers& drivers,
+                                 double kn_particle, double kn_driver, double time, Local local = {}) const;
+  bool warned() const { return warned_; }
+  void set_warned() { warned_ = true; }
 
  private:
   std::vector<double> radius_;  // m, inscribed radius per body

@@ -104,6 +104,33 @@ expect_exit 2 "became non-finite" mpirun --oversubscribe -q --mca mpi_yield_when
 cmp "$tmp/blowup/bodies_last_good.vtu" "$tmp/blowup2/bodies_last_good.vtu" || fail "-np 2 blow-up: another last good state"
 echo "ok: a blow-up at -np 2 stops as the plain run: $plain_error"
 
+# Too deep a contact (200 m/s into a soft floor, no CSV rows: checked at the finiteness checks
+# only): each rank checks the pairs it answers for, and the first in one process's order is
+# warned of once, by rank 0, with the plain run's line (bodies 2 and 3 lie past the cut).
+cat > "$tmp/deep.yaml" <<YAML
+simulation: {duration: "0.12 ms", dt: auto}
+shapes: [$here/../../shapes/platonic.shp]
+bodies:
+  - {shape: sphere, position: [-0.03, 0, 0.0052], velocity: [0, 0, -1]}
+  - {shape: sphere, position: [-0.01, 0, 0.0052], velocity: [0, 0, -1]}
+  - {shape: sphere, position: [0.01, 0, 0.02], velocity: [0, 0, -200]}
+  - {shape: sphere, position: [0.03, 0, 0.02], velocity: [0, 0, -200]}
+drivers:
+  - wall: {name: floor, point: [0, 0, 0], normal: [0, 0, 1]}
+forces:
+  - contact_polyhedron:
+      config: {kn: 1.0e5, kt: 1.0e5, mu: 0.5, en: 0.5}
+YAML
+"$polydem" run "$tmp/deep.yaml" --out "$tmp/deep1" --threads 1 2> "$tmp/deep1.err" > /dev/null || fail "deep: plain run"
+plain_warning=$(grep "an overlap of" "$tmp/deep1.err")
+[ -n "$plain_warning" ] || fail "deep: the plain run did not warn"
+for n in 2 3; do
+  mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np $n "$polydem" run "$tmp/deep.yaml" --out "$tmp/deep$n" \
+    --threads 1 2> "$tmp/deep$n.err" > /dev/null || fail "deep: -np $n run"
+  [ "$(grep "an overlap of" "$tmp/deep$n.err")" = "$plain_warning" ] || { cat "$tmp/deep$n.err"; fail "deep: -np $n warned otherwise"; }
+done
+echo "ok: a too-deep contact past the cut is warned of once at -np 2 and 3, as by the plain run"
+
 printf 'simulation:\n  duration: "1 s"\n  dtt: 3\n' > "$tmp/broken.yaml"
 expect_exit 1 "broken.yaml" mpirun --oversubscribe -q -np 2 "$polydem" run "$tmp/broken.yaml" --out "$tmp/bad"
 [ "$(cat "$tmp/out" "$tmp/err" | grep -c .)" -eq 1 ] || { cat "$tmp/out" "$tmp/err"; fail "not one message"; }
