@@ -44,9 +44,14 @@ struct DirectSums {
   std::vector<BodySum> sums;
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`
+  // Every sum is +0 (reset, or each taken and cleared by ForceSums since the loop): the first
+  // chunk's walk then starts from them as they are, no pass to clear its home bodies' sums.
+  // Read and cleared in the loop by the first chunk's thread alone.
+  bool zero = false;
   void reset(std::size_t n_bodies) {  // at each rebuild: the split is cut again in the loop
     sums.assign(n_bodies, BodySum{});
     split.threads = 0;
+    zero = true;
   }
 };
 

@@ -203,6 +203,7 @@ void Simulation::step(bool leave_kick_open) {
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
   });
+  if (close_last) engine_->sums_taken();
   drivers.advance(time(), dt_);
   // Drag and fluid forces read every body (the void fraction, the power summed in id order).
   if (external_ && !one_process) ranks_->sync_bodies(bodies);
@@ -229,6 +230,7 @@ void Simulation::step(bool leave_kick_open) {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
+  if (contacts && one_process && !leave_kick_open) engine_->sums_taken();
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts && one_process;
   ++step_;
@@ -239,6 +241,7 @@ void Simulation::close_step() {
   if (!std::exchange(kick_open_, false)) return;
   in_team(bodies.size() >= kParallelMinItems,
           [&] { kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies))); });
+  engine_->sums_taken();
 }
 
 EnergyRow Simulation::energy() const {
