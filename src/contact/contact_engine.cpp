@@ -419,6 +419,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   if (sum_bodies) reduce_bodies(bodies);
 #pragma omp single nowait
   {
+    if (sum_bodies && !bodies.ghost) sums_taken();  // every body's, after reduce_bodies' barrier
     add_totals();
     flush_ended(bodies.ghost);
     reduce_drivers(drivers);
@@ -509,7 +510,7 @@ ExactStored ContactEngine::elastic(const Drivers& drivers, const std::vector<std
   return total;
 }
 
-void ContactEngine::reduce_bodies(const LocalBodies& bodies) const {
+void ContactEngine::reduce_bodies(const LocalBodies& bodies) {
   // One process has no ghost: its loop is compiled without the test.
   const ForceSums sums = force_sums(bodies);
   with_flag(bodies.ghost != nullptr, [&](auto has_ghosts) {

@@ -44,7 +44,7 @@ struct ContactStats {
 // kick's pass (Simulation::step), which copies it into each thread's loop: the lists'
 // addresses then stay in registers.
 struct ForceSums {
-  const BodySum* body;                // per body
+  BodySum* body;                      // per body, cleared once read (DirectSums::zero)
   const std::uint32_t* driver_begin;  // per body, its driver pairs [driver_begin[b], driver_begin[b + 1])
   const std::uint16_t* touching;      // per driver pair
   const Vec3 *force_i, *torque_i;     // per driver pair
@@ -52,6 +52,7 @@ struct ForceSums {
   Vec3* torque;
   [[gnu::always_inline]] void operator()(std::size_t b) const {
     Vec3 f = body[b].force, t = body[b].torque;
+    body[b] = BodySum{};
     for (std::uint32_t k = driver_begin[b]; k < driver_begin[b + 1]; ++k) {
       if (!touching[k]) continue;
       f += force_i[k];
@@ -90,7 +91,9 @@ class ContactEngine {
   // sums(b) adds the pairs' forces and torques on owned body b to its force and torque, in the
   // fixed order of its pairs (the same bits for any thread count); `sums` holds the lists'
   // addresses, for a loop over the bodies that keeps them in registers (integrate.hpp's kick_after).
-  ForceSums force_sums(const LocalBodies& bodies) const;
+  ForceSums force_sums(const LocalBodies& bodies);
+  // Every body's sum was taken by force_sums (each cleared): the next loop starts from them.
+  void sums_taken() { direct_.zero = true; }
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
@@ -138,7 +141,7 @@ class ContactEngine {
   // Every body the same radius and mass (spheres: the kernel then reads neither per pair), or none.
   std::optional<EqualSpheres> equal_spheres(const LocalBodies& bodies) const;
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
-  void reduce_bodies(const LocalBodies& bodies) const;
+  void reduce_bodies(const LocalBodies& bodies);
   void reduce_drivers(Drivers& drivers) const;
   void add_totals();
   void flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost);
@@ -189,7 +192,7 @@ class ContactEngine {
   ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy
 };
 
-inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) const {
+inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) {
   return {direct_.sums.data(),          driver_begin_.data(),        driver_list_.touching.data(),
           driver_list_.force_i.data(), driver_list_.torque_i.data(), bodies.force->data(),
           bodies.torque->data()};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <type_traits>
+#include <utility>
 
 #include "contact/pair_kernel.hpp"
 #include "contact/pair_split.hpp"
@@ -29,6 +30,7 @@ inline void start_home_sums(DirectSums& direct, int t) {
   const PairSplit& split = direct.split;
   BodySum* const sums = direct.sums.data();
   if (t == 0) {  // no earlier chunk
+    if (std::exchange(direct.zero, false)) return;
     for (std::uint32_t h = split.home_begin[0]; h < split.home_begin[1]; ++h) sums[split.homes[h]] = BodySum{};
     return;
   }

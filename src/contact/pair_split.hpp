@@ -11,8 +11,9 @@
 namespace polydem {
 
 // A body's force (N) and torque (N m) from its body pairs, each added in increasing pair order.
-// A cache line each: threads summing neighbouring bodies share no line.
-struct alignas(64) BodySum {
+// 48 bytes, not a cache line each: two threads write neighbours' sums only where their chunks'
+// home bodies meet, and every step streams each body's sum twice (the loop, the closing pass).
+struct BodySum {
   Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
 };
 
@@ -44,9 +45,14 @@ struct DirectSums {
   std::vector<BodySum> sums;
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`
+  // Every sum is +0 (reset, or each taken and cleared by ForceSums since the loop): the first
+  // chunk's walk then starts from them as they are, no pass to clear its home bodies' sums.
+  // Read and cleared in the loop by the first chunk's thread alone.
+  bool zero = false;
   void reset(std::size_t n_bodies) {  // at each rebuild: the split is cut again in the loop
     sums.assign(n_bodies, BodySum{});
     split.threads = 0;
+    zero = true;
   }
 };
 

@@ -4,44 +4,17 @@
 
 #include <type_traits>
 
-#include "integrate/free_rotor.hpp"
 #include "polydem/parallel.hpp"
 
 namespace polydem {
 
 namespace {
 
+using integrate_detail::drift_body;
+using integrate_detail::predict_body;
+
 // Relative tolerance on principal moments for the isotropic fast path.
 constexpr double kIsotropicTolerance = 1e-12;
-
-// Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
-// (an isotropic body keeps its w: it turns about L; a sphere does not turn its q at all).
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void drift_body(const BodyArrays& b, std::size_t i, double dt) {
-  b.position[i] += b.velocity[i] * dt;
-  if constexpr (kRotor == Rotor::sphere) {
-    return;
-  } else if constexpr (kRotor == Rotor::isotropic) {
-    // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
-    free_rotor::rotate_isotropic(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
-    free_rotor::renormalize(b.orientation[i]);
-  } else {
-    free_rotor::rotate_asymmetric(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
-    free_rotor::renormalize(b.orientation[i]);
-    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
-  }
-}
-
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
-  b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
-  if constexpr (kRotor != Rotor::asymmetric) {
-    b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
-  } else {
-    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
-    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
-  }
-}
 
 // Runs body(arrays, i, rotor path) over the bodies of the three groups.
 template <class Body>
@@ -135,11 +108,7 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
   over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
-    integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
-    drift_body<decltype(rotor)::value>(a, i, dt);
-    predict_body<decltype(rotor)::value>(a, i, h);  // the last step's force: before it is cleared
-    a.force[i] = a.mass[i] * gravity;
-    a.torque[i].setZero();
+    integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
   });
 }
 

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "integrate/free_rotor.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/parallel.hpp"
 #include "polydem/shape.hpp"
@@ -116,6 +117,47 @@ template <Rotor kRotor>
     b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
   }
 }
+
+// Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
+// (an isotropic body keeps its w: it turns about L; a sphere does not turn its q at all).
+template <Rotor kRotor>
+[[gnu::always_inline]] inline void drift_body(const BodyArrays& b, std::size_t i, double dt) {
+  b.position[i] += b.velocity[i] * dt;
+  if constexpr (kRotor == Rotor::sphere) {
+    return;
+  } else if constexpr (kRotor == Rotor::isotropic) {
+    // The rotation is about L itself, so the world angular velocity is unchanged: keep it.
+    free_rotor::rotate_isotropic(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
+    free_rotor::renormalize(b.orientation[i]);
+  } else {
+    free_rotor::rotate_asymmetric(b.orientation[i], b.angular_momentum[i], b.inertia[i], dt);
+    free_rotor::renormalize(b.orientation[i]);
+    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
+  }
+}
+
+template <Rotor kRotor>
+[[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
+  b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
+  if constexpr (kRotor != Rotor::asymmetric) {
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
+  } else {
+    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
+  }
+}
+
+// A step's opening for body i: kick(h), drift(dt), predict_end_velocities(h) with the last
+// step's force, then force = m gravity and torque = 0 (m/s^2).
+template <Rotor kRotor>
+[[gnu::always_inline]] inline void start_body(const BodyArrays& a, std::size_t i, double h, double dt,
+                                              const Vec3& gravity) {
+  kick_body<kRotor>(a, i, h);
+  drift_body<kRotor>(a, i, dt);
+  predict_body<kRotor>(a, i, h);  // the last step's force: before it is cleared
+  a.force[i] = a.mass[i] * gravity;
+  a.torque[i].setZero();
+}
 }  // namespace integrate_detail
 
 // kick(b, h, groups) with before(i) run on each body just before its kick (a step's closing
@@ -147,6 +189,22 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups);
 // then force = m gravity and torque = 0 (the new step's forces start from gravity, m/s^2).
 // Each body's arithmetic is that of the separate calls: the same bits, one loop instead of four.
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity);
+
+// The last step's closing pass (kick_after(b, h, groups, before)) and start_step in one pass
+// over the bodies, body by body: each body's arithmetic is theirs (the same bits), its arrays
+// read and written once, not twice. Nothing may read the state between the two (Simulation::step).
+template <class Before>
+void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
+                          const Before& before) {
+  auto one = [h, dt, gravity, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+    before(i);
+    integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
+    integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
+  };
+  over_group<Rotor::sphere>(b, groups.spheres, one);
+  over_group<Rotor::isotropic>(b, groups.isotropic, one);
+  over_group<Rotor::asymmetric>(b, groups.asymmetric, one);
+}
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).
 void update_angular_velocity(Bodies& b);

@@ -1,6 +1,7 @@
 #include "sim/simulation.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "integrate/integrate.hpp"
 #include "polydem/error.hpp"
@@ -186,7 +187,7 @@ void Simulation::driver_work_half() {
 // meet at three barriers (spheres): after the opening pass, after the pair loops, after the
 // closing pass (each body's contact force sum, then its kick). Many ranks: the contact stage
 // runs between the regions, exchanges and all, and each rank moves the bodies it owns.
-void Simulation::step() {
+void Simulation::step(bool leave_kick_open) {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
@@ -194,10 +195,15 @@ void Simulation::step() {
   // the contact stage hands some to other ranks before the closing kick (a reference: it
   // reads the new owners).
   const RotorGroups& moved = one_process || !contacts ? rotors_ : ranks_->owned_rotors();
+  const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
   in_team(team, [&] {
-    start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
+    if (close_last)
+      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)));
+    else
+      start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
   });
+  if (close_last) engine_->sums_taken();
   drivers.advance(time(), dt_);
   // Drag and fluid forces read every body (the void fraction, the power summed in id order).
   if (external_ && !one_process) ranks_->sync_bodies(bodies);
@@ -219,14 +225,23 @@ void Simulation::step() {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       engine_->forces(local, drivers, dt_, !stale, false);
-      kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local));
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local));
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
+  if (contacts && one_process && !leave_kick_open) engine_->sums_taken();
   if (contacts) driver_work_half();
+  kick_open_ = leave_kick_open && contacts && one_process;
   ++step_;
   if (ledger_closes(step_)) close_ledger();
+}
+
+void Simulation::close_step() {
+  if (!std::exchange(kick_open_, false)) return;
+  in_team(bodies.size() >= kParallelMinItems,
+          [&] { kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies))); });
+  engine_->sums_taken();
 }
 
 EnergyRow Simulation::energy() const {

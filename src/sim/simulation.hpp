@@ -46,7 +46,14 @@ class Simulation {
   Simulation(const Scene& scene, const ShapeLibrary& library, std::vector<BodySpec> specs,
              const RankLink* link = nullptr);
 
-  void step();  // one velocity-Verlet step of dt
+  // One velocity-Verlet step of dt. `leave_kick_open`: its closing kick is left to the next
+  // step's opening pass (one pass over the bodies for both: each body's arithmetic and bits as
+  // two passes'), so nothing may read the bodies before that step or close_step(). One process
+  // with contacts only; elsewhere the step closes as usual.
+  void step(bool leave_kick_open = false);
+  // Applies a closing kick left open (nothing to do otherwise): the bodies at the full step.
+  void close_step();
+  bool kick_open() const { return kick_open_; }
 
   // The contacts' energies enter `ledger` when it closes, at the end of every kLedgerSteps-th
   // step (close_ledger; a collective); between, each pair sums its own, flushed exactly when its
@@ -139,6 +146,7 @@ class Simulation {
   std::unique_ptr<RankContacts> ranks_;  // distributed runs: this rank's contact stage
   StateEnergy summed_;                   // distributed runs: at the last sum_energy
   bool drivers_move_ = false;            // a driver translates, turns or is a servo
+  bool kick_open_ = false;               // the last step's closing kick is still to apply (step)
 };
 
 // Index of the first body whose state is not finite, or -1.

@@ -30,7 +30,7 @@ commit=${COMMIT:-$(git rev-parse --short HEAD)}
 counts() {  # scene steps -> "Ir L1misses LLmisses" of the steps
   rm -rf "$work/out"
   valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --I1=32768,8,64 --LL=33554432,16,64 \
-      --collect-atstart=no --toggle-collect='polydem::Simulation::step()' \
+      --collect-atstart=no --toggle-collect='polydem::Simulation::step()' --toggle-collect='polydem::Simulation::step(bool)' \
       --callgrind-out-file="$work/cg.out" "$bin" run "$1" --out "$work/out" --threads 1 \
       --fixed-threads --until "$(python3 -c "print($2 * 5e-6)")" > /dev/null 2> "$work/log" \
       || { cat "$work/log"; exit 1; }
