@@ -2,7 +2,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 
 #include "output/appended.hpp"
