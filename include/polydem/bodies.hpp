@@ -1,6 +1,7 @@
 #pragma once
 // Body state as structure-of-arrays, split by how hot each field is.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "polydem/math.hpp"
@@ -30,6 +31,9 @@ struct Bodies {
 
   // Cold: output only.
   std::vector<int> group;
+  // The user id of the body at each index: its place in the scene's body list (files and
+  // messages name it); the indices follow space (sim/body_order.hpp) or that list.
+  std::vector<std::uint32_t> id;
 
   std::size_t size() const { return position.size(); }
 
@@ -48,6 +52,8 @@ struct Bodies {
     mass.resize(n, 0.0);
     inertia.resize(n, Vec3::Zero());
     group.resize(n, 0);
+    for (std::size_t b = id.size(); b < n; ++b) id.push_back(std::uint32_t(b));
+    id.resize(n);
   }
 
   // The state integration moves (pose, velocity, angular momentum) of body b is finite.

@@ -12,6 +12,7 @@
 #include "io/generate.hpp"
 #include "io/scene.hpp"
 #include "polydem/error.hpp"
+#include "sim/checkpoint.hpp"
 #include "sim/run_limits.hpp"
 #include "sim/runner.hpp"
 #include "sim/step_accuracy.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 const char* kRunHelp =
     "usage: polydem run SCENE.yaml [--out DIR] [--threads N [--fixed-threads]] [--until T]\n"
-    "                   [--resume CHECKPOINT [--force]]\n"
+    "                   [--resume CHECKPOINT [--force]] [--body-order space|input]\n"
     "  --out DIR        output folder (default: output.dir of the scene, else out/ beside it)\n"
     "  --threads N      OpenMP threads (default: simulation.threads, else all cores);\n"
     "                   results are bitwise identical for any N; the run uses fewer while\n"
@@ -32,6 +33,8 @@ const char* kRunHelp =
     "  --resume FILE    continue bit for bit from a checkpoint_NNNNNN.bin of this scene; the CSV\n"
     "                   files of the output folder are cut back to the checkpoint's time\n"
     "  --force          resume a checkpoint written for another scene (with a warning)\n"
+    "  --body-order space|input  how a fresh run stores its bodies (simulation.body_order);\n"
+    "                   a resumed run keeps its checkpoint's order\n"
     "Writes scene.pvd (ParaView), bodies/drivers/contacts VTK files, energy.csv and checkpoints.\n"
     "Ctrl-C or SIGTERM stops at the end of the current step and writes a checkpoint to resume\n"
     "from. Exit codes: 0 done, 1 bad input, 2 the run failed, 3 interrupted (checkpoint written).\n";
@@ -49,6 +52,7 @@ struct RunArgs {
   std::string resume;
   bool force = false;
   bool fixed_threads = false;
+  std::optional<SimulationSettings::BodyOrder> body_order;
 };
 
 double parse_seconds(const std::string& text) {
@@ -84,6 +88,11 @@ RunArgs parse_run_args(const std::vector<std::string>& args, const char* help, b
     else if (run && a == "--resume") r.resume = value();
     else if (run && a == "--force") r.force = true;
     else if (run && a == "--fixed-threads") r.fixed_threads = true;
+    else if (run && a == "--body-order") {
+      const std::string& v = value();
+      if (v != "space" && v != "input") throw InputError("--body-order: expected space or input, got '" + v + "'");
+      r.body_order = v == "space" ? SimulationSettings::BodyOrder::space : SimulationSettings::BodyOrder::input;
+    }
     else if (!a.empty() && a[0] == '-') throw InputError("unknown option '" + a + "' (see --help)");
     else if (r.scene.empty()) r.scene = a;
     else throw InputError("unexpected argument '" + a + "' (one scene file per run)");
@@ -143,9 +152,13 @@ void warn_fast_impacts(const Simulation& sim) {
 
 // Shapes, bodies and the simulation of a parsed scene (threads are set before: the first
 // contact search already runs in parallel).
-std::unique_ptr<Simulation> build(const Scene& scene, const RankLink* link = nullptr) {
+// `resume`: the checkpoint whose body order the bodies take.
+std::unique_ptr<Simulation> build(const Scene& scene, const RankLink* link = nullptr, const std::string& resume = "") {
   const ShapeLibrary library = load_shape_library(scene.shape_files);
-  return std::make_unique<Simulation>(scene, library, expand_bodies(scene, library), link);
+  std::vector<BodySpec> specs = expand_bodies(scene, library);
+  std::optional<std::vector<std::uint32_t>> order;
+  if (!resume.empty()) order = checkpoint_body_order(resume, specs.size());
+  return std::make_unique<Simulation>(scene, library, std::move(specs), link, std::move(order));
 }
 
 // More threads than cores share them and wait on each other at every loop of the step.
@@ -203,12 +216,13 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
 
 int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
   const RunArgs a = parse_run_args(args, kRunHelp, true);
-  const Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene);
+  if (a.body_order) scene.simulation.body_order = *a.body_order;
   const bool io = !link || link->rank() == 0;  // one message per run, whatever the rank count
   const int threads = a.threads ? *a.threads : scene.simulation.threads;
   if (threads > 0 && io) warn_threads(threads, scene, bool(a.threads));
   if (threads > 0) omp_set_num_threads(threads);
-  const auto built = build(scene, link);
+  const auto built = build(scene, link, a.resume);
   Simulation& sim = *built;
   if (io) warn_unsafe_step(sim);
   if (io) warn_fast_impacts(sim);

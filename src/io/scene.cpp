@@ -95,10 +95,17 @@ std::optional<double> read_accuracy(const YamlMap& m, bool numeric_dt) {
   return a;
 }
 
+SimulationSettings::BodyOrder read_body_order(const YamlMap& m) {
+  if (!m.has("body_order") || m.scalar("body_order") == "space") return SimulationSettings::BodyOrder::space;
+  if (m.scalar("body_order") != "input")
+    m.fail("body_order", "expected space (bodies stored by cell) or input (as listed), got " + m.scalar("body_order"));
+  return SimulationSettings::BodyOrder::input;
+}
+
 SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   root.require("simulation", "simulation: {duration: \"1 s\", dt: auto}");
   const YamlMap m =
-      root.map("simulation", "simulation", {"duration", "dt", "accuracy", "threads", "skin", "seed"});
+      root.map("simulation", "simulation", {"duration", "dt", "accuracy", "threads", "skin", "seed", "body_order"});
   SimulationSettings s;
   s.duration = check_positive(m, "duration", m.quantity("duration", Dimension::time));
   if (m.has("dt") && m.scalar("dt") != "auto")
@@ -110,6 +117,7 @@ SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   s.threads = static_cast<int>(threads);
   if (m.has("skin")) s.skin = check_positive(m, "skin", m.quantity("skin", Dimension::length));
   s.seed = m.unsigned64("seed", 0);
+  s.body_order = read_body_order(m);
   note_locs(m, "simulation", {"duration", "dt", "accuracy", "threads", "skin"}, scene);
   if (s.dt && *s.dt > s.duration)
     m.fail("dt", "the step " + m.scalar("dt") + " is longer than the duration " + m.scalar("duration") +

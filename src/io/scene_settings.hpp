@@ -30,6 +30,8 @@ struct SimulationSettings {
   int threads = 0;                // 0: all cores
   std::optional<double> skin;     // m, Verlet skin; empty: 0.1 x smallest body bounding radius
   std::uint64_t seed = 0;         // every random choice derives from it
+  // How a fresh run lays its bodies out in memory (sim/body_order.hpp): by cell, or as listed.
+  enum class BodyOrder { space, input } body_order = BodyOrder::space;
 };
 
 struct BodySpec {                 // one explicit body

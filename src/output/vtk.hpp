@@ -14,14 +14,14 @@ namespace polydem {
 // bodies_NNNNNN.vtu: one VTK_POLYGON per face of each body's core polyhedron in world coordinates.
 // Shapes without faces (sphere, segment), and every shape when `rounded`, are drawn as a
 // subdivided icosahedron swept over their vertices (the rounded surface: a sphere, a capsule, a
-// polyhedron with rounded edges and corners). Cell data, repeated on each cell of a body:
-// id (Int64), group (Int32), radius (Float64, m, rounded radius x scale), velocity (m/s),
+// polyhedron with rounded edges and corners). The bodies in user id order; cell data, repeated
+// on each cell of a body: id (Int64, the user id: Bodies::id), group (Int32), radius (Float64, m, rounded radius x scale), velocity (m/s),
 // angular_velocity (rad/s). FieldData `gravity` (m/s^2, 3 x Float64) when given: which way is
 // down for `polydem render`.
 void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes,
                       bool rounded = false, const std::optional<Vec3>& gravity = std::nullopt);
-// The same file for the bodies `ids` only (a distributed run's rank: its owned bodies, in
-// increasing id), one piece of a bodies_NNNNNN.pvtu.
+// The same file for the bodies at indices `ids` only, in that order (a distributed run's rank:
+// its owned bodies, by user id), one piece of a bodies_NNNNNN.pvtu.
 void write_bodies_piece(const std::string& path, const Bodies& bodies, const std::vector<std::uint32_t>& ids,
                         const std::vector<Shape>& shapes, bool rounded = false,
                         const std::optional<Vec3>& gravity = std::nullopt);

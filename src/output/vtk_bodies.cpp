@@ -2,7 +2,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 
 #include "output/appended.hpp"
@@ -129,7 +128,7 @@ std::size_t corner_count(const UnitMesh& m) {
 int checked_shape(const Bodies& bodies, std::size_t b, std::size_t n_shapes) {
   const int s = bodies.shape[b];
   if (s < 0 || std::size_t(s) >= n_shapes)
-    throw std::out_of_range("write_bodies_vtu: body " + std::to_string(b) + " has shape index " + std::to_string(s) +
+    throw std::out_of_range("write_bodies_vtu: body " + std::to_string(bodies.id[b]) + " has shape index " + std::to_string(s) +
                             " of " + std::to_string(n_shapes));
   return s;
 }
@@ -167,7 +166,7 @@ struct BodyArrays {
     for (const Vec3& p : m.points) points.push_back(bodies.position[b] + rotation * (scale * p));
     for (const std::vector<int>& f : m.faces) cells.add_cell(f, base);
     const std::size_t n = m.faces.size();
-    id.insert(id.end(), n, std::int64_t(b));
+    id.insert(id.end(), n, std::int64_t(bodies.id[b]));
     group.insert(group.end(), n, std::int32_t(bodies.group[b]));
     radius.insert(radius.end(), n, rounded_radius * scale);
     velocity.insert(velocity.end(), n, bodies.velocity[b]);
@@ -198,8 +197,8 @@ struct BodyArrays {
 
 void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes, bool rounded,
                       const std::optional<Vec3>& gravity) {
-  std::vector<std::uint32_t> every(bodies.size());
-  std::iota(every.begin(), every.end(), 0u);
+  std::vector<std::uint32_t> every(bodies.size());  // by user id
+  for (std::size_t b = 0; b < bodies.size(); ++b) every[bodies.id[b]] = std::uint32_t(b);
   write_bodies_piece(path, bodies, every, shapes, rounded, gravity);
 }
 

@@ -11,12 +11,14 @@ namespace polydem {
 
 namespace {
 
-// 07: the ledger's open sums (each touching pair's pending energy after the active slots of
+// 08: the body order (the user id of each stored body, sim/body_order.hpp) first in the payload;
+// older files hold the bodies in the scene's order. 07: the ledger's open sums (each touching pair's pending energy after the active slots of
 // its list, the ended contacts' exact sum after both lists): written at any step, not only
 // where the ledger closes; 06: a header (scene fingerprint, body and driver counts, payload
 // size) before the payload of format 05 and an FNV-1a checksum of all bytes before it after;
 // 05: the ledger's dissipation by mechanism. 06 and older hold a closed ledger (none open).
-constexpr char kMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '7'};
+constexpr char kMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '8'};
+constexpr char kMagic07[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '7'};
 constexpr char kMagic06[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '6'};
 constexpr char kMagic05[8] = {'P', 'D', 'C', 'K', 'P', 'T', '0', '5'};
 // Older formats still resume: 04 has no ledger shares (all its dissipation counts as dashpot;
@@ -88,8 +90,10 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
   }
 }
 
-// Format 05's bytes after the magic: the state, the contacts, the output progress.
+// Format 08's payload: the body order, then format 05's bytes after the magic (the state, the
+// contacts, the output progress) with 07's open sums.
 void write_payload(Writer& w, const Simulation& sim, const OutputProgress& progress) {
+  w.array(sim.bodies.id);
   write_clock(w, sim);
   const Bodies& b = sim.bodies;
   w.array(b.position); w.array(b.orientation); w.array(b.velocity); w.array(b.angular_velocity);
@@ -103,6 +107,14 @@ void write_payload(Writer& w, const Simulation& sim, const OutputProgress& progr
 
 }  // namespace
 
+std::vector<std::uint32_t> checkpoint_body_order(const std::string& path, std::size_t bodies) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[kMagicBytes] = {};
+  in.read(magic, kMagicBytes);
+  if (is_checkpoint_manifest(std::string(magic, kMagicBytes))) return manifest_body_order(path, bodies);
+  return stored_body_order(path, kMagic, bodies);
+}
+
 void write_checkpoint(const std::string& path, const Simulation& sim, const OutputProgress& progress) {
   write_sealed(path, kMagic, Header{scene_fingerprint(sim), sim.bodies.size(), sim.drivers.size(), 0},
                [&](Writer& w) { write_payload(w, sim, progress); });
@@ -114,12 +126,13 @@ void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& p
   const auto is = [&](const char (&m)[8]) {
     return bytes.size() >= sizeof(m) && std::memcmp(bytes.data(), m, sizeof(m)) == 0;
   };
-  if (!is(kMagic) && !is(kMagic06) && !is(kMagic05) && !is(kMagic04) && !is(kMagic03))
+  if (!is(kMagic) && !is(kMagic07) && !is(kMagic06) && !is(kMagic05) && !is(kMagic04) && !is(kMagic03))
     throw InputError(path + ": not a polydem checkpoint (formats 03 to " + std::string(kMagic + 6, 2) + " resume)");
-  const bool sealed = is(kMagic) || is(kMagic06), open = is(kMagic);
+  const bool sealed = is(kMagic) || is(kMagic07) || is(kMagic06), open = is(kMagic) || is(kMagic07);
   if (sealed) check_header(bytes, path, sim, force);
   Reader r{bytes, sealed ? kHeaderBytes : sizeof(kMagic), sealed ? bytes.size() - kChecksumBytes : bytes.size(), path};
   r.last_step_fields = !is(kMagic03);
+  read_body_order(r, sim, is(kMagic));
   read_step(r, sim);
   sim.ledger = EnergyLedger{};
   const std::size_t ledger_bytes = sealed || is(kMagic05) ? sizeof(EnergyLedger) : kLedgerBytes04;

@@ -24,4 +24,9 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Outp
 // is damaged. `force`: a checkpoint of another scene (fingerprint) resumes with a warning.
 void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress, bool force = false);
 
+// The body order a checkpoint (or a distributed run's manifest) holds: the user id of each
+// stored body, the order its Simulation must be built in to resume it; the scene's order for
+// files written before orders were stored, or of another body count than `bodies`.
+std::vector<std::uint32_t> checkpoint_body_order(const std::string& path, std::size_t bodies);
+
 }  // namespace polydem

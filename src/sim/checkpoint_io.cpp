@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/body_order.hpp"
 #include "sim/run_limits.hpp"
 
 namespace polydem {
@@ -33,6 +34,29 @@ void write_clock(Writer& w, const Simulation& sim) {
   w.pod(sim.step_index());
   w.pod(sim.dt());
   w.pod(sim.ledger);
+}
+
+void read_body_order(Reader& r, const Simulation& sim, bool stored) {
+  std::vector<std::uint32_t> order = identity_order(sim.bodies.size());
+  if (stored) r.array(order, sim.bodies.size());
+  if (order != sim.bodies.id)
+    r.fail(stored ? "its body order is not the one the run was built in"
+                  : "written in the scene's body order, resumed into another");
+}
+
+std::vector<std::uint32_t> stored_body_order(const std::string& path, const char (&magic)[kMagicBytes],
+                                             std::size_t bodies) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kHeaderBytes + sizeof(std::uint64_t), '\0');
+  std::uint64_t n = 0;
+  if (!in.read(head.data(), std::streamsize(head.size())) || std::memcmp(head.data(), magic, kMagicBytes) != 0 ||
+      (std::memcpy(&n, head.data() + kHeaderBytes, sizeof(n)), n != bodies))
+    return identity_order(bodies);
+  std::vector<std::uint32_t> order(bodies);
+  if (!in.read(reinterpret_cast<char*>(order.data()), std::streamsize(bodies * sizeof(std::uint32_t))) ||
+      !is_order_of(order, bodies))
+    throw InputError(path + ": damaged checkpoint: its body order is not one of " + std::to_string(bodies) + " bodies");
+  return order;
 }
 
 void read_step(Reader& r, Simulation& sim) {
@@ -105,7 +129,7 @@ void check_state(const Reader& r, const Simulation& sim) {
     r.fail("a body's position, velocity or force is not finite");
   for (std::size_t k = 0; k < b.size(); ++k)
     if (!(std::abs(b.orientation[k].norm() - 1.0) < kUnitTolerance))
-      r.fail("body " + std::to_string(k) + "'s orientation quaternion has length " +
+      r.fail("body " + std::to_string(b.id[k]) + "'s orientation quaternion has length " +
              std::to_string(b.orientation[k].norm()) + ", not 1");
   const EnergyLedger& l = sim.ledger;
   for (double v : {l.dissipated, l.driver_work, l.external_work, l.sliding, l.rolling, l.patch_work})

@@ -147,6 +147,13 @@ void check_open_energy(const Reader& r, const EnergyParts& e);
 
 // Step, time step and energy ledger: the payload's first fields.
 void write_clock(Writer& w, const Simulation& sim);
+// The body order first in a format-08 payload (or manifest 03): it must be the one `sim` was
+// built in (checkpoint_body_order); older files (`stored` false) hold the scene's order.
+void read_body_order(Reader& r, const Simulation& sim, bool stored);
+// The order stored in `path` if its magic is `magic` and it holds `bodies` bodies, else the
+// scene's order (the full read reports a file that does not fit).
+std::vector<std::uint32_t> stored_body_order(const std::string& path, const char (&magic)[kMagicBytes],
+                                             std::size_t bodies);
 // Step and time step (the ledger's bytes vary with the format), checked against the scene.
 void read_step(Reader& r, Simulation& sim);
 // The driver count, then each driver's moving state.

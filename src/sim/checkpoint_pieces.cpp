@@ -10,9 +10,11 @@ namespace polydem {
 
 namespace {
 
-// 02: each piece holds its touching pairs' pending energies after its slots and its ended
+// Manifest 03: the body order (sim/body_order.hpp) first in its payload; the pieces hold bodies
+// and contacts by index, as the manifest's 02. 02: each piece holds its touching pairs' pending energies after its slots and its ended
 // contacts' exact sum (the ledger's open part, as format 07); 01 (a closed ledger) still resumes.
-constexpr char kManifestMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '2'};
+constexpr char kManifestMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '3'};
+constexpr char kManifestMagic02[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '2'};
 constexpr char kPieceMagic[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'C', '0', '2'};
 constexpr char kManifestMagic01[kMagicBytes] = {'P', 'D', 'C', 'K', 'M', 'A', '0', '1'};
 constexpr char kPieceMagic01[kMagicBytes] = {'P', 'D', 'C', 'K', 'P', 'C', '0', '1'};
@@ -77,6 +79,7 @@ void write_manifest(const std::string& path, const Simulation& sim, const std::v
                     const OutputProgress& progress) {
   const Header header{scene_fingerprint(sim), sim.bodies.size(), sim.drivers.size(), 0};
   write_sealed(path, kManifestMagic, header, [&](Writer& w) {
+    w.array(sim.bodies.id);
     write_clock(w, sim);
     write_drivers(w, sim.drivers);
     w.pod<std::uint64_t>(seals.size());
@@ -169,7 +172,7 @@ void read_piece(const std::string& manifest, const PieceEntry& entry, std::size_
   r.array(ids, h.bodies);
   for (std::uint32_t id : ids) {
     if (id >= b.size()) r.fail("body id " + std::to_string(id) + " out of range");
-    if (into.seen[id]++) throw InputError(which + ": body " + std::to_string(id) + " is in two pieces");
+    if (into.seen[id]++) throw InputError(which + ": body " + std::to_string(b.id[id]) + " is in two pieces");
   }
   read_into(r, b.position, ids); read_into(r, b.orientation, ids); read_into(r, b.velocity, ids);
   read_into(r, b.angular_velocity, ids); read_into(r, b.angular_momentum, ids);
@@ -206,14 +209,20 @@ void write_checkpoint_pieces(const std::string& path, const Simulation& sim, con
 }
 
 bool is_checkpoint_manifest(const std::string& bytes) {
-  return bytes.size() >= kMagicBytes && (std::memcmp(bytes.data(), kManifestMagic, kMagicBytes) == 0 ||
-                                         std::memcmp(bytes.data(), kManifestMagic01, kMagicBytes) == 0);
+  const auto is = [&](const char (&m)[kMagicBytes]) { return std::memcmp(bytes.data(), m, kMagicBytes) == 0; };
+  return bytes.size() >= kMagicBytes && (is(kManifestMagic) || is(kManifestMagic02) || is(kManifestMagic01));
+}
+
+std::vector<std::uint32_t> manifest_body_order(const std::string& path, std::size_t bodies) {
+  return stored_body_order(path, kManifestMagic, bodies);
 }
 
 void read_checkpoint_pieces(const std::string& path, const std::string& bytes, Simulation& sim,
                             OutputProgress& progress, bool force) {
   check_header(bytes, path, sim, force);
   Reader r{bytes, kHeaderBytes, bytes.size() - kChecksumBytes, path};
+  const bool ordered = std::memcmp(bytes.data(), kManifestMagic, kMagicBytes) == 0;
+  read_body_order(r, sim, ordered);
   read_step(r, sim);
   r.pod(sim.ledger);
   read_drivers(r, sim);
@@ -232,11 +241,11 @@ void read_checkpoint_pieces(const std::string& path, const std::string& bytes, S
   read_progress(r, progress);
   if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the manifest");
   Assembly into{std::vector<std::uint8_t>(sim.bodies.size(), 0), {}, {}, {},
-                std::memcmp(bytes.data(), kManifestMagic, kMagicBytes) == 0};
+                ordered || std::memcmp(bytes.data(), kManifestMagic02, kMagicBytes) == 0};
   for (std::size_t k = 0; k < pieces; ++k) read_piece(path, entries[k], k, pieces, sim, into);
   for (std::size_t b = 0; b < sim.bodies.size(); ++b)
     if (!into.seen[b])
-      throw InputError(path + ": body " + std::to_string(b) + " is in none of its " + std::to_string(pieces) +
+      throw InputError(path + ": body " + std::to_string(sim.bodies.id[b]) + " is in none of its " + std::to_string(pieces) +
                        " pieces");
   check_state(r, sim);
   sim.engine().body_pairs() = checkpoint_list(std::move(into.body));

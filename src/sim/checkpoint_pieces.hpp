@@ -18,6 +18,8 @@ void write_checkpoint_pieces(const std::string& path, const Simulation& sim, con
 
 // Whether a checkpoint file's bytes are a manifest.
 bool is_checkpoint_manifest(const std::string& bytes);
+// A manifest's body order (checkpoint_body_order).
+std::vector<std::uint32_t> manifest_body_order(const std::string& path, std::size_t bodies);
 
 // Restores the state of the manifest `path` (its `bytes`) and its pieces; throws InputError
 // naming the file and the piece when one is missing, damaged or of another checkpoint.

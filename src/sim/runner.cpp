@@ -18,6 +18,7 @@
 #include "output/vtk.hpp"
 #include "output/vtk_image.hpp"
 #include "polydem/error.hpp"
+#include "sim/body_order.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim/checkpoint_pieces.hpp"
 #include "sim/contact_table.hpp"
@@ -92,8 +93,8 @@ std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driv
       }
       c.point /= weight;
       const BodyPair p = list.pairs[k];
-      c.i = p.i;
-      c.j = driver ? -1 - std::int64_t(p.j) : std::int64_t(p.j);
+      c.i = b.id[p.i];  // user ids
+      c.j = driver ? -1 - std::int64_t(p.j) : std::int64_t(b.id[p.j]);
       c.from = b.position[p.i];
       c.to = driver ? c.point : b.position[p.j];
       out.push_back(c);
@@ -261,7 +262,8 @@ class OutputWriter {
       return names;
     };
     on_every_rank(*sim_.link(), [&] {
-      write_bodies_piece(dir_ + "/" + piece(bodies, sim_.rank()), sim_.bodies, sim_.rank_contacts()->output_bodies(),
+      write_bodies_piece(dir_ + "/" + piece(bodies, sim_.rank()), sim_.bodies,
+                         by_user_id(sim_.bodies, sim_.rank_contacts()->output_bodies()),
                          sim_.shapes(), sim_.scene().output.rounded, sim_.scene().forces.gravity);
       if (!contacts.empty()) write_contacts_vtp(dir_ + "/" + piece(contacts, sim_.rank()), rank_contact_lines(sim_));
       if (!io_) return;
@@ -338,7 +340,7 @@ std::string likely_cause(const Simulation& sim, bool first_check_after_resume) {
 }
 
 std::string body_name(const Simulation& sim, long body) {
-  return "body " + std::to_string(body) + " (shape '" + sim.shapes()[sim.bodies.shape[body]].name + "')";
+  return "body " + std::to_string(sim.bodies.id[body]) + " (shape '" + sim.shapes()[sim.bodies.shape[body]].name + "')";
 }
 
 // One process keeps every body; a rank the bodies it owns (before a cut: rank 0 every body).

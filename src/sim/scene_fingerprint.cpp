@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "driver/mesh.hpp"
+#include "sim/body_order.hpp"
 
 namespace polydem {
 
@@ -86,7 +87,7 @@ std::uint64_t scene_fingerprint(const Simulation& sim) {
   h.add(c.config_driver);  // the parser made it config when absent
   const Bodies& b = sim.bodies;
   h.add(std::int64_t(b.size()));
-  for (std::size_t k = 0; k < b.size(); ++k) {
+  for (std::uint32_t k : by_user_id(b)) {  // the same for any body order
     h.add(std::int64_t(b.shape[k]));
     h.add(b.mass[k]);
     h.add(b.scale[k]);

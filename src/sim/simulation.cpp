@@ -6,6 +6,7 @@
 #include "integrate/integrate.hpp"
 #include "polydem/error.hpp"
 #include "polydem/parallel.hpp"
+#include "sim/body_order.hpp"
 #include "sim/build_bodies.hpp"
 
 namespace polydem {
@@ -75,9 +76,16 @@ int scene_line(const Scene& scene, const std::string& key) {
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vector<BodySpec> specs,
-                       const RankLink* link)
-    : bodies(build_bodies(specs, library)), drivers(scene.drivers), scene_(scene), library_(library), link_(link) {
-  std::vector<BodySpec>().swap(specs);
+                       const RankLink* link, std::optional<std::vector<std::uint32_t>> order)
+    : drivers(scene.drivers), scene_(scene), library_(library), link_(link) {
+  if (!order)
+    order = scene.simulation.body_order == SimulationSettings::BodyOrder::space ? spatial_order(specs, library)
+                                                                                : identity_order(specs.size());
+  if (!is_order_of(*order, specs.size()))
+    throw InputError("a body order of " + std::to_string(order->size()) + " entries for " +
+                     std::to_string(specs.size()) + " bodies, or an id twice");
+  bodies = build_bodies(in_order(std::move(specs), *order), library);
+  bodies.id = std::move(*order);
   rotors_ = group_rotors(bodies, library_.shapes);
   drop_sphere_orientations();  // before anything copies the bodies (a rank's store)
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;

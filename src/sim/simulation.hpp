@@ -43,8 +43,10 @@ class Simulation {
   // `specs` by value: a temporary is moved in and freed once the bodies are built, before the
   // first list build (the run's memory peak; ~200 bytes a body). `link`: the ranks of a
   // distributed run (null or one rank: one process).
+  // `order`: the user id per index of the arrays (a checkpoint's, sim/body_order.hpp); empty:
+  // as the scene's simulation.body_order makes it.
   Simulation(const Scene& scene, const ShapeLibrary& library, std::vector<BodySpec> specs,
-             const RankLink* link = nullptr);
+             const RankLink* link = nullptr, std::optional<std::vector<std::uint32_t>> order = std::nullopt);
 
   // One velocity-Verlet step of dt. `leave_kick_open`: its closing kick is left to the next
   // step's opening pass (one pass over the bodies for both: each body's arithmetic and bits as
@@ -100,7 +102,7 @@ class Simulation {
   bool distributed() const { return bool(ranks_); }
   int rank() const { return link_ ? link_->rank() : 0; }
   void gather_state(bool onto_every_rank = false);
-  // The smallest id of a body whose state is not finite, or -1; distributed runs: each rank
+  // The smallest index of a body whose state is not finite, or -1; distributed runs: each rank
   // checks the bodies it owns (a collective), the same answer as the whole state's.
   long first_non_finite() const;
   // Distributed runs: the bodies this rank owns and holds as ghosts since the last rebuild.

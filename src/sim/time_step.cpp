@@ -233,7 +233,7 @@ std::string fast_impact_warning(const Bodies& bodies, const std::vector<Shape>& 
     const double allowed = std::min(by_overlap, by_step);
     if (closing <= worst * allowed) continue;
     worst = closing / allowed;
-    const std::string who = format("warning: body %zu (shape '%s') may hit %s at %.3g m/s", b, shapes[bodies.shape[b]].name.c_str(),
+    const std::string who = format("warning: body %u (shape '%s') may hit %s at %.3g m/s", bodies.id[b], shapes[bodies.shape[b]].name.c_str(),
                                    by_driver ? ("driver '" + drivers.name(std::uint32_t(driver)) + "'").c_str()
                                                             : "another body", closing);
     if (by_overlap <= by_step) {
@@ -250,7 +250,8 @@ std::string fast_impact_warning(const Bodies& bodies, const std::vector<Shape>& 
   return message;
 }
 
-OverlapWatch::OverlapWatch(const Bodies& bodies, const std::vector<Shape>& shapes) : radius_(bodies.size()) {
+OverlapWatch::OverlapWatch(const Bodies& bodies, const std::vector<Shape>& shapes)
+    : radius_(bodies.size()), id_(bodies.id) {
   for (std::size_t b = 0; b < bodies.size(); ++b) radius_[b] = inscribed_radius(shapes[bodies.shape[b]], bodies.scale[b]);
 }
 
@@ -278,12 +279,12 @@ std::optional<OverlapWatch::Deep> OverlapWatch::first_deep(const PairList& body_
         if (!list->active[s]) continue;  // only an active slot has a state in a sparse list
         const double overlap = -list->history(s).gap;  // m
         if (overlap <= kOverlapFraction * r) continue;
-        const std::string partner = with_driver ? "driver '" + drivers.name(j) + "'" : format("body %u", j);
+        const std::string partner = with_driver ? "driver '" + drivers.name(j) + "'" : format("body %u", id_[j]);
         return Deep{{(std::uint64_t(with_driver) << 32) | i, j},
                     format("warning: t = %.4g s: an overlap of %.3g mm between body %u and %s exceeds %.2g x the "
                            "inscribed radius %.3g mm: the impact is too fast for kn = %.3g N/m (unphysical; raise kn "
                            "or lower the speeds)",
-                           time, 1e3 * overlap, i, partner.c_str(), kOverlapFraction, 1e3 * r,
+                           time, 1e3 * overlap, id_[i], partner.c_str(), kOverlapFraction, 1e3 * r,
                            with_driver ? kn_driver : kn_particle)};
       }
     }

@@ -108,6 +108,7 @@ class OverlapWatch {
 
  private:
   std::vector<double> radius_;  // m, inscribed radius per body
+  std::vector<std::uint32_t> id_;  // the user id per body (the warning names it)
   bool warned_ = false;
 };
 

@@ -9,17 +9,18 @@ mpi() {  # ranks, then polydem's arguments; ranks that wait yield the cores (2 i
 }
 # The newest checkpoint of a folder: a one-file checkpoint or a manifest, not a piece.
 last_checkpoint() { ls "$1"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | tail -1; }
-# s, the time of a format-07 checkpoint or manifest (its step x its dt), or `later` steps on;
-# exact for --until.
+# s, the time of a format-08 checkpoint or manifest 03 (its step x its dt, after the body order),
+# or `later` steps on; exact for --until.
 checkpoint_time() {  # checkpoint [later]
-  /usr/bin/python3 -c "import struct, sys; step, dt = struct.unpack_from('<qd', open(sys.argv[1], 'rb').read(), 40)
+  /usr/bin/python3 -c "import struct, sys; data = open(sys.argv[1], 'rb').read()
+step, dt = struct.unpack_from('<qd', data, 48 + 4 * struct.unpack_from('<Q', data, 40)[0])
 print(repr((step + int(sys.argv[2])) * dt))" "$1" "${2:-0}"
 }
 # A distributed run's checkpoint is a manifest and one piece per rank (sim/checkpoint_pieces.hpp):
 # resumed at its own time by one process, it gives back the one-file checkpoint of that state.
 joined() {  # scene, checkpoint: prints the one-file checkpoint of the same state
   local dir="$(dirname "$2")/joined"
-  if [ "$(head -c 8 "$2")" = PDCKMA02 ]; then
+  if [ "$(head -c 8 "$2")" = PDCKMA03 ]; then
     rm -rf "$dir"
     "$polydem" run "$1" --out "$dir" --resume "$2" --until "$(checkpoint_time "$2")" --threads 1 > /dev/null 2>&1 ||
       fail "$2: cannot join the pieces" >&2

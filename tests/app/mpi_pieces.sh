@@ -25,7 +25,7 @@ echo "ok: polydem render draws the -np 2 run from its .pvtu files"
 # mpi_run.sh); so does the -np 2 final checkpoint, joined by one process resuming it at its time.
 mid=$tmp/np2/checkpoint_001656.bin
 for f in "$mid" "${mid%.bin}_p0.bin" "${mid%.bin}_p1.bin"; do [ -s "$f" ] || fail "no $f"; done
-[ "$(head -c 8 "$mid")" = PDCKMA02 ] || fail "$mid is not a manifest"
+[ "$(head -c 8 "$mid")" = PDCKMA03 ] || fail "$mid is not a manifest"
 cp -r "$tmp/np2" "$tmp/one"
 rm "$tmp/one"/checkpoint_003313*.bin
 "$polydem" run "$tmp/pour.yaml" --out "$tmp/one" --resume "$tmp/one/checkpoint_001656.bin" --threads 1 \
@@ -78,7 +78,7 @@ wait "$runner" || true
 stopped=$(sed -n 's/^interrupted at t = .* --resume \(.*\)$/\1/p' "$tmp/stopped.err")
 [ "$(grep -c "^interrupted at t" "$tmp/stopped.err")" -eq 1 ] && [ -n "$stopped" ] ||
   { cat "$tmp/stopped.err"; fail "SIGTERM at -np 2: not one interruption message"; }
-[ "$(head -c 8 "$stopped")" = PDCKMA02 ] && [ -s "${stopped%.bin}_p0.bin" ] && [ -s "${stopped%.bin}_p1.bin" ] ||
+[ "$(head -c 8 "$stopped")" = PDCKMA03 ] && [ -s "${stopped%.bin}_p0.bin" ] && [ -s "${stopped%.bin}_p1.bin" ] ||
   fail "SIGTERM at -np 2: no manifest and pieces at $stopped"
 step=$(basename "$stopped" .bin); step=$((10#${step#checkpoint_}))
 before=

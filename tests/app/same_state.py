@@ -1,4 +1,4 @@
-"""Two format-07 checkpoints hold the same state: the same header (but the payload's size) and
+"""Two format-08 checkpoints hold the same state: the same header (but the payload's size) and
 the same payload up to the output progress, its last part, whose file names may differ (a
 distributed run's frames name bodies_NNNNNN.pvtu where one process names .vtu). The progress's
 size follows from the scene.pvd beside each checkpoint: per frame, its time and file names.
@@ -26,8 +26,8 @@ def progress_bytes(checkpoint):
 
 def state(checkpoint):
     data = open(checkpoint, "rb").read()
-    if data[:8] != b"PDCKPT07":
-        sys.exit(f"{checkpoint}: not a format-07 checkpoint ({data[:8]!r})")
+    if data[:8] != b"PDCKPT08":
+        sys.exit(f"{checkpoint}: not a format-08 checkpoint ({data[:8]!r})")
     progress, frames = progress_bytes(checkpoint)
     end = len(data) - 8 - progress  # before the progress and the checksum
     frame_counter, frame_count = struct.unpack_from("<qQ", data, end)

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Writes a checkpoint (format 05, 06 or 07: argv[1]) to stdout as the format-05 file of the same
-state: 06 and 07 less their header and checksum, 07 less the energy ledger's open part (each
+"""Writes a checkpoint (format 05 to 08: argv[1]) to stdout as the format-05 file of the same
+state: 06 to 08 less their header and checksum, 08 less its body order (the user id per stored
+body, first in the payload), 07 and 08 less the energy ledger's open part (each
 touching pair's pending energy after its list's slots, the ended contacts' exact sum after both
 lists), so run_bits.sh hashes compare across formats (sim/checkpoint.cpp)."""
 import struct
@@ -18,10 +19,12 @@ def count(payload, at):
 
 def main():
     data = open(sys.argv[1], "rb").read()
-    if data[:8] not in (b"PDCKPT06", b"PDCKPT07"):
+    if data[:8] not in (b"PDCKPT06", b"PDCKPT07", b"PDCKPT08"):
         sys.stdout.buffer.write(data)
         return
     payload = data[40:-8]
+    if data[:8] == b"PDCKPT08":
+        payload = payload[8 + 4 * count(payload, 0):]
     if data[:8] == b"PDCKPT06":
         sys.stdout.buffer.write(b"PDCKPT05" + payload)
         return

@@ -8,7 +8,10 @@
 # `ledger-free`: both hashes leave the energy ledger out (the checkpoint's 72 ledger
 # bytes after its step and dt, energy.csv's columns dissipated and its shares), to compare the state
 # of builds whose ledgers round differently (the exact sum's closes).
-# usage: tools/bits/run_bits.sh [POLYDEM] [THREADS] [ledger-free] > bits.txt   (about 2 minutes on 2 cores)
+# BODY_ORDER=input (or space) passes --body-order to every run: `input` keeps the bits of builds
+# before body orders (sim/body_order.hpp), whose runs stored the bodies as the scenes list them.
+# usage: [BODY_ORDER=input] tools/bits/run_bits.sh [POLYDEM] [THREADS] [ledger-free] > bits.txt
+#        (about 2 minutes on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=$(realpath "${1:-build/polydem}")
@@ -24,7 +27,8 @@ without_ledger() {  # the checkpoint ($1) or energy.csv (stdin) as hashed: ledge
   else cat; fi
 }
 run() {  # name scene until
-  "$bin" run "$2" --out "$out/$1" --threads "$threads" --until "$3" > /dev/null 2>&1
+  "$bin" run "$2" --out "$out/$1" --threads "$threads" --until "$3" ${BODY_ORDER:+--body-order "$BODY_ORDER"} \
+      > /dev/null 2>&1
   local last
   last=$(ls "$out/$1"/checkpoint_*.bin | sort | tail -1)
   echo "$1 $(without_ledger "$last" | sha256sum | cut -c1-16) $(without_ledger < "$out/$1/energy.csv" | sha256sum | cut -c1-16)"

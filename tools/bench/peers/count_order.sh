@@ -6,7 +6,8 @@
 # instructions, other bits); both start their contacts new, so neither is count_peers.sh's
 # resumed bed. Prints per particle-step Ir, L1 read and write misses, LL misses, mispredicted
 # branches, the cycle estimate Ir + 10 L1 misses + 100 LL misses, then the split by part.
-# Needs run_peers.sh's settled state (build/bench/peers/polydem/settled.bin).
+# Needs run_peers.sh's settled state (build/bench/peers/polydem/settled.bin). Each table runs in
+# its rows' order (--body-order input: builds that have simulation.body_order).
 # usage: tools/bench/peers/count_order.sh [STEPS] [POLYDEM]   (defaults 300 and build/polydem)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -26,7 +27,7 @@ for order in id cell; do
   for n in "$steps" $((2 * steps)); do
     rm -rf "$work/run"
     valgrind --tool=callgrind "${cache[@]}" --callgrind-out-file="$work/$order.$n" "$bin" run "$work/$order.yaml" \
-        --out "$work/run" --threads 1 --fixed-threads --until "$(python3 -c "print($n * 1e-5)")" > "$work/$order.$n.log" 2>&1
+        --out "$work/run" --threads 1 --fixed-threads --body-order input --until "$(python3 -c "print($n * 1e-5)")" > "$work/$order.$n.log" 2>&1
     callgrind_annotate --show=Ir,D1mr,D1mw,Bcm --threshold=100 "$work/$order.$n" > "$work/$order.$n.txt" 2> /dev/null
   done
 done
