@@ -170,7 +170,8 @@ template <bool kLone>
 // lag (rolling impact at 0.3 x critical, worst of 16 touch places: 3.95e-2 -> 1.13e-2).
 [[gnu::always_inline]] inline double springs_on_time(const NormalForce& normal, double edge, double gap_last,
                                                      double dn, double vn, double dt) {
-  if (normal.since_touch > 0.0 && edge == 0.0) [[unlikely]] return normal.since_touch;
+  if (gap_last < edge || dn >= edge || vn >= 0.0) [[likely]] return dt;  // on the whole step
+  if (normal.since_touch > 0.0 && edge == 0.0) return normal.since_touch;
   return spring_on_time(edge, gap_last, dn, vn, dt);
 }
 
@@ -350,9 +351,11 @@ template <class Parts, bool kLone = false>
       push_t = started_spring_push(vt, kt_w, dt_on, dt);
       pushed = true;
     }
-    if (h.slipping && normal.sampled && !tangential_damping) [[unlikely]] {  // with the dashpot: its share is at n+1
-      push_t += law_detail::sampled_cap_push(h.ft, normal.fp + normal.push, fp);
-      pushed = true;
+    if (out.sliding != 0.0) [[unlikely]] {
+      if (kink_pushes && normal.sampled && !tangential_damping) {  // with the dashpot: its share is at n+1
+        push_t += law_detail::sampled_cap_push(h.ft, normal.fp + normal.push, fp);
+        pushed = true;
+      }
     }
     if (pushed) [[unlikely]] out.dissipated -= push_t.dot(vt) * dt;  // what the kicks take from the bodies for it
   } else if constexpr (Normal::kCurved) {
@@ -379,8 +382,9 @@ template <class Parts, bool kLone = false>
     h.rolling_slipping = kink_pushes && out.rolling != 0.0;
     if (kink_pushes && on != dt && !h.rolling_slipping) [[unlikely]]  // started and sticking: the ramp's push
       push_r = started_spring_push(k.w_rel, w * law.kr, on, dt);
-    if (h.rolling_slipping && normal.sampled) [[unlikely]]
-      push_r += law_detail::sampled_cap_push(h.mr, normal.fp + normal.push, fp);
+    if (out.rolling != 0.0) [[unlikely]] {
+      if (kink_pushes && normal.sampled) push_r += law_detail::sampled_cap_push(h.mr, normal.fp + normal.push, fp);
+    }
     out.moment = h.mr;
     if (push_r != Vec3::Zero()) [[unlikely]] {
       out.moment += push_r;
