@@ -70,11 +70,15 @@ inline Arc unit_arc(double w, double zeta, double s) {
 }
 }  // namespace exact_detail
 
-// N per unit weight, the onset step's force: the overlap x (m) is on the approach line at
-// speed v_in > 0 (m/s), x(n-1) = x - v_in dt. Finds s with arc(s) = x (Newton from x/v_in
-// climbs the concave arc from below; a line deeper than the arc's top takes the top) and
-// returns m/dt^2 (x + v_in dt - arc(s + dt)): what puts x(n+1) on that arc.
-inline double exact_onset_force(double kn, double zeta, double m, double dt, double x, double v_in) {
+// The onset step's force: the overlap x (m) is on the approach line at speed v_in > 0 (m/s),
+// x(n-1) = x - v_in dt. Finds s with arc(s) = x (Newton from x/v_in climbs the concave arc from
+// below; a line deeper than the arc's top takes the top): `force` = m/dt^2 (x + v_in dt -
+// arc(s + dt)) puts x(n+1) on that arc, whose touch was `since_touch` = s ago (more than the
+// line's x/v_in: the springs that start with the contact count their time from there).
+struct ExactOnset {
+  double force, since_touch;  // N per unit weight, s
+};
+inline ExactOnset exact_onset_force(double kn, double zeta, double m, double dt, double x, double v_in) {
   const double w = std::sqrt(kn / m);  // rad/s
   const double target = x / v_in;      // s, the arc's overlap at speed 1
   const double q = 1.0 - zeta * zeta, wd = w * std::sqrt(std::abs(q));  // -, rad/s
@@ -87,7 +91,7 @@ inline double exact_onset_force(double kn, double zeta, double m, double dt, dou
     s = std::min(s + (target - a.x) / a.v, top);
   }
   const double next = v_in * exact_detail::unit_arc(w, zeta, s + dt).x;  // m, x(n+1) on the arc
-  return m / (dt * dt) * (x + v_in * dt - next);
+  return {m / (dt * dt) * (x + v_in * dt - next), s};
 }
 
 // Where the force lets go (the clamp, or the overlap's end) at theta after sample a, it falls

@@ -91,9 +91,10 @@ template <class AtSlip, class OnSlip>
 }
 // J, what the kicks' trapezoid takes from the bodies beyond what a spring ft (N) that started
 // from zero this step stores, when it was loaded over `off` (s) less than the step the bodies
-// moved at vt (m/s): -ft.vt off / 2 (0 where it did not start). The ledger counts it dissipated.
+// moved at vt (m/s; off < 0: loaded over more, the exact onset's arc time): -ft.vt off / 2 (0 where
+// it did not start). The ledger counts it dissipated.
 [[gnu::always_inline]] inline double started_spring_work(const Vec3& ft, const Vec3& vt, double off) {
-  return off > 0.0 ? -0.5 * ft.dot(vt) * off : 0.0;
+  return off != 0.0 ? -0.5 * ft.dot(vt) * off : 0.0;
 }
 
 // N, added to the force (not to the spring) in the step where a spring starts `on` (s) before
