@@ -430,9 +430,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     vtk.due(sim.time(), dt);
     csv.due(sim.time(), dt);
   }
-  // What is due now is written: the contacts' records, kept since the set-up's first step,
-  // are freed until a step whose state is written (56 bytes a sphere list's slot).
-  sim.engine().record_contacts(false);
+  // What is due now is written: the contacts' records, kept since the set-up's first step (or
+  // read from the checkpoint), are freed until a step whose state is written (56 bytes a sphere
+  // list's slot); a run with no step left keeps them for its final checkpoint.
+  if (sim.step_index() < last_step) sim.engine().record_contacts(false);
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
   auto previous_term = std::signal(SIGTERM, on_interrupt);  // batch schedulers send it before killing

@@ -2,7 +2,8 @@
 # Resuming after a run was cut short: the CSV files (energy, drivers, probes) and scene.pvd end
 # with the same rows as an uninterrupted run (rows written after the checkpoint are dropped,
 # a half-written last line too); SIGTERM writes a checkpoint and exits 3; another scene's
-# checkpoint is refused unless --force; a checkpoint past the end of the run is refused.
+# checkpoint is refused unless --force; a checkpoint past the end of the run is refused; one at
+# its very end is written again as it was.
 # usage: resume.sh PATH/TO/polydem
 set -euo pipefail
 source "$(dirname "$0")/script_lib.bash" "$1"
@@ -65,4 +66,14 @@ set +e; "$polydem" run "$tmp/wide.yaml" --out "$tmp/wide" --resume "$tmp/full/ch
 # A checkpoint past the end of the run.
 set +e; "$polydem" run "$tmp/drop.yaml" --out "$tmp/past" --until 0.01 --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/past.log"; code=$?; set -e
 [ "$code" -eq 1 ] && grep -q "past the end of this run" "$tmp/past.log" || { cat "$tmp/past.log"; fail "checkpoint past the end: exit $code"; }
+# A checkpoint at the very end of the run (no step left, as when joining a distributed run's
+# pieces into one file): the run writes it again, byte for byte. Spheres only: their list keeps
+# contact records only for the steps whose state is written, and the checkpoint needs them.
+sed -e "s/- shape: cube/- shape: sphere/" -e "s/{cube: 0.5, sphere: 0.25, octahedron: 0.25}/{sphere: 1}/" \
+  "$tmp/drop.yaml" > "$tmp/balls.yaml"
+"$polydem" run "$tmp/balls.yaml" --out "$tmp/balls" 2> /dev/null || fail "spheres to 40 ms (touching at the end)"
+final=$(ls "$tmp"/balls/checkpoint_*.bin | sort | tail -1)
+"$polydem" run "$tmp/balls.yaml" --out "$tmp/again" --resume "$final" 2> "$tmp/again.log" ||
+  { cat "$tmp/again.log"; fail "resumed with no step left"; }
+cmp "$final" "$tmp/again/$(basename "$final")" || fail "no step left: the checkpoint written again differs"
 echo "resume: 1 passed, 0 failed"
