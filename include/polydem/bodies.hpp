@@ -56,6 +56,13 @@ struct Bodies {
     id.resize(n);
   }
 
+  // The body indices sorted by user id: the order files list bodies in.
+  std::vector<std::uint32_t> by_user_id() const {
+    std::vector<std::uint32_t> at(id.size());
+    for (std::size_t b = 0; b < id.size(); ++b) at[id[b]] = std::uint32_t(b);
+    return at;
+  }
+
   // The state integration moves (pose, velocity, angular momentum) of body b is finite.
   bool finite(std::size_t b) const {
     return position[b].allFinite() && velocity[b].allFinite() && angular_momentum[b].allFinite() &&

@@ -197,9 +197,7 @@ struct BodyArrays {
 
 void write_bodies_vtu(const std::string& path, const Bodies& bodies, const std::vector<Shape>& shapes, bool rounded,
                       const std::optional<Vec3>& gravity) {
-  std::vector<std::uint32_t> every(bodies.size());  // by user id
-  for (std::size_t b = 0; b < bodies.size(); ++b) every[bodies.id[b]] = std::uint32_t(b);
-  write_bodies_piece(path, bodies, every, shapes, rounded, gravity);
+  write_bodies_piece(path, bodies, bodies.by_user_id(), shapes, rounded, gravity);
 }
 
 void write_bodies_piece(const std::string& path, const Bodies& bodies, const std::vector<std::uint32_t>& ids,

@@ -67,10 +67,4 @@ std::vector<std::uint32_t> by_user_id(const Bodies& bodies, std::vector<std::uin
   return of;
 }
 
-std::vector<std::uint32_t> by_user_id(const Bodies& bodies) {
-  std::vector<std::uint32_t> at(bodies.size());
-  for (std::size_t b = 0; b < bodies.size(); ++b) at[bodies.id[b]] = std::uint32_t(b);
-  return at;
-}
-
 }  // namespace polydem

@@ -26,8 +26,7 @@ bool is_order_of(const std::vector<std::uint32_t>& order, std::size_t n);
 // specs[order[0]], specs[order[1]], ...
 std::vector<BodySpec> in_order(std::vector<BodySpec> specs, const std::vector<std::uint32_t>& order);
 
-// The indices `of` (all bodies when omitted) sorted by user id: the order files list bodies in.
+// The indices `of` sorted by user id (all bodies: Bodies::by_user_id).
 std::vector<std::uint32_t> by_user_id(const Bodies& bodies, std::vector<std::uint32_t> of);
-std::vector<std::uint32_t> by_user_id(const Bodies& bodies);
 
 }  // namespace polydem

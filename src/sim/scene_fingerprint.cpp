@@ -3,7 +3,6 @@
 #include <cstring>
 
 #include "driver/mesh.hpp"
-#include "sim/body_order.hpp"
 
 namespace polydem {
 
@@ -87,7 +86,7 @@ std::uint64_t scene_fingerprint(const Simulation& sim) {
   h.add(c.config_driver);  // the parser made it config when absent
   const Bodies& b = sim.bodies;
   h.add(std::int64_t(b.size()));
-  for (std::uint32_t k : by_user_id(b)) {  // the same for any body order
+  for (std::uint32_t k : b.by_user_id()) {  // the same for any body order
     h.add(std::int64_t(b.shape[k]));
     h.add(b.mass[k]);
     h.add(b.scale[k]);
