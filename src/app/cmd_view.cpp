@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <random>
 
 #include "polydem/error.hpp"
 
@@ -83,6 +85,43 @@ int run(const std::vector<std::string>& argv) {
   return code == 127 ? 2 : code;
 }
 
+// True when display :N looks taken: its lock file in /tmp or its socket (abstract or path,
+// listed in /proc/net/unix) seen, which a server of another container may own.
+bool display_taken(int n) {
+  const std::string name = "/tmp/.X11-unix/X" + std::to_string(n);
+  if (fs::exists("/tmp/.X" + std::to_string(n) + "-lock") || fs::exists(name)) return true;
+  std::ifstream sockets("/proc/net/unix");
+  for (std::string line; std::getline(sockets, line);) {
+    const std::size_t at = line.find(name);
+    if (at != std::string::npos && at + name.size() == line.size()) return true;
+  }
+  return false;
+}
+
+// A free display number drawn at random, so renders started at once (here or in a container
+// sharing the network) do not meet on one number.
+int free_display() {
+  std::random_device seed;
+  std::uniform_int_distribution<int> pick(100, 29999);
+  int n = pick(seed);
+  while (display_taken(n)) n = n < 29999 ? n + 1 : 100;
+  return n;
+}
+
+// Runs argv with an X server of its own (VTK's GL needs one). When the program aborts on the
+// X connection (exit 134: VTK's "bad X server connection"), tries twice more on new numbers.
+int run_under_xvfb(const std::vector<std::string>& argv) {
+  for (int attempt = 1;; ++attempt) {
+    const int n = free_display();
+    std::vector<std::string> wrapped{"xvfb-run", "-a", "-n", std::to_string(n)};
+    wrapped.insert(wrapped.end(), argv.begin(), argv.end());
+    const int code = run(wrapped);
+    if (code != 134) return code;
+    std::fprintf(stderr, "render: the drawing under the X server :%d aborted (try %d of 3)\n", n, attempt);
+    if (attempt == 3) return 2;
+  }
+}
+
 std::string output_folder(const std::string& dir) {
   if (!fs::is_directory(dir)) throw InputError(dir + ": no such output folder");
   return dir;
@@ -125,10 +164,8 @@ int cmd_render(const std::vector<std::string>& args) {
   std::vector<std::string> argv{python(), find_script("render.py"), dir, out};
   argv.insert(argv.end(), options.begin(), options.end());
   const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)  // VTK's GL needs an X server; from a number of our own, so that
-    argv.insert(argv.begin(),  // two renders starting at once do not both take :99
-                {"xvfb-run", "-a", "-n", std::to_string(100 + ::getpid() % 5000)});
-  return run(argv);
+  if (display && *display) return run(argv);
+  return run_under_xvfb(argv);
 }
 
 }  // namespace polydem
