@@ -406,11 +406,20 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   if (!driver_list_.pairs.empty()) {
     with_law(settings_.driver, [&](auto parts) {
       using Parts = decltype(parts);
+      const LawParams& law = settings_.driver;
       const DriverPartner partner{&drivers, view.mass};
+      const std::uint64_t at_rest = drivers_at_rest(drivers);
+      // Equal spheres: one radius, mass and k', c' for all (index 0 through mask 0).
+      const double r = equal_spheres_ ? equal_spheres_->radius : 0.0, m = equal_spheres_ ? equal_spheres_->mass : 0.0;
+      LinearStep step;  // made here as a pair's cache is at first use: the same bits
+      if (equal_spheres_ && !Parts::Normal::kCurved && law.exact_step && law.alpha_n > 0.0 && !law.contact_mass)
+        step = linear_step(law.kn, law.alpha_n, m, dt);
+      const WallSpheres sizes = equal_spheres_ ? WallSpheres{&r, &m, &step, 0}
+                                               : WallSpheres{view.radius, view.mass, driver_list_.linear_steps.data(), ~0u};
       all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
         if (spheres_only_ && drivers.is_wall(driver_list_.pairs[k].j))  // one slot, the centre: sphere_wall.hpp
-          return sphere_wall_forces<Parts>(settings_.driver, band_driver_, dt, view, drivers, driver_list_, k, scratch);
-        return pair_forces<Parts>(settings_.driver, band_driver_, dt, view, partner, driver_list_, k, scratch);
+          return sphere_wall_forces<Parts>(law, band_driver_, dt, view, drivers, driver_list_, k, scratch, sizes, at_rest);
+        return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
       });
     });
   } else {
