@@ -60,8 +60,8 @@ parts = {
             ("comm", r"Comm")],
     "pd": [("pair loop (sphere kernel, law)", r"sphere_pair_loop"),
            ("closing pass (force sums, kick)", r"kick_after"),
-           ("wall pairs", r"ContactEngine::forces|all_pair_forces<false"),
-           ("opening pass (kick, drift, prediction, gravity)", r"start_step"),
+           ("wall pairs (with the drivers' reaction sums)", r"ContactEngine::forces|ContactEngine6forces|all_pair_forces<false|reduce_drivers"),
+           ("opening pass (kick, drift, prediction, gravity; the closing pass joined to it)", r"start_step"),
            ("rebuild check", r"RebuildTrigger"),
            ("rebuilds", r"candidate|CellList|CandidateBlock|SphereGrid|list_build|collect_near|mark_beyond|rebuild")],
 }
