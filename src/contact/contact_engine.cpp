@@ -272,10 +272,10 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   direct_.reset(bodies.size());
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
-  for (std::size_t k = 0; k < fresh_d.pairs.size(); ++k) {
+  parallel_for_dynamic(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run
     const std::uint32_t i = fresh_d.pairs[k].i;
     drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, range_d, per_pair[k]);
-  }
+  });
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_driver_slots(per_pair, fresh_d);
   size_slots(fresh_d);

@@ -30,8 +30,10 @@ inline std::uint64_t feature_key(FeaturePair f) {
   return (std::uint64_t(f.type) << 48) | (std::uint64_t(f.a) << 32) | std::uint64_t(f.b);
 }
 
-// Pairs per block of the pair loop (a thread takes a block at a time; its contacts are counted together).
-constexpr std::size_t kPairBlock = 256;
+// Pairs per block of the pair loop (a thread takes a block at a time; its contacts are counted
+// together; the threads' cut of the body pairs falls between blocks). 64: a pour's few hundred
+// pairs still split evenly between the threads (with 256 one thread took most of them).
+constexpr std::size_t kPairBlock = 64;
 
 struct PairList {
   std::vector<BodyPair> pairs;             // sorted by (i, j)

@@ -114,7 +114,7 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
 #pragma omp barrier
 #pragma omp single
     {  // every thread has read the old count (the barrier) before this one changes it
-      split_pairs(list.pairs, direct.sums.size(), threads, direct.split);
+      split_pairs(list.pairs, list.touching, direct.sums.size(), threads, direct.split);
       direct.foreign.resize(direct.split.foreign_side.size());
     }
   }

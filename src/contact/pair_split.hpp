@@ -36,9 +36,11 @@ struct PairSplit {
   std::vector<std::uint32_t> early;          // foreign ordinal << 1 | (1 when the body is j), increasing
 };
 
-// Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the pairs
-// each chunk computes in its walk (its internal pairs; the foreign ones are shared out before).
-void split_pairs(const std::vector<BodyPair>& pairs, std::size_t n_bodies, int threads, PairSplit& split);
+// Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the work
+// each chunk does in its walk: its internal pairs, each weighed by its contacts at the last step
+// (`touching`, per pair, or empty: none), and the foreign ones' adds (computed before, shared out).
+void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching, std::size_t n_bodies,
+                 int threads, PairSplit& split);
 
 // The body pairs' sums (per body of the contact stage), made by their loop every step.
 struct DirectSums {

@@ -16,14 +16,6 @@ using integrate_detail::predict_body;
 // Relative tolerance on principal moments for the isotropic fast path.
 constexpr double kIsotropicTolerance = 1e-12;
 
-// Runs body(arrays, i, rotor path) over the bodies of the three groups.
-template <class Body>
-void over_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
-  over_group<Rotor::sphere>(b, groups.spheres, body);
-  over_group<Rotor::isotropic>(b, groups.isotropic, body);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, body);
-}
-
 // Body i into the group of its rotation path; shapes null: no sphere path.
 void add_rotor(const Bodies& b, std::size_t i, const std::vector<Shape>* shapes, RotorGroups& groups) {
   if (shapes && keeps_no_orientation((*shapes)[b.shape[i]], b.inertia[i]))
@@ -84,7 +76,7 @@ void kick(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_rotor_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     drift_body<decltype(rotor)::value>(a, i, dt);
   });
 }
@@ -101,13 +93,13 @@ void drift(Bodies& b, double dt) {
 }
 
 void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_rotor_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     predict_body<decltype(rotor)::value>(a, i, h);
   });
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
-  over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_rotor_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
   });
 }

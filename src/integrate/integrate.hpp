@@ -83,18 +83,33 @@ template <Rotor kRotor>
 using RotorPath = std::integral_constant<Rotor, kRotor>;
 
 // Runs body(arrays, i, RotorPath<kRotor>) over the bodies of `ids` (one rotor group), each
-// thread of the team on its share with the arrays' addresses in its own registers.
+// thread of the team on its share with the arrays' addresses in its own registers; ends at a
+// barrier when `wait` (the same on every thread).
 template <Rotor kRotor, class Body>
-void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body) {
+void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body, bool wait) {
   const std::size_t n = ids.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   in_team(n >= kParallelMinItems, [&] {
     const BodyArrays a = arrays_of(b);
     const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
     for (std::size_t k = 0; k < n; ++k) each(a, id[k], RotorPath<kRotor>{});
+    if (wait) {
+#pragma omp barrier
+    }
   });
+}
+
+// body over the three rotor groups: they hold different bodies and body(i) touches body i's
+// state only, so only the last group that has bodies ends at a barrier (a pass over a mixed
+// scene meets once, not once per group).
+template <class Body>
+void over_rotor_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
+  const bool isotropic = !groups.isotropic.empty(), asymmetric = !groups.asymmetric.empty();
+  over_group<Rotor::sphere>(b, groups.spheres, body, !isotropic && !asymmetric);
+  over_group<Rotor::isotropic>(b, groups.isotropic, body, !asymmetric);
+  over_group<Rotor::asymmetric>(b, groups.asymmetric, body, true);
 }
 
 namespace integrate_detail {
@@ -168,9 +183,7 @@ void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& be
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
   };
-  over_group<Rotor::sphere>(b, groups.spheres, one);
-  over_group<Rotor::isotropic>(b, groups.isotropic, one);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, one);
+  over_rotor_groups(b, groups, one);
 }
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).
@@ -201,9 +214,7 @@ void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& gro
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
     integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
   };
-  over_group<Rotor::sphere>(b, groups.spheres, one);
-  over_group<Rotor::isotropic>(b, groups.isotropic, one);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, one);
+  over_rotor_groups(b, groups, one);
 }
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <cstring>
 #include <random>
 
@@ -123,7 +124,7 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
   const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
   for (int threads : {1, 2, 3, 5}) {
     PairSplit split;
-    split_pairs(pairs, n_bodies, threads, split);
+    split_pairs(pairs, {}, n_bodies, threads, split);
     CAPTURE(threads);
     REQUIRE(split.cut.size() == std::size_t(threads) + 1);
     CHECK(split.cut.front() == 0);
@@ -146,4 +147,19 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
     // Ids that follow space: only a boundary layer of pairs is foreign.
     CHECK(split.foreign_side.size() <= std::size_t(threads - 1) * pairs.size() / 10);
   }
+}
+
+TEST_CASE("a split gives the chunk of the touching pairs fewer pairs", "[pair_split]") {
+  std::mt19937_64 rng(11);
+  const std::uint32_t n_bodies = 3000;
+  const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);  // ids follow space
+  std::vector<std::uint16_t> touching(pairs.size(), 0);
+  for (std::size_t k = 0; k < pairs.size() / 4; ++k) touching[k] = 2;  // a pile at the low ids: its pairs cost more
+  PairSplit plain, weighed;
+  split_pairs(pairs, {}, n_bodies, 2, plain);
+  split_pairs(pairs, touching, n_bodies, 2, weighed);
+  const double middle = 0.5 * double(pairs.size());
+  CHECK(std::abs(double(plain.cut[1]) - middle) <= double(kPairBlock) + 0.05 * middle);  // pairs alike: halves
+  CHECK(double(weighed.cut[1]) < 0.75 * middle);  // the pile's chunk ends early
+  CHECK(weighed.cut[1] > pairs.size() / 4 / 2);   // yet takes more than the pile's first half
 }

@@ -1,7 +1,6 @@
 // Determinism where the threads really run: 4,500 bodies, above every threshold that keeps a
-// loop serial (kParallelMinItems = 256 items, the cell list's 4,096 bodies and cells, the
-// rebuild trigger's 1,024 bodies, two pair blocks of kPairBlock = 256 pairs, for body pairs and
-// driver pairs), with a rotating drum, a servo lid and a moving ball, at 1, 2 and 3 threads and
+// loop serial (kParallelMinItems = 256 items, the cell list's and the rebuild trigger's 1,024
+// bodies, two pair blocks of kPairBlock pairs, for body pairs and driver pairs), with a rotating drum, a servo lid and a moving ball, at 1, 2 and 3 threads and
 // with the count changed between steps.
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fixed-state benchmark: settles each scene once (cached in build/bench/), then times STEPS
 # steps from the settled checkpoint at 1 and 2 threads. Appends to tools/bench/results.csv:
-# machine, commit, scene, threads, bodies, steps, seconds, us per particle-step, contacts, rebuilds.
+# machine, commit, scene, threads, bodies, steps, seconds, us per particle-step, contacts, rebuilds;
+# then prints each scene's 2-thread efficiency t1 / (2 t2) (issue 19 asks >= 0.9).
 # usage: tools/bench/run_bench.sh [STEPS]   (STEPS for the settled scenes; the pour runs 0.2 s)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -11,6 +12,7 @@ bin=build/polydem
 results=tools/bench/results.csv
 [ -f "$results" ] || echo "machine,commit,scene,threads,bodies,steps,seconds,us_per_particle_step,contacts,rebuilds" > "$results"
 machine=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//; s/,//g')
+declare -A seconds  # per scene and thread count, for the efficiency lines
 for scene in cubes spheres; do
   settled=build/bench/$scene
   if [ ! -f "$settled/settled.bin" ]; then
@@ -40,6 +42,7 @@ PY
     contacts=$(tail -1 "$settled/run$threads/energy.csv" | awk -F, '{print $8}')
     commit=$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- src include || echo +)
     echo "\"$machine\",$commit,$scene,$threads,$bodies,$nsteps,$secs,$us,$contacts,$rebuilds" | tee -a "$results"
+    seconds[$scene,$threads]=$secs
     rm -f "$log"
   done
 done
@@ -59,5 +62,9 @@ for threads in 1 2; do
   contacts=$(tail -1 "$out/energy.csv" | cut -d, -f8)
   commit=$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- src include || echo +)
   echo "\"$machine\",$commit,pour,$threads,2000,$nsteps,$secs,$us,$contacts,$rebuilds" | tee -a "$results"
+  seconds[pour,$threads]=$secs
   rm -f "$log"
+done
+for scene in cubes spheres pour; do
+  python3 -c "print('efficiency $scene t1/(2 t2) = %.2f' % (${seconds[$scene,1]} / (2 * ${seconds[$scene,2]})))"
 done
