@@ -151,9 +151,10 @@ template <Rotor kRotor>
   }
 }
 
-template <Rotor kRotor>
+// kKicked: velocity_end is set (kick_body_twice).
+template <Rotor kRotor, bool kKicked = false>
 [[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
-  b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
+  if constexpr (!kKicked) b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
   if constexpr (kRotor != Rotor::asymmetric) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
   } else {
@@ -164,14 +165,40 @@ template <Rotor kRotor>
 
 // A step's opening for body i: kick(h), drift(dt), predict_end_velocities(h) with the last
 // step's force, then force = m gravity and torque = 0 (m/s^2).
-template <Rotor kRotor>
+// kKicked true: the kick and velocity_end are done (close_and_start_step's kick_body_twice).
+template <Rotor kRotor, bool kKicked = false>
 [[gnu::always_inline]] inline void start_body(const BodyArrays& a, std::size_t i, double h, double dt,
                                               const Vec3& gravity) {
-  kick_body<kRotor>(a, i, h);
+  if constexpr (!kKicked) kick_body<kRotor>(a, i, h);
   drift_body<kRotor>(a, i, dt);
-  predict_body<kRotor>(a, i, h);  // the last step's force: before it is cleared
+  predict_body<kRotor, kKicked>(a, i, h);  // the last step's force: before it is cleared
   a.force[i] = a.mass[i] * gravity;
   a.torque[i].setZero();
+}
+// The last step's closing kick and this step's opening kick of body i, one after the other: the
+// same force, torque, h and orientation, so each shared term (F h/m, R^T T h, T h/I) is made once
+// and added twice; an asymmetric body's w is made once, from the twice-kicked L. Each kick's bits.
+// velocity_end = v + F h/m (predict_body's) too: the drift leaves v alone.
+template <Rotor kRotor>
+[[gnu::always_inline]] inline void kick_body_twice(const BodyArrays& b, std::size_t i, double h) {
+  const Vec3 dv = b.force[i] * (h / b.mass[i]);  // m/s
+  b.velocity[i] += dv;
+  b.velocity[i] += dv;
+  b.velocity_end[i] = b.velocity[i] + dv;
+  if constexpr (kRotor == Rotor::asymmetric) {
+    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
+    b.angular_momentum[i] += dl;
+    b.angular_momentum[i] += dl;
+    b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
+  } else {
+    const Vec3 dl = b.torque[i] * h;  // N m s, world frame
+    const Vec3 dl_body = kRotor == Rotor::sphere ? dl : Vec3(b.orientation[i].conjugate() * dl);
+    const Vec3 dw = dl / b.inertia[i].x();  // rad/s
+    b.angular_momentum[i] += dl_body;
+    b.angular_momentum[i] += dl_body;
+    b.angular_velocity[i] += dw;
+    b.angular_velocity[i] += dw;
+  }
 }
 }  // namespace integrate_detail
 
@@ -211,8 +238,9 @@ void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& gro
                           const Before& before) {
   auto one = [h, dt, gravity, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
-    integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
-    integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
+    constexpr Rotor kRotor = decltype(rotor)::value;
+    integrate_detail::kick_body_twice<kRotor>(a, i, h);  // the closing kick and start_body's
+    integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
   };
   over_rotor_groups(b, groups, one);
 }

@@ -71,3 +71,47 @@ TEST_CASE("start_step equals kick, drift, predict and the gravity reset, bit for
   }
   omp_set_num_threads(1);
 }
+
+TEST_CASE("close_and_start_step equals kick_after and start_step, bit for bit, on every rotor path") {
+  const double h = 5e-6, dt = 1e-5;      // s
+  const Vec3 gravity(0.0, 0.0, -9.807);  // m/s^2
+  const std::size_t n = 3 * kParallelMinItems;
+  Bodies separate = random_bodies(n);
+  RotorGroups groups = group_rotors(separate);  // the cuboids asymmetric, the rest isotropic
+  std::vector<std::size_t> isotropic;
+  for (std::size_t i : groups.isotropic) {  // every other isotropic body a sphere (its q the identity)
+    if (i % 2 == 0) {
+      separate.orientation[i] = Quat::Identity();
+      groups.spheres.push_back(i);
+    } else {
+      isotropic.push_back(i);
+    }
+  }
+  groups.isotropic = isotropic;
+  REQUIRE(!groups.spheres.empty());
+  REQUIRE(!groups.asymmetric.empty());
+  const Vec3 contact_force(0.3, -0.2, 0.1), contact_torque(2e-4, 1e-4, -3e-4);  // N, N m
+  auto add_contact = [&](Bodies& b) {
+    return [&b, contact_force, contact_torque](std::size_t i) {
+      b.force[i] += contact_force;
+      b.torque[i] += contact_torque;
+    };
+  };
+  Bodies fused = separate;
+  kick_after(separate, h, groups, add_contact(separate));
+  start_step(separate, h, dt, groups, gravity);
+  for (int threads : {1, 2}) {
+    Bodies b = fused;
+    omp_set_num_threads(threads);
+    in_team(true, [&] { close_and_start_step(b, h, dt, groups, gravity, add_contact(b)); });
+    CHECK(same_bits(b.position, separate.position));
+    CHECK(same_bits(b.velocity, separate.velocity));
+    CHECK(same_bits(b.angular_momentum, separate.angular_momentum));
+    CHECK(same_bits(b.angular_velocity, separate.angular_velocity));
+    CHECK(same_bits(b.velocity_end, separate.velocity_end));
+    CHECK(same_bits(b.angular_velocity_end, separate.angular_velocity_end));
+    CHECK(same_bits(b.force, separate.force));
+    CHECK(std::memcmp(b.orientation.data(), separate.orientation.data(), n * sizeof(Quat)) == 0);
+  }
+  omp_set_num_threads(1);
+}
