@@ -330,13 +330,9 @@ template <class Parts, bool kLone = false>
     const Vec3 vt = k.v_rel - vn * k.normal;  // m/s, tangential relative velocity
     if (tangential_damping) fp_at_slip();  // the dashpot takes its share of the cap first
     double ft_max = law.mu * fp;  // N
-    double nu_t = 0.0;            // N s/m, the pair's dashpot before the weight
-    Vec3 vt_end = Vec3::Zero();   // m/s, what the dashpot reads
-    if (tangential_damping) {
-      nu_t = k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff);
-      vt_end = k.v_end - k.v_end.dot(k.normal) * k.normal;
-      damper = tangential_dashpot(vt_end, vt, w * nu_t, ft_max, out.dissipated, dt);
-    }
+    const auto nu_t = [&] { return k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff); };  // N s/m, before the weight
+    const auto vt_end = [&] { return Vec3(k.v_end - k.v_end.dot(k.normal) * k.normal); };  // m/s, what the dashpot reads
+    if (tangential_damping) damper = tangential_dashpot(vt_end(), vt, w * nu_t(), ft_max, out.dissipated, dt);
     // The linear spring is on within reach, Hertz's (kt ~ x^1/2) within the overlap.
     const double dt_on = law_detail::springs_on_time(normal, Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
     // Where the exact normal step is taken (spheres, the same bits on the sphere and general
@@ -348,7 +344,7 @@ template <class Parts, bool kLone = false>
       // The cap at n at least |old| (without it, 1.34e-2 at 0.26 x critical for 8.2e-3 at 0.2601),
       // less the dashpot's share then (at the velocity at n, vt less the kick's half: v_end - vt).
       const double fp_last = law_detail::last_normal_force<Normal, kLone>(law, k, h);  // N
-      const double share = tangential_damping ? law_detail::last_dashpot_share(vt, vt_end, h.weight * nu_t, law.mu * fp_last) : 0.0;
+      const double share = tangential_damping ? law_detail::last_dashpot_share(vt, vt_end(), h.weight * nu_t(), law.mu * fp_last) : 0.0;
       push_t = slip_start_push_along(old2, trial_spring, trial, cap, law.mu * fp_last - share);
       pushed = true;
     };
@@ -364,7 +360,7 @@ template <class Parts, bool kLone = false>
     }
     if (out.sliding != 0.0) [[unlikely]] {
       if (kink_pushes && normal.sampled) {  // spring and dashpot together at the cap
-        push_t += law_detail::sampled_cap_push(h.ft + damper, normal.fp + normal.push, fp);
+        push_t += law_detail::sampled_cap_push(tangential_damping ? Vec3(h.ft + damper) : h.ft, normal.fp + normal.push, fp);
         pushed = true;
       }
     }
