@@ -184,6 +184,13 @@ template <bool kLone>
   return (sampled / fp - 1.0) * capped;
 }
 
+// N, the tangential dashpot's share of the cap at n (N, the cap mu fp then), for the slip push of
+// a spring that stuck then: its force at the velocity at n, 2 vt - vt_end (vt at n+1/2, vt_end the
+// prediction at n+1, half a kick of the same forces further; m/s), nu_t_w (N s/m) the dashpot.
+[[gnu::noinline]] inline double last_dashpot_share(const Vec3& vt, const Vec3& vt_end, double nu_t_w, double cap) {
+  return std::min(nu_t_w * (2.0 * vt - vt_end).norm(), cap);
+}
+
 // N, fp at n: the last step's clamped normal force (without its push).
 template <class Normal, bool kLone>
 [[gnu::always_inline]] inline double last_normal_force(const LawParams& law, const ContactKinematics& k,
@@ -323,11 +330,9 @@ template <class Parts, bool kLone = false>
     const Vec3 vt = k.v_rel - vn * k.normal;  // m/s, tangential relative velocity
     if (tangential_damping) fp_at_slip();  // the dashpot takes its share of the cap first
     double ft_max = law.mu * fp;  // N
-    if (tangential_damping) {
-      const double nu_t_w = w * (k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff));  // N s/m
-      const Vec3 vt_end = k.v_end - k.v_end.dot(k.normal) * k.normal;  // m/s, what the dashpot reads
-      damper = tangential_dashpot(vt_end, vt, nu_t_w, ft_max, out.dissipated, dt);
-    }
+    const auto nu_t = [&] { return k.nu_t >= 0.0 ? k.nu_t : pair_tangential_damping(law, k.m_eff); };  // N s/m, before the weight
+    const auto vt_end = [&] { return Vec3(k.v_end - k.v_end.dot(k.normal) * k.normal); };  // m/s, what the dashpot reads
+    if (tangential_damping) damper = tangential_dashpot(vt_end(), vt, w * nu_t(), ft_max, out.dissipated, dt);
     // The linear spring is on within reach, Hertz's (kt ~ x^1/2) within the overlap.
     const double dt_on = law_detail::springs_on_time(normal, Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
     // Where the exact normal step is taken (spheres, the same bits on the sphere and general
@@ -335,10 +340,12 @@ template <class Parts, bool kLone = false>
     const bool kink_pushes = law.exact_step && (kLone || k.exact_step);
     const auto on_slip = [&](double old2, const Vec3& trial_spring, double trial, double cap) {
       // Only where a spring that stuck at n starts to slip (a sliding one has no kink).
-      if (!kink_pushes || h.slipping || tangential_damping || cap <= 0.0) return;  // the dashpot's share of the last cap is not kept
-      // The cap at n at least |old| (without it, 1.34e-2 at 0.26 x critical for 8.2e-3 at 0.2601).
-      push_t = slip_start_push_along(old2, trial_spring, trial, cap,
-                                     law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h));
+      if (!kink_pushes || h.slipping || cap <= 0.0) return;
+      // The cap at n at least |old| (without it, 1.34e-2 at 0.26 x critical for 8.2e-3 at 0.2601),
+      // less the dashpot's share then (at the velocity at n, vt less the kick's half: v_end - vt).
+      const double fp_last = law_detail::last_normal_force<Normal, kLone>(law, k, h);  // N
+      const double share = tangential_damping ? law_detail::last_dashpot_share(vt, vt_end(), h.weight * nu_t(), law.mu * fp_last) : 0.0;
+      push_t = slip_start_push_along(old2, trial_spring, trial, cap, law.mu * fp_last - share);
       pushed = true;
     };
     out.sliding = tangential_spring(h.ft, k.normal, vt, kt_w, ft_max, dt_on,
@@ -352,8 +359,8 @@ template <class Parts, bool kLone = false>
       pushed = true;
     }
     if (out.sliding != 0.0) [[unlikely]] {
-      if (kink_pushes && normal.sampled && !tangential_damping) {  // with the dashpot: its share is at n+1
-        push_t += law_detail::sampled_cap_push(h.ft, normal.fp + normal.push, fp);
+      if (kink_pushes && normal.sampled) {  // spring and dashpot together at the cap
+        push_t += law_detail::sampled_cap_push(tangential_damping ? Vec3(h.ft + damper) : h.ft, normal.fp + normal.push, fp);
         pushed = true;
       }
     }

@@ -4,6 +4,7 @@
 // fraction of the critical step `polydem check` prints, and returns its relative error.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "corner_reference.hpp"
@@ -124,11 +125,14 @@ inline double sphere_pair_impact(double fraction, bool exact = false) {
 }
 
 // Sphere on a wall at 45 deg, mu 0.3: error of v_t' and R w' against the RK4 reference, / v_t;
-// with the linear law's exact normal step (the default for spheres) or the end-of-step dashpot.
+// with the linear law's exact normal step (the default for spheres) or the end-of-step dashpot,
+// and the tangential dashpot of ratio `damp_tangential` (0: none).
 // `phase` as in sphere_wall_error (negative: a gap of 0.1 um).
-inline double oblique_impact(double fraction, bool exact = true, double phase = -1.0) {
+inline double oblique_impact(double fraction, bool exact = true, double phase = -1.0, double damp_tangential = 0.0) {
   const double mu = 0.3, v = 0.3 * std::sqrt(0.5);  // m/s, both components
-  Scene scene = base_scene(law(kKn, kEn, mu, kKn), true);
+  ContactParams config = law(kKn, kEn, mu, kKn);
+  config.damp_tangential = damp_tangential;
+  Scene scene = base_scene(config, true);
   scene.simulation.exact_step = exact;
   const ShapeLibrary lib = library({sphere_shape(kRadius)});
   std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
@@ -138,19 +142,24 @@ inline double oblique_impact(double fraction, bool exact = true, double phase = 
   const MeasuredImpact r = run_impact(
       sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
       [&] { return sim.bodies.velocity[0].z(); });
-  static const Rebound ref = [&] {  // the same for every step size: computed once, before the timed runs
-    const double m = sim.bodies.mass[0], z = prepare_law(scene.forces.contact.config).alpha_n;
-    const SpringContact reference{m, 0.4 * m * kRadius * kRadius, 2.0 * z * std::sqrt(kKn * m), kRadius, kKn, kKn, mu};
+  static std::map<double, Rebound> refs;  // per dashpot, the same for every step size: computed once
+  if (!refs.count(damp_tangential)) {
+    const LawParams prepared = prepare_law(config);
+    const double m = sim.bodies.mass[0], z = prepared.alpha_n;
+    const SpringContact reference{m, 0.4 * m * kRadius * kRadius, 2.0 * z * std::sqrt(kKn * m), kRadius, kKn, kKn, mu,
+                                  pair_tangential_damping(prepared, m)};
     double change = 0.0;
-    return reference.extrapolated(v, v, ClampedImpact{z, std::sqrt(kKn / m), v, m}.release_time(), change);
-  }();
+    refs[damp_tangential] = reference.extrapolated(v, v, ClampedImpact{z, std::sqrt(kKn / m), v, m}.release_time(), change);
+  }
+  const Rebound& ref = refs[damp_tangential];
   return std::max(std::abs(r.velocity.x() - ref.vt), std::abs(kRadius * r.angular_velocity.y() - ref.spin)) / v;
 }
 
 // The largest error over `phases` touch places in the step (oblique_impact, the default step).
-inline double oblique_impact_worst_phase(double fraction, int phases = 16) {
+inline double oblique_impact_worst_phase(double fraction, int phases = 16, double damp_tangential = 0.0) {
   double worst = 0.0;
-  for (int k = 0; k < phases; ++k) worst = std::max(worst, oblique_impact(fraction, true, double(k) / phases));
+  for (int k = 0; k < phases; ++k)
+    worst = std::max(worst, oblique_impact(fraction, true, double(k) / phases, damp_tangential));
   return worst;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // An independent reference for the oblique sphere-wall impact: the engine's two-body spring
-// problem (clamped spring-dashpot, capped tangential spring, lever R - x/2) integrated by RK4
-// with a tiny step. Used by test_oblique_impact.cpp and the accuracy sweep.
+// problem (clamped spring-dashpot, capped tangential spring, lever R - x/2, optionally the
+// tangential dashpot taking its share of the cap first) integrated by RK4 with a tiny step. Used by test_oblique_impact.cpp and the accuracy sweep.
 #include <algorithm>
 #include <cmath>
 
@@ -18,15 +18,19 @@ struct Rebound {
 struct SpringContact {
   double m, inertia, nu;         // kg, kg m^2, N s/m
   double radius, kn, kt, mu;     // m, N/m, N/m, -
+  double nu_t = 0.0;             // N s/m, the tangential dashpot (damp_tangential; 0: none)
 
   struct State {
     double x, vz, vx, w, ft;
   };
   double fn(const State& s) const { return std::max(kn * s.x - nu * s.vz, 0.0); }
   double lever(const State& s) const { return radius - 0.5 * s.x; }
+  double slip(const State& s) const { return s.vx - lever(s) * s.w; }  // m/s, contact point velocity along x
+  // N, the dashpot's force, its share of the cap mu fn first.
+  double damper(const State& s) const { return std::clamp(-nu_t * slip(s), -mu * fn(s), mu * fn(s)); }
   State rate(const State& s) const {
-    const double vt = s.vx - lever(s) * s.w;  // contact point velocity along x
-    return {-s.vz, fn(s) / m, s.ft / m, -lever(s) * s.ft / inertia, -kt * vt};
+    const double f = s.ft + damper(s);  // N
+    return {-s.vz, fn(s) / m, f / m, -lever(s) * f / inertia, -kt * slip(s)};
   }
   Rebound integrate(double vt0, double vn0, double h) const {
     State s{0.0, -vn0, vt0, 0.0, 0.0};
@@ -38,7 +42,7 @@ struct SpringContact {
       s = State{s.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x), s.vz + h / 6 * (k1.vz + 2 * k2.vz + 2 * k3.vz + k4.vz),
                 s.vx + h / 6 * (k1.vx + 2 * k2.vx + 2 * k3.vx + k4.vx), s.w + h / 6 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w),
                 s.ft + h / 6 * (k1.ft + 2 * k2.ft + 2 * k3.ft + k4.ft)};
-      const double cap = mu * fn(s);
+      const double cap = mu * fn(s) - std::abs(damper(s));
       s.ft = std::clamp(s.ft, -cap, cap);
       if (n > 0 && fn(s) == 0.0) return {s.vx, radius * s.w, s.vz};  // released: free flight after
     }

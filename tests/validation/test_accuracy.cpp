@@ -98,6 +98,22 @@ TEST_CASE("accuracy: oblique impact 45 deg against RK4 at 0.1 and 0.3 x critical
   CHECK(order >= 1.8);
 }
 
+TEST_CASE("accuracy: oblique impact 45 deg with damp_tangential against RK4, second order", "[validation][second_order]") {
+  // The tangential dashpot (ratio 0.3) takes its share of the cap first; where the spring slips the
+  // kicks take the sampled force's cap for spring and dashpot together, and a spring that stuck
+  // at n takes the slip push with the cap at n less the dashpot's share then (law.hpp). Worst of
+  // 16 touch places, measured: 4.31e-4 at 0.1, 9.21e-5 at 0.05 (order 2.23), 5.83e-3 at 0.3
+  // (029f2f1, without the pushes: 4.50e-4, 9.45e-5, 4.70e-3). Below 0.025 x critical both level
+  // off near 1e-5 (1.8e-5 at 0.0125, 1.1e-5 at 0.00625): not yet found.
+  const double at_auto = oblique_impact_worst_phase(0.1, 16, 0.3), at_005 = oblique_impact_worst_phase(0.05, 16, 0.3);
+  const double at_03 = oblique_impact_worst_phase(0.3, 16, 0.3), order = std::log2(at_auto / at_005);
+  std::printf("oblique 45 deg, damp_tangential 0.3: worst of 16 touch places %.2e at 0.1, %.2e at 0.05 (order %.2f), %.2e at 0.3\n",
+              at_auto, at_005, order, at_03);
+  CHECK(at_auto <= 6e-4);
+  CHECK(order >= 1.8);
+  CHECK(at_03 <= 1e-2);  // the goal
+}
+
 // Hertz with Tsuji's dashpot: the dashpot's impulse over each Verlet cell in closed form
 // (normal_hertz.hpp, cell_dashpot), the step where the overlap starts put on the impact's arc
 // (onset_force, the scaled impact stepped: hertz_arc.hpp) and the one where the clamp lets go
