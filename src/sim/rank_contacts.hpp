@@ -35,15 +35,32 @@ struct ReactionShare {
 // Sets each driver's reaction from every rank's touching driver pairs, in one-process order.
 void add_reactions(std::vector<ReactionShare> all, Drivers& drivers);
 
+// The closing kick's hook (integrate.hpp's kick_after): owned body i's contact sum of the
+// step, read at its local index, added to its force and torque (one process's arithmetic).
+struct OwnedSums {
+  ForceSums local;
+  const std::int32_t* local_of;  // global id -> local index
+  Vec3* force;                   // N, per global id
+  Vec3* torque;                  // N m
+  [[gnu::always_inline]] void operator()(std::size_t i) const { local.add(std::size_t(local_of[i]), force[i], torque[i]); }
+};
+
 class RankContacts {
  public:
   RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies, ContactSettings settings);
 
-  // Adds the owned bodies' contact forces and torques of this step, sets the drivers'
-  // reactions and the contact count, on every rank (a collective). `whole`: the engine over
-  // all bodies, whose lists hold the table of histories (read at a forced rebuild, written by
+  // The contact forces and torques of this step, left in the lists for owned_sums, and the
+  // drivers' reactions, on every rank (a collective). `whole`: the engine over all bodies,
+  // whose lists hold the table of histories (read at a forced rebuild, written by
   // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
+  // The hook of the step's closing kick over the owned bodies (after compute); then sums_taken(),
+  // which clears the ghosts' sums too, so the next pair loop starts from zeros.
+  OwnedSums owned_sums(Bodies& bodies) {
+    return {engine_->force_sums(store_.view()), local_of_.data(), bodies.force.data(), bodies.torque.data()};
+  }
+  void sums_taken();
+  void add_sums(Bodies& bodies);  // the same with no kick: each owned body's sum added to its force
   // Whether the next steps share the drivers' reactions (the servo and the driver work of a
   // moving driver read them each step, output only at its rows); when not, only the contact
   // count, and the drivers keep their last reactions.
@@ -139,6 +156,7 @@ class RankContacts {
   LocalStore store_;
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
+  std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
   bool forced_ = true;
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;
