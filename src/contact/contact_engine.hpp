@@ -50,9 +50,7 @@ struct ForceSums {
   const Vec3 *force_i, *torque_i;     // per driver pair
   Vec3* force;
   Vec3* torque;
-  [[gnu::always_inline]] void operator()(std::size_t b) const { add(b, force[b], torque[b]); }
-  // Body b's sum added to `to_force` and `to_torque` (a rank's owned body, held at another index).
-  [[gnu::always_inline]] void add(std::size_t b, Vec3& to_force, Vec3& to_torque) const {
+  [[gnu::always_inline]] void operator()(std::size_t b) const {
     Vec3 f = body[b].force, t = body[b].torque;
     body[b] = BodySum{};
     for (std::uint32_t k = driver_begin[b]; k < driver_begin[b + 1]; ++k) {
@@ -60,8 +58,8 @@ struct ForceSums {
       f += force_i[k];
       t += torque_i[k];
     }
-    to_force += f;
-    to_torque += t;
+    force[b] += f;
+    torque[b] += t;
   }
 };
 

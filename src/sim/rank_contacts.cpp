@@ -160,10 +160,15 @@ void RankContacts::add_sums(Bodies& bodies) {
   sums_taken();
 }
 
+void RankContacts::kick_closing(Bodies& bodies, double h) { kick_after(bodies, h, owned_rotors_, owned_sums(bodies)); }
+
+void RankContacts::close_and_start(Bodies& bodies, double h, double dt, const Vec3& gravity) {
+  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies));
+}
+
 void RankContacts::sums_taken() {
   const ForceSums sums = engine_->force_sums(store_.view());
-  Vec3 dropped_f = Vec3::Zero(), dropped_t = Vec3::Zero();  // N, N m: a ghost's sum is its owner's to add
-  for (std::uint32_t k : ghost_local_) sums.add(k, dropped_f, dropped_t);
+  for (std::uint32_t k : ghost_local_) sums.body[k] = BodySum{};  // a ghost's sum is its owner's to add
   engine_->sums_taken();
 }
 

@@ -210,7 +210,7 @@ void Simulation::step(bool leave_kick_open) {
     if (close_last && one_process)
       close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)));
     else if (close_last)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, ranks_->owned_sums(bodies));
+      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
@@ -239,7 +239,7 @@ void Simulation::step(bool leave_kick_open) {
       engine_->forces(local, drivers, dt_, !stale, false);
       if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local));
     } else if (contacts) {
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, ranks_->owned_sums(bodies));
+      if (!leave_kick_open) ranks_->kick_closing(bodies, 0.5 * dt_);
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }
@@ -255,7 +255,7 @@ void Simulation::close_step() {
   if (!std::exchange(kick_open_, false)) return;
   in_team(bodies.size() >= kParallelMinItems, [&] {
     if (ranks_)
-      kick_after(bodies, 0.5 * dt_, ranks_->owned_rotors(), ranks_->owned_sums(bodies));
+      ranks_->kick_closing(bodies, 0.5 * dt_);
     else
       kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies)));
   });
