@@ -14,30 +14,37 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
     scale[k] = all.scale[global_id[k]];
     mass[k] = all.mass[global_id[k]];
   }
+  for (auto* v : {&position, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end}) v->resize(n);
+  orientation.resize(n);
   refresh(all);
+  clear_forces();
 }
 
 void LocalStore::refresh(const Bodies& all, bool turning) {
+  // The arrays' addresses held in locals: read through the vectors, each copy reloaded them
+  // (Eigen's stores may alias anything).
+  const Vec3 *x = all.position.data(), *v = all.velocity.data(), *w = all.angular_velocity.data();
+  const Vec3 *ve = all.velocity_end.data(), *we = all.angular_velocity_end.data();
+  const Quat* q = all.orientation.data();
+  const std::uint32_t* id = global_id.data();
+  Vec3 *to_x = position.data(), *to_v = velocity.data(), *to_w = angular_velocity.data();
+  Vec3 *to_ve = velocity_end.data(), *to_we = angular_velocity_end.data();
+  Quat* to_q = orientation.data();
   const std::size_t n = global_id.size();
-  position.resize(n);
-  velocity.resize(n);
-  angular_velocity.resize(n);
-  velocity_end.resize(n);
-  angular_velocity_end.resize(n);
-  if (turning) {
-    orientation.resize(n);
-    for (std::size_t k = 0; k < n; ++k) orientation[k] = all.orientation[global_id[k]];
-  }
   for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t g = global_id[k];
-    position[k] = all.position[g];
-    velocity[k] = all.velocity[g];
-    angular_velocity[k] = all.angular_velocity[g];
-    velocity_end[k] = all.velocity_end[g];
-    angular_velocity_end[k] = all.angular_velocity_end[g];
+    const std::uint32_t g = id[k];
+    to_x[k] = x[g];
+    to_v[k] = v[g];
+    to_w[k] = w[g];
+    to_ve[k] = ve[g];
+    to_we[k] = we[g];
+    if (turning) to_q[k] = q[g];
   }
-  force.assign(n, Vec3::Zero());
-  torque.assign(n, Vec3::Zero());
+}
+
+void LocalStore::clear_forces() {
+  force.assign(global_id.size(), Vec3::Zero());
+  torque.assign(global_id.size(), Vec3::Zero());
 }
 
 }  // namespace polydem

@@ -21,14 +21,16 @@ struct LocalStore {
   std::vector<Quat> orientation;
   std::vector<int> shape;
   std::vector<double> scale, mass;  // -, kg
-  std::vector<Vec3> force, torque;  // N, N m: the contact sums of the owned bodies this step
+  std::vector<Vec3> force, torque;  // N, N m: the contact sums of the owned bodies, when summed here
 
-  // Holds the bodies `ids` of `all` (increasing), ghosts where `is_ghost` is 1.
+  // Holds the bodies `ids` of `all` (increasing), ghosts where `is_ghost` is 1, their state
+  // copied and their forces zero.
   void select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost);
-  // Copies what changes every step (pose and velocities) from the global arrays, and zeroes the
-  // forces; `turning` false: no held body ever turns (spheres keep the identity), the
-  // orientations select() copied stand.
+  // Copies what changes every step (pose and velocities) from the global arrays; `turning`
+  // false: no held body ever turns (spheres keep the identity), the orientations select()
+  // copied stand.
   void refresh(const Bodies& all, bool turning = true);
+  void clear_forces();  // zeroes force and torque (before the engine sums into them)
   LocalBodies view() {
     return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
             &shape,    &scale,       &mass,     &ghost,            &force,        &torque};

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "polydem/error.hpp"
+#include "polydem/parallel.hpp"
 #include "sim/body_exchange.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/rank_energy.hpp"
@@ -96,7 +97,11 @@ void RankContacts::migrate_bodies(Bodies& bodies) {
 // `driver_table` (global ids; pairs of other bodies are left out).
 void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table) {
   local_of_.assign(bodies.size(), -1);
-  for (std::size_t k = 0; k < plan_.local.size(); ++k) local_of_[plan_.local[k]] = std::int32_t(k);
+  ghost_local_.clear();
+  for (std::size_t k = 0; k < plan_.local.size(); ++k) {
+    local_of_[plan_.local[k]] = std::int32_t(k);
+    if (plan_.ghost[k]) ghost_local_.push_back(std::uint32_t(k));
+  }
   owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
   size_parcels();
   store_.select(bodies, plan_.local, plan_.ghost);
@@ -142,13 +147,29 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     add_traffic(rebuild_traffic_, before, link_.counts());
   }
   engine_->record_contacts(whole.records_contacts() || stop_seen_);  // the run loop tells the whole engine
-  engine_->compute(store_.view(), drivers, dt, stale);
-  for (std::size_t k = 0; k < plan_.local.size(); ++k) {  // force += the contact sum: one process's arithmetic
-    if (plan_.ghost[k]) continue;
-    bodies.force[plan_.local[k]] += store_.force[k];
-    bodies.torque[plan_.local[k]] += store_.torque[k];
-  }
+  const LocalBodies view = store_.view();
+  if (stale) engine_->rebuild(view, drivers);  // poses the bodies it pairs
+  // The bodies' sums stay in the lists: the closing kick adds them (owned_sums), as one process's does.
+  in_team(view.size() >= kParallelMinItems, [&] { engine_->forces(view, drivers, dt, !stale, false); });
   share_results(drivers, stale);
+}
+
+void RankContacts::add_sums(Bodies& bodies) {
+  const OwnedSums sums = owned_sums(bodies);
+  for (std::uint32_t b : plan_.owned) sums(b);
+  sums_taken();
+}
+
+void RankContacts::kick_closing(Bodies& bodies, double h) { kick_after(bodies, h, owned_rotors_, owned_sums(bodies)); }
+
+void RankContacts::close_and_start(Bodies& bodies, double h, double dt, const Vec3& gravity) {
+  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies));
+}
+
+void RankContacts::sums_taken() {
+  const ForceSums sums = engine_->force_sums(store_.view());
+  for (std::uint32_t k : ghost_local_) sums.body[k] = BodySum{};  // a ghost's sum is its owner's to add
+  engine_->sums_taken();
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its owner.

@@ -127,10 +127,12 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
 
 // One process: the engine over all bodies; many: this rank's share, then shared.
 void Simulation::contact_stage() {
-  if (ranks_)
+  if (ranks_) {
     ranks_->compute(bodies, drivers, dt_, *engine_);
-  else
+    ranks_->add_sums(bodies);
+  } else {
     engine_->compute(all_owned(bodies), drivers, dt_);
+  }
 }
 
 void Simulation::force_rebuild(bool table_on_every_rank) {
@@ -205,13 +207,15 @@ void Simulation::step(bool leave_kick_open) {
   const RotorGroups& moved = one_process || !contacts ? rotors_ : ranks_->owned_rotors();
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
   in_team(team, [&] {
-    if (close_last)
+    if (close_last && one_process)
       close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)));
+    else if (close_last)
+      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
   });
-  if (close_last) engine_->sums_taken();
+  if (close_last) sums_taken();
   drivers.advance(time(), dt_);
   // Drag and fluid forces read every body (the void fraction, the power summed in id order).
   if (external_ && !one_process) ranks_->sync_bodies(bodies);
@@ -234,22 +238,36 @@ void Simulation::step(bool leave_kick_open) {
       const LocalBodies local = all_owned(bodies);
       engine_->forces(local, drivers, dt_, !stale, false);
       if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local));
+    } else if (contacts) {
+      if (!leave_kick_open) ranks_->kick_closing(bodies, 0.5 * dt_);
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
-  if (contacts && one_process && !leave_kick_open) engine_->sums_taken();
+  if (contacts && !leave_kick_open) sums_taken();
   if (contacts) driver_work_half();
-  kick_open_ = leave_kick_open && contacts && one_process;
+  kick_open_ = leave_kick_open && contacts;
   ++step_;
   if (ledger_closes(step_)) close_ledger();
 }
 
 void Simulation::close_step() {
   if (!std::exchange(kick_open_, false)) return;
-  in_team(bodies.size() >= kParallelMinItems,
-          [&] { kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies))); });
-  engine_->sums_taken();
+  in_team(bodies.size() >= kParallelMinItems, [&] {
+    if (ranks_)
+      ranks_->kick_closing(bodies, 0.5 * dt_);
+    else
+      kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies)));
+  });
+  sums_taken();
+}
+
+// Every owned body's contact sum was read (by a closing kick): the next pair loop starts from zeros.
+void Simulation::sums_taken() {
+  if (ranks_)
+    ranks_->sums_taken();
+  else
+    engine_->sums_taken();
 }
 
 EnergyRow Simulation::energy() const {

@@ -50,8 +50,8 @@ class Simulation {
 
   // One velocity-Verlet step of dt. `leave_kick_open`: its closing kick is left to the next
   // step's opening pass (one pass over the bodies for both: each body's arithmetic and bits as
-  // two passes'), so nothing may read the bodies before that step or close_step(). One process
-  // with contacts only; elsewhere the step closes as usual.
+  // two passes'), so nothing may read the bodies before that step or close_step(). With
+  // contacts only (a distributed run's rank: its owned bodies); elsewhere the step closes as usual.
   void step(bool leave_kick_open = false);
   // Applies a closing kick left open (nothing to do otherwise): the bodies at the full step.
   void close_step();
@@ -133,6 +133,7 @@ class Simulation {
   void external_forces();
   void driver_work_half();
   void contact_stage();
+  void sums_taken();
   StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 
   Scene scene_;

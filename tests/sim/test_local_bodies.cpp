@@ -77,6 +77,7 @@ SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
     bool any_stale = false;  // the global decision: every part measures its bodies
     for (Part& part : split) {
       part.store.refresh(bodies);
+      part.store.clear_forces();
       any_stale = part.engine->lists_stale(part.store.view(), part.drivers) || any_stale;
     }
     REQUIRE(any_stale == stale);
