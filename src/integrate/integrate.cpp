@@ -16,20 +16,20 @@ using integrate_detail::predict_body;
 // Relative tolerance on principal moments for the isotropic fast path.
 constexpr double kIsotropicTolerance = 1e-12;
 
-// Runs body(arrays, i, rotor path) over the bodies of the three groups.
-template <class Body>
-void over_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
-  over_group<Rotor::sphere>(b, groups.spheres, body);
-  over_group<Rotor::isotropic>(b, groups.isotropic, body);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, body);
-}
-
 // Body i into the group of its rotation path; shapes null: no sphere path.
 void add_rotor(const Bodies& b, std::size_t i, const std::vector<Shape>* shapes, RotorGroups& groups) {
   if (shapes && keeps_no_orientation((*shapes)[b.shape[i]], b.inertia[i]))
     groups.spheres.push_back(i);
   else
     (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
+}
+
+// Sets spheres_alike once the groups are made.
+void mark_spheres(const Bodies& b, RotorGroups& groups) {
+  const std::vector<std::size_t>& s = groups.spheres;
+  groups.spheres_alike = !s.empty();
+  for (std::size_t k = 0; k < s.size(); ++k)
+    groups.spheres_alike &= s[k] == k && b.mass[k] == b.mass[0] && b.inertia[k] == b.inertia[0];
 }
 
 }  // namespace
@@ -46,18 +46,21 @@ bool keeps_no_orientation(const Shape& shape, const Vec3& inertia) {
 RotorGroups group_rotors(const Bodies& b) {
   RotorGroups groups;
   for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, nullptr, groups);
+  mark_spheres(b, groups);
   return groups;
 }
 
 RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes) {
   RotorGroups groups;
   for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, &shapes, groups);
+  mark_spheres(b, groups);
   return groups;
 }
 
 RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids, const std::vector<Shape>& shapes) {
   RotorGroups groups;
   for (std::uint32_t i : ids) add_rotor(b, i, &shapes, groups);
+  mark_spheres(b, groups);
   return groups;
 }
 
@@ -84,7 +87,7 @@ void kick(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_groups(b, groups, [&](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     drift_body<decltype(rotor)::value>(a, i, dt);
   });
 }
@@ -101,13 +104,13 @@ void drift(Bodies& b, double dt) {
 }
 
 void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
-  over_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_groups(b, groups, [&](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     predict_body<decltype(rotor)::value>(a, i, h);
   });
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
-  over_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_groups(b, groups, [h, dt, gravity](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
   });
 }

@@ -27,6 +27,9 @@ struct RotorGroups {
   std::vector<std::size_t> spheres;     // Rotor::sphere (only with the shapes known)
   std::vector<std::size_t> isotropic;   // Rotor::isotropic
   std::vector<std::size_t> asymmetric;  // Rotor::asymmetric
+  // spheres[k] == k and each has the same mass and inertia (a bed of equal spheres): the
+  // sphere passes read no ids and one mass and inertia, not three arrays (40 bytes a body a pass).
+  bool spheres_alike = false;
 };
 
 // True when the principal moments agree within 1e-12 relative (sphere, cube, Platonic solid).
@@ -59,7 +62,8 @@ void kick(Bodies& b, double h, const RotorGroups& groups);
 // The addresses of the arrays a step's passes read and write, copied into each thread's loop:
 // there they stay in registers. Read through Bodies' vectors, each access reloads the vector's
 // address (Eigen's SSE stores may alias anything): ~44 instructions a body in start_step.
-struct BodyArrays {
+template <class Mass, class Inertia>
+struct BodyArraysOf {
   Vec3* position;             // m
   Quat* orientation;
   Vec3* velocity;             // m/s
@@ -69,13 +73,31 @@ struct BodyArrays {
   Vec3* angular_momentum;     // kg m^2/s, principal frame
   Vec3* force;                // N
   Vec3* torque;               // N m
-  const double* mass;         // kg
-  const Vec3* inertia;        // kg m^2
+  Mass mass;                  // kg, [i]
+  Inertia inertia;            // kg m^2, [i]
 };
+using BodyArrays = BodyArraysOf<const double*, const Vec3*>;
+// One mass and inertia for every body of a group, indexed as the arrays are (the same bits).
+struct SameMass {
+  double m;  // kg
+  double operator[](std::size_t) const { return m; }
+};
+struct SameInertia {
+  Vec3 inertia;  // kg m^2
+  const Vec3& operator[](std::size_t) const { return inertia; }
+};
+using AlikeArrays = BodyArraysOf<SameMass, SameInertia>;
+
 inline BodyArrays arrays_of(Bodies& b) {
   return {b.position.data(),         b.orientation.data(),      b.velocity.data(), b.angular_velocity.data(),
           b.velocity_end.data(),     b.angular_velocity_end.data(), b.angular_momentum.data(),
           b.force.data(),            b.torque.data(),           b.mass.data(),     b.inertia.data()};
+}
+// Body `like`'s mass and inertia for all (RotorGroups::spheres_alike).
+inline AlikeArrays alike_arrays_of(Bodies& b, std::size_t like) {
+  const BodyArrays a = arrays_of(b);
+  return {a.position, a.orientation,      a.velocity, a.angular_velocity,        a.velocity_end,
+          a.angular_velocity_end, a.angular_momentum, a.force, a.torque, {b.mass[like]}, {b.inertia[like]}};
 }
 
 // The rotor path as a type: body lambdas take it as `auto rotor` and read decltype(rotor)::value.
@@ -84,25 +106,37 @@ using RotorPath = std::integral_constant<Rotor, kRotor>;
 
 // Runs body(arrays, i, RotorPath<kRotor>) over the bodies of `ids` (one rotor group), each
 // thread of the team on its share with the arrays' addresses in its own registers.
-template <Rotor kRotor, class Body>
-void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body) {
+// kInOrder: ids[k] == k, so k is the body (the same share of bodies to each thread).
+template <Rotor kRotor, bool kInOrder, class Arrays, class Body>
+void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const Body& body) {
   const std::size_t n = ids.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   in_team(n >= kParallelMinItems, [&] {
-    const BodyArrays a = arrays_of(b);
+    const Arrays a = arrays;
     const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) each(a, id[k], RotorPath<kRotor>{});
+    for (std::size_t k = 0; k < n; ++k) each(a, kInOrder ? k : id[k], RotorPath<kRotor>{});
   });
+}
+
+// Runs body(arrays, i, rotor path) over the bodies of the three groups.
+template <class Body>
+void over_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
+  if (groups.spheres_alike)
+    over_group<Rotor::sphere, true>(alike_arrays_of(b, 0), groups.spheres, body);
+  else
+    over_group<Rotor::sphere, false>(arrays_of(b), groups.spheres, body);
+  over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body);
+  over_group<Rotor::asymmetric, false>(arrays_of(b), groups.asymmetric, body);
 }
 
 namespace integrate_detail {
 // v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame;
 // a sphere: R the identity). Inlined into the step's passes: a call per body and pass cost ~10%
 // of a kick.
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void kick_body(const BodyArrays& b, std::size_t i, double h) {
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void kick_body(const Arrays& b, std::size_t i, double h) {
   b.velocity[i] += b.force[i] * (h / b.mass[i]);
   if constexpr (kRotor == Rotor::sphere) {
     const Vec3 dl = b.torque[i] * h;  // N m s, world frame = body frame
@@ -120,8 +154,8 @@ template <Rotor kRotor>
 
 // Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
 // (an isotropic body keeps its w: it turns about L; a sphere does not turn its q at all).
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void drift_body(const BodyArrays& b, std::size_t i, double dt) {
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void drift_body(const Arrays& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
   if constexpr (kRotor == Rotor::sphere) {
     return;
@@ -136,8 +170,8 @@ template <Rotor kRotor>
   }
 }
 
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void predict_body(const Arrays& b, std::size_t i, double h) {
   b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
   if constexpr (kRotor != Rotor::asymmetric) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
@@ -149,8 +183,8 @@ template <Rotor kRotor>
 
 // A step's opening for body i: kick(h), drift(dt), predict_end_velocities(h) with the last
 // step's force, then force = m gravity and torque = 0 (m/s^2).
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void start_body(const BodyArrays& a, std::size_t i, double h, double dt,
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void start_body(const Arrays& a, std::size_t i, double h, double dt,
                                               const Vec3& gravity) {
   kick_body<kRotor>(a, i, h);
   drift_body<kRotor>(a, i, dt);
@@ -164,13 +198,10 @@ template <Rotor kRotor>
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
 template <class Before>
 void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before) {
-  auto one = [h, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_groups(b, groups, [h, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
-  };
-  over_group<Rotor::sphere>(b, groups.spheres, one);
-  over_group<Rotor::isotropic>(b, groups.isotropic, one);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, one);
+  });
 }
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).
@@ -196,14 +227,11 @@ void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const
 template <class Before>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
                           const Before& before) {
-  auto one = [h, dt, gravity, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_groups(b, groups, [h, dt, gravity, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
     integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
-  };
-  over_group<Rotor::sphere>(b, groups.spheres, one);
-  over_group<Rotor::isotropic>(b, groups.isotropic, one);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, one);
+  });
 }
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).
