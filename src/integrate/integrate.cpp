@@ -24,6 +24,14 @@ void add_rotor(const Bodies& b, std::size_t i, const std::vector<Shape>* shapes,
     (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
 }
 
+// Sets spheres_alike once the groups are made.
+void mark_spheres(const Bodies& b, RotorGroups& groups) {
+  const std::vector<std::size_t>& s = groups.spheres;
+  groups.spheres_alike = !s.empty();
+  for (std::size_t k = 0; k < s.size(); ++k)
+    groups.spheres_alike &= s[k] == k && b.mass[k] == b.mass[0] && b.inertia[k] == b.inertia[0];
+}
+
 }  // namespace
 
 bool is_isotropic(const Vec3& inertia) {
@@ -38,18 +46,21 @@ bool keeps_no_orientation(const Shape& shape, const Vec3& inertia) {
 RotorGroups group_rotors(const Bodies& b) {
   RotorGroups groups;
   for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, nullptr, groups);
+  mark_spheres(b, groups);
   return groups;
 }
 
 RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes) {
   RotorGroups groups;
   for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, &shapes, groups);
+  mark_spheres(b, groups);
   return groups;
 }
 
 RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids, const std::vector<Shape>& shapes) {
   RotorGroups groups;
   for (std::uint32_t i : ids) add_rotor(b, i, &shapes, groups);
+  mark_spheres(b, groups);
   return groups;
 }
 
@@ -76,7 +87,7 @@ void kick(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void drift(Bodies& b, double dt, const RotorGroups& groups) {
-  over_rotor_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_rotor_groups(b, groups, [&](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     drift_body<decltype(rotor)::value>(a, i, dt);
   });
 }
@@ -93,13 +104,13 @@ void drift(Bodies& b, double dt) {
 }
 
 void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
-  over_rotor_groups(b, groups, [&](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_rotor_groups(b, groups, [&](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     predict_body<decltype(rotor)::value>(a, i, h);
   });
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity) {
-  over_rotor_groups(b, groups, [h, dt, gravity](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  over_rotor_groups(b, groups, [h, dt, gravity](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
   });
 }

@@ -27,6 +27,9 @@ struct RotorGroups {
   std::vector<std::size_t> spheres;     // Rotor::sphere (only with the shapes known)
   std::vector<std::size_t> isotropic;   // Rotor::isotropic
   std::vector<std::size_t> asymmetric;  // Rotor::asymmetric
+  // spheres[k] == k and each has the same mass and inertia (a bed of equal spheres): the
+  // sphere passes read no ids and one mass and inertia, not three arrays (40 bytes a body a pass).
+  bool spheres_alike = false;
 };
 
 // True when the principal moments agree within 1e-12 relative (sphere, cube, Platonic solid).
@@ -59,7 +62,8 @@ void kick(Bodies& b, double h, const RotorGroups& groups);
 // The addresses of the arrays a step's passes read and write, copied into each thread's loop:
 // there they stay in registers. Read through Bodies' vectors, each access reloads the vector's
 // address (Eigen's SSE stores may alias anything): ~44 instructions a body in start_step.
-struct BodyArrays {
+template <class Mass, class Inertia>
+struct BodyArraysOf {
   Vec3* position;             // m
   Quat* orientation;
   Vec3* velocity;             // m/s
@@ -69,13 +73,33 @@ struct BodyArrays {
   Vec3* angular_momentum;     // kg m^2/s, principal frame
   Vec3* force;                // N
   Vec3* torque;               // N m
-  const double* mass;         // kg
-  const Vec3* inertia;        // kg m^2
+  Mass mass;                  // kg, [i]
+  Inertia inertia;            // kg m^2, [i]
 };
+using BodyArrays = BodyArraysOf<const double*, const Vec3*>;
+
+// One mass and inertia for every body of a group, indexed as the arrays are (the same bits).
+struct SameMass {
+  double m;  // kg
+  double operator[](std::size_t) const { return m; }
+};
+struct SameInertia {
+  Vec3 inertia;  // kg m^2
+  const Vec3& operator[](std::size_t) const { return inertia; }
+};
+using AlikeArrays = BodyArraysOf<SameMass, SameInertia>;
+
 inline BodyArrays arrays_of(Bodies& b) {
   return {b.position.data(),         b.orientation.data(),      b.velocity.data(), b.angular_velocity.data(),
           b.velocity_end.data(),     b.angular_velocity_end.data(), b.angular_momentum.data(),
           b.force.data(),            b.torque.data(),           b.mass.data(),     b.inertia.data()};
+}
+
+// Body `like`'s mass and inertia for all (RotorGroups::spheres_alike).
+inline AlikeArrays alike_arrays_of(Bodies& b, std::size_t like) {
+  const BodyArrays a = arrays_of(b);
+  return {a.position, a.orientation,      a.velocity, a.angular_velocity,        a.velocity_end,
+          a.angular_velocity_end, a.angular_momentum, a.force, a.torque, {b.mass[like]}, {b.inertia[like]}};
 }
 
 // The rotor path as a type: body lambdas take it as `auto rotor` and read decltype(rotor)::value.
@@ -85,16 +109,17 @@ using RotorPath = std::integral_constant<Rotor, kRotor>;
 // Runs body(arrays, i, RotorPath<kRotor>) over the bodies of `ids` (one rotor group), each
 // thread of the team on its share with the arrays' addresses in its own registers; ends at a
 // barrier when `wait` (the same on every thread).
-template <Rotor kRotor, class Body>
-void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body, bool wait) {
+// kInOrder: ids[k] == k, so k is the body (the same share of bodies to each thread).
+template <Rotor kRotor, bool kInOrder, class Arrays, class Body>
+void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const Body& body, bool wait) {
   const std::size_t n = ids.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   in_team(n >= kParallelMinItems, [&] {
-    const BodyArrays a = arrays_of(b);
+    const Arrays a = arrays;
     const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
 #pragma omp for schedule(static) nowait
-    for (std::size_t k = 0; k < n; ++k) each(a, id[k], RotorPath<kRotor>{});
+    for (std::size_t k = 0; k < n; ++k) each(a, kInOrder ? k : id[k], RotorPath<kRotor>{});
     if (wait) {
 #pragma omp barrier
     }
@@ -103,21 +128,25 @@ void over_group(Bodies& b, const std::vector<std::size_t>& ids, const Body& body
 
 // body over the three rotor groups: they hold different bodies and body(i) touches body i's
 // state only, so only the last group that has bodies ends at a barrier (a pass over a mixed
-// scene meets once, not once per group).
+// scene meets once, not once per group). Equal spheres in id order read one mass and inertia.
 template <class Body>
 void over_rotor_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
   const bool isotropic = !groups.isotropic.empty(), asymmetric = !groups.asymmetric.empty();
-  over_group<Rotor::sphere>(b, groups.spheres, body, !isotropic && !asymmetric);
-  over_group<Rotor::isotropic>(b, groups.isotropic, body, !asymmetric);
-  over_group<Rotor::asymmetric>(b, groups.asymmetric, body, true);
+  const bool sphere_wait = !isotropic && !asymmetric;
+  if (groups.spheres_alike)
+    over_group<Rotor::sphere, true>(alike_arrays_of(b, 0), groups.spheres, body, sphere_wait);
+  else
+    over_group<Rotor::sphere, false>(arrays_of(b), groups.spheres, body, sphere_wait);
+  over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body, !asymmetric);
+  over_group<Rotor::asymmetric, false>(arrays_of(b), groups.asymmetric, body, true);
 }
 
 namespace integrate_detail {
 // v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame;
 // a sphere: R the identity). Inlined into the step's passes: a call per body and pass cost ~10%
 // of a kick.
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void kick_body(const BodyArrays& b, std::size_t i, double h) {
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void kick_body(const Arrays& b, std::size_t i, double h) {
   b.velocity[i] += b.force[i] * (h / b.mass[i]);
   if constexpr (kRotor == Rotor::sphere) {
     const Vec3 dl = b.torque[i] * h;  // N m s, world frame = body frame
@@ -135,8 +164,8 @@ template <Rotor kRotor>
 
 // Translation, then the exact or split free-rotor flow, then w from the new (q, L_body)
 // (an isotropic body keeps its w: it turns about L; a sphere does not turn its q at all).
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void drift_body(const BodyArrays& b, std::size_t i, double dt) {
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void drift_body(const Arrays& b, std::size_t i, double dt) {
   b.position[i] += b.velocity[i] * dt;
   if constexpr (kRotor == Rotor::sphere) {
     return;
@@ -152,8 +181,8 @@ template <Rotor kRotor>
 }
 
 // kKicked: velocity_end is set (kick_body_twice).
-template <Rotor kRotor, bool kKicked = false>
-[[gnu::always_inline]] inline void predict_body(const BodyArrays& b, std::size_t i, double h) {
+template <Rotor kRotor, bool kKicked = false, class Arrays>
+[[gnu::always_inline]] inline void predict_body(const Arrays& b, std::size_t i, double h) {
   if constexpr (!kKicked) b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
   if constexpr (kRotor != Rotor::asymmetric) {
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
@@ -166,8 +195,8 @@ template <Rotor kRotor, bool kKicked = false>
 // A step's opening for body i: kick(h), drift(dt), predict_end_velocities(h) with the last
 // step's force, then force = m gravity and torque = 0 (m/s^2).
 // kKicked true: the kick and velocity_end are done (close_and_start_step's kick_body_twice).
-template <Rotor kRotor, bool kKicked = false>
-[[gnu::always_inline]] inline void start_body(const BodyArrays& a, std::size_t i, double h, double dt,
+template <Rotor kRotor, bool kKicked = false, class Arrays>
+[[gnu::always_inline]] inline void start_body(const Arrays& a, std::size_t i, double h, double dt,
                                               const Vec3& gravity) {
   if constexpr (!kKicked) kick_body<kRotor>(a, i, h);
   drift_body<kRotor>(a, i, dt);
@@ -179,8 +208,8 @@ template <Rotor kRotor, bool kKicked = false>
 // same force, torque, h and orientation, so each shared term (F h/m, R^T T h, T h/I) is made once
 // and added twice; an asymmetric body's w is made once, from the twice-kicked L. Each kick's bits.
 // velocity_end = v + F h/m (predict_body's) too: the drift leaves v alone.
-template <Rotor kRotor>
-[[gnu::always_inline]] inline void kick_body_twice(const BodyArrays& b, std::size_t i, double h) {
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void kick_body_twice(const Arrays& b, std::size_t i, double h) {
   const Vec3 dv = b.force[i] * (h / b.mass[i]);  // m/s
   b.velocity[i] += dv;
   b.velocity[i] += dv;
@@ -206,7 +235,7 @@ template <Rotor kRotor>
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
 template <class Before>
 void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before) {
-  auto one = [h, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  auto one = [h, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
   };
@@ -236,7 +265,7 @@ void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const
 template <class Before>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
                           const Before& before) {
-  auto one = [h, dt, gravity, before](const BodyArrays& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+  auto one = [h, dt, gravity, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     constexpr Rotor kRotor = decltype(rotor)::value;
     integrate_detail::kick_body_twice<kRotor>(a, i, h);  // the closing kick and start_body's

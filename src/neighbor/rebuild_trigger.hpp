@@ -20,7 +20,8 @@ class RebuildTrigger {
  public:
   // Remembers the state the lists were built at; counts one rebuild. `points`: every body's
   // bounding radius given to measure is 0 (spheres' cores), so no orientation is kept (32
-  // bytes a body): turning moves no point.
+  // bytes a body): turning moves no point; nor the bounds, which only polyhedra read (8 bytes).
+  // The radii are then not read either: each step's pass reads x and x at the build alone.
   void mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q, bool points = false);
   // True when some body's displacement_bound exceeds skin/2 (or is not finite), or when no build
   // was marked for this many bodies. Parallel reduction, cheap enough for every step. Keeps
@@ -36,11 +37,15 @@ class RebuildTrigger {
   bool take_exceeded();
   // m, per body, the displacement_bound found by the last needs_rebuild (0 right after a build):
   // two features closer than their distance at the build minus both bounds cannot have met.
+  // Empty for points.
   const std::vector<double>& displacement() const { return displacement_; }
   // Calls to mark_built so far.
   std::size_t rebuilds() const { return rebuild_count; }
 
  private:
+  // measure's loop for points: |x - x_built| alone.
+  bool points_exceed(const std::vector<Vec3>& x, double limit) const;
+
   std::vector<Vec3> x_built;  // m
   std::vector<Quat> q_built;  // empty when mark_built was told the bodies are points
   std::vector<double> displacement_;  // m

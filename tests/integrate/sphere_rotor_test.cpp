@@ -128,3 +128,38 @@ TEST_CASE("drop_sphere_orientations folds L into the world frame and keeps ident
   const double e0 = 0.5 * before.angular_momentum[0].squaredNorm() / before.inertia[0].x();  // J
   CHECK(0.5 * b.angular_momentum[0].squaredNorm() / b.inertia[0].x() == Approx(e0).epsilon(1e-15));
 }
+
+TEST_CASE("equal spheres in id order take one mass and inertia: the per-body arrays' bits, at 1 and 2 threads",
+          "[integrate]") {
+  const std::size_t n = 2 * kParallelMinItems;  // enough for a team
+  Bodies start = mixed_bodies(n);
+  CHECK_FALSE(group_rotors(start, shapes()).spheres_alike);  // mixed: spheres not 0..n-1
+  for (std::size_t i = 0; i < n; ++i) {
+    start.shape[i] = 0;
+    start.orientation[i] = Quat::Identity();
+    start.mass[i] = 1.5;                      // kg
+    start.inertia[i] = Vec3::Constant(2e-3);  // kg m^2
+    set_angular_velocity(start, i, start.angular_velocity[i]);
+  }
+  const RotorGroups alike = group_rotors(start, shapes());
+  REQUIRE(alike.spheres_alike);
+  RotorGroups each = alike;  // the same bodies read from their arrays
+  each.spheres_alike = false;
+  Bodies heavier = start;
+  heavier.mass[n - 1] = 1.6;  // kg: one differs
+  CHECK_FALSE(group_rotors(heavier, shapes()).spheres_alike);
+  Bodies reference = start;
+  run(reference, each, 200);
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    Bodies b = start;
+    run(b, alike, 200);
+    CHECK(same_bits(b.position, reference.position));
+    CHECK(same_bits(b.velocity, reference.velocity));
+    CHECK(same_bits(b.angular_velocity, reference.angular_velocity));
+    CHECK(same_bits(b.angular_momentum, reference.angular_momentum));
+    CHECK(same_bits(b.velocity_end, reference.velocity_end));
+    CHECK(same_bits(b.angular_velocity_end, reference.angular_velocity_end));
+  }
+  omp_set_num_threads(1);
+}

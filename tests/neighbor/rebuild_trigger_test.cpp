@@ -58,7 +58,7 @@ TEST_CASE("one moving body among many is seen by the parallel check", "[rebuild]
   }
 }
 
-TEST_CASE("points (radius 0) need no orientation kept: the same bounds, turning or not", "[rebuild]") {
+TEST_CASE("points (radius 0) need no orientation or bounds kept: the same answers, turning or not", "[rebuild]") {
   const double skin = 0.1;
   const test::Scene s = test::uniform_scene(2000, 10.0, 0.2, 0.5, 5);
   const std::vector<double> points(s.centers.size(), 0.0);
@@ -74,7 +74,7 @@ TEST_CASE("points (radius 0) need no orientation kept: the same bounds, turning 
   points_only.mark_built(s.centers, q0, true);
   REQUIRE_FALSE(kept.needs_rebuild(x, q, points, skin));
   REQUIRE_FALSE(points_only.needs_rebuild(x, q, points, skin));
-  CHECK(points_only.displacement() == kept.displacement());
+  CHECK(points_only.displacement().empty());  // only polyhedra read the bounds
   x[7].y() += 0.5 * skin;
   CHECK(kept.needs_rebuild(x, q, points, skin));
   CHECK(points_only.needs_rebuild(x, q, points, skin));
