@@ -411,9 +411,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       const std::uint64_t at_rest = drivers_at_rest(drivers);
       // Equal spheres: one radius, mass and k', c' for all (index 0 through mask 0).
       const double r = equal_spheres_ ? equal_spheres_->radius : 0.0, m = equal_spheres_ ? equal_spheres_->mass : 0.0;
-      LinearStep step;  // made here as a pair's cache is at first use: the same bits
-      if (equal_spheres_ && !Parts::Normal::kCurved && law.exact_step && law.alpha_n > 0.0 && !law.contact_mass)
-        step = linear_step(law.kn, law.alpha_n, m, dt);
+      LinearStep step;
+      if (equal_spheres_ && !law.contact_mass) step = same_linear_step<Parts>(law, m, dt);
       const WallSpheres sizes = equal_spheres_ ? WallSpheres{&r, &m, &step, 0}
                                                : WallSpheres{view.radius, view.mass, driver_list_.linear_steps.data(), ~0u};
       all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {

@@ -50,7 +50,9 @@ struct ForceSums {
   const Vec3 *force_i, *torque_i;     // per driver pair
   Vec3* force;
   Vec3* torque;
-  [[gnu::always_inline]] void operator()(std::size_t b) const {
+  [[gnu::always_inline]] void operator()(std::size_t b) const { add_to(b, force[b], torque[b]); }
+  // Body b's sum (its pairs', then its touching driver pairs') added to f_to and t_to (N, N m).
+  [[gnu::always_inline]] void add_to(std::size_t b, Vec3& f_to, Vec3& t_to) const {
     Vec3 f = body[b].force, t = body[b].torque;
     body[b] = BodySum{};
     for (std::uint32_t k = driver_begin[b]; k < driver_begin[b + 1]; ++k) {
@@ -58,8 +60,8 @@ struct ForceSums {
       f += force_i[k];
       t += torque_i[k];
     }
-    force[b] += f;
-    torque[b] += t;
+    f_to += f;
+    t_to += t;
   }
 };
 

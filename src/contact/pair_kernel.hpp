@@ -31,6 +31,14 @@ struct EqualSpheres {
   double radius, mass;
 };
 
+// Equal spheres' k', c' of the exact step for pairs of mass m (kg), made once a step as a pair's
+// cache makes them (the same bits); empty where the law reads none.
+template <class Parts>
+LinearStep same_linear_step(const LawParams& law, double m, double dt) {
+  if (!Parts::Normal::kCurved && law.exact_step && law.alpha_n > 0.0) return linear_step(law.kn, law.alpha_n, m, dt);
+  return LinearStep{};
+}
+
 // True when the two bodies are farther apart than `band` along the line of their centres:
 // the gap between their support planes normal to it bounds their distance from below.
 inline bool separated_along_centres(const PosedBody& a, const PosedBody& b, double band) {

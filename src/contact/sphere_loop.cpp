@@ -16,8 +16,7 @@ void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyVi
     const double r = equal->radius, m = equal->mass;  // m, kg
     const double pair_mass = m * m / (m + m);         // kg, as EachSphere's: the same bits
     // Made here, not at first use: the loop's threads would share the cache.
-    LinearStep step;
-    if (!Parts::Normal::kCurved && law.exact_step && law.alpha_n > 0.0) step = linear_step(law.kn, law.alpha_n, pair_mass, dt);
+    LinearStep step = same_linear_step<Parts>(law, pair_mass, dt);
     run(SameSpheres{r, pair_mass, r * r / (r + r), &step});
   });
 }

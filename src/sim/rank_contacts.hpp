@@ -36,23 +36,14 @@ struct ReactionShare {
 void add_reactions(std::vector<ReactionShare> all, Drivers& drivers);
 
 // The closing kick's hook (integrate.hpp's kick_after): owned body i's contact sum of the
-// step, read at its local index, added to its force and torque: ForceSums' arithmetic.
+// step, read at its local index, added to its force and torque (ForceSums::add_to).
 struct OwnedSums {
   ForceSums local;               // its force and torque unused: local indices
   const std::int32_t* local_of;  // global id -> local index
   Vec3* force;                   // N, per global id
   Vec3* torque;                  // N m
   [[gnu::always_inline]] void operator()(std::size_t i) const {
-    const std::size_t b = std::size_t(local_of[i]);
-    Vec3 f = local.body[b].force, t = local.body[b].torque;
-    local.body[b] = BodySum{};
-    for (std::uint32_t k = local.driver_begin[b]; k < local.driver_begin[b + 1]; ++k) {
-      if (!local.touching[k]) continue;
-      f += local.force_i[k];
-      t += local.torque_i[k];
-    }
-    force[i] += f;
-    torque[i] += t;
+    local.add_to(std::size_t(local_of[i]), force[i], torque[i]);
   }
 };
 
