@@ -415,11 +415,17 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       if (equal_spheres_ && !law.contact_mass) step = same_linear_step<Parts>(law, m, dt);
       const WallSpheres sizes = equal_spheres_ ? WallSpheres{&r, &m, &step, 0}
                                                : WallSpheres{view.radius, view.mass, driver_list_.linear_steps.data(), ~0u};
-      all_pair_forces(driver_list_, [&](std::uint32_t k, PairScratch& scratch) {
+      const auto kernel = [&](std::uint32_t k, PairScratch& scratch) {
         if (spheres_only_ && drivers.is_wall(driver_list_.pairs[k].j))  // one slot, the centre: sphere_wall.hpp
           return sphere_wall_forces<Parts>(law, band_driver_, dt, view, drivers, driver_list_, k, scratch, sizes, at_rest);
         return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
-      });
+      };
+      // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
+      // also even out the body pairs' walk, which ends without a barrier).
+      if (spheres_only_)
+        even_pair_forces(driver_list_, kernel);
+      else
+        all_pair_forces(driver_list_, kernel);
     });
   } else {
 #pragma omp barrier

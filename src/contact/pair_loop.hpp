@@ -103,6 +103,26 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
   }
 }
 
+// Block b's pairs: each one's forces kept in the list, its energy added to its pending sum in
+// step order, the block's contacts counted and its ended contacts flagged.
+template <class Kernel>
+void block_forces(PairList& list, const Kernel& kernel, std::size_t b, PairScratch& scratch) {
+  std::uint32_t contacts = 0;
+  bool ended = false;
+  for (std::size_t k = b * kPairBlock; k < std::min(list.size(), (b + 1) * kPairBlock); ++k) {
+    const PairTotals t = kernel(std::uint32_t(k), scratch);
+    list.force_i[k] = t.force_i;
+    list.torque_i[k] = t.torque_i;
+    list.torque_j[k] = t.torque_j;
+    ended |= (list.touching[k] != 0) & (t.contacts == 0);  // touching at the last step, not now
+    list.touching[k] = std::uint16_t(t.contacts);
+    list.pending[k] += t.energy;
+    contacts += std::uint32_t(t.contacts);
+  }
+  list.block_contacts[b] = contacts;
+  list.block_ended[b] = ended;
+}
+
 }  // namespace pair_loop_detail
 
 // The body pairs with each body's sum made in the loop (pair_split.hpp), on every thread of the
@@ -140,22 +160,6 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
   assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
   assert(list.pending.size() == n);
-  auto one_block = [&](std::size_t b, PairScratch& scratch) {
-    std::uint32_t contacts = 0;
-    bool ended = false;
-    for (std::size_t k = b * kPairBlock; k < std::min(n, (b + 1) * kPairBlock); ++k) {
-      const PairTotals t = kernel(std::uint32_t(k), scratch);
-      list.force_i[k] = t.force_i;
-      list.torque_i[k] = t.torque_i;
-      list.torque_j[k] = t.torque_j;
-      ended |= (list.touching[k] != 0) & (t.contacts == 0);  // touching at the last step, not now
-      list.touching[k] = std::uint16_t(t.contacts);
-      list.pending[k] += t.energy;
-      contacts += std::uint32_t(t.contacts);
-    }
-    list.block_contacts[b] = contacts;
-    list.block_ended[b] = ended;
-  };
   // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
   in_team(blocks >= 2, [&] {
     PairScratch scratch;
@@ -165,11 +169,29 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
     }
     if constexpr (kNoWait) {
 #pragma omp for schedule(dynamic, 1) nowait
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+      for (std::size_t b = 0; b < blocks; ++b) pair_loop_detail::block_forces(list, kernel, b, scratch);
     } else {
 #pragma omp for schedule(dynamic, 1)
-      for (std::size_t b = 0; b < blocks; ++b) one_block(b, scratch);
+      for (std::size_t b = 0; b < blocks; ++b) pair_loop_detail::block_forces(list, kernel, b, scratch);
     }
+  });
+}
+
+// all_pair_forces for pairs of like cost (spheres and walls): each thread takes the run of
+// blocks nearest its share of the pairs, the same every step, so a pair's arrays stay in one
+// core's cache and, the list being sorted by body, mostly its body's state too (shared as they
+// came, blocks moved between the cores each step). Ends at a barrier.
+template <class Kernel>
+void even_pair_forces(PairList& list, const Kernel& kernel) {
+  const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
+  assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
+  in_team(blocks >= 2, [&] {
+    PairScratch scratch;
+    const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
+    auto first_block = [&](std::size_t u) { return (u * n / threads + kPairBlock / 2) / kPairBlock; };
+    for (std::size_t b = first_block(t), end = t + 1 == threads ? blocks : first_block(t + 1); b < end; ++b)
+      pair_loop_detail::block_forces(list, kernel, b, scratch);
+#pragma omp barrier
   });
 }
 
