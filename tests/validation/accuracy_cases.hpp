@@ -196,6 +196,44 @@ inline double rolling_impact_worst_phase(double fraction, int phases = 16) {
   return worst;
 }
 
+// A sphere landing at 45 deg (0.3 m/s) spinning forward at half the rolling speed on a wall with
+// friction (mu 0.3, kt = kn), the tangential dashpot (ratio 0.3) and rolling resistance (kr 0.2
+// kn R^2, mur 0.1): the tangential spring slips, sticks and slips out, and the rolling spring
+// with it. Error of v_t' and R w' against the RK4 reference (oblique_reference.hpp), / v_t.
+// `phase` as in sphere_wall_error (negative: a gap of 0.1 um).
+inline double rolling_friction_impact(double fraction, double phase = -1.0) {
+  const double mu = 0.3, v = 0.3 * std::sqrt(0.5), w0 = 0.5 * v / kRadius;  // -, m/s (both components), rad/s
+  const double kr = 0.2 * kKn * kRadius * kRadius, mur = 0.1, damp_tangential = 0.3;  // N m/rad, -, -
+  ContactParams config = law(kKn, kEn, mu, kKn);
+  config.damp_tangential = damp_tangential, config.kr = kr, config.mur = mur;
+  Scene scene = base_scene(config, true);
+  const ShapeLibrary lib = library({sphere_shape(kRadius)});
+  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
+  specs[0].angular_velocity = Vec3(0, w0, 0);
+  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * v * *scene.simulation.dt;
+  Simulation sim(scene, lib, specs);
+  const MeasuredImpact r = run_impact(
+      sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
+      [&] { return sim.bodies.velocity[0].z(); });
+  static const Rebound ref = [&] {  // the same for every step size: computed once
+    const LawParams prepared = prepare_law(config);
+    const double m = sim.bodies.mass[0], z = prepared.alpha_n;
+    const SpringContact reference{m,   0.4 * m * kRadius * kRadius, 2.0 * z * std::sqrt(kKn * m), kRadius, kKn, kKn, mu,
+                                  pair_tangential_damping(prepared, m), kr, mur};
+    double change = 0.0;
+    return reference.extrapolated(v, v, ClampedImpact{z, std::sqrt(kKn / m), v, m}.release_time(), change, w0);
+  }();
+  return std::max(std::abs(r.velocity.x() - ref.vt), std::abs(kRadius * r.angular_velocity.y() - ref.spin)) / v;
+}
+
+// The largest error over `phases` touch places in the step (rolling_friction_impact).
+inline double rolling_friction_impact_worst_phase(double fraction, int phases = 16) {
+  double worst = 0.0;
+  for (int k = 0; k < phases; ++k) worst = std::max(worst, rolling_friction_impact(fraction, double(k) / phases));
+  return worst;
+}
+
 // Cube landing on a corner off its centre (test_cube_landing.cpp): error of the contact-point
 // restitution against the rigid-body impulse with the rotational effective mass. With
 // damping_mass: contact (contact_mass) the dashpot is tuned to that mass: the answer is en.

@@ -42,6 +42,8 @@ TEST_CASE("accuracy: work-precision sweep", "[.accuracy]") {
       {"oblique impact 45 deg, worst of 16 touch phases", [](double f) { return oblique_impact_worst_phase(f); }, 16},
       {"oblique 45 deg, damp_tangential 0.3, worst of 16 touch phases",
        [](double f) { return oblique_impact_worst_phase(f, 16, 0.3); }, 16},
+      {"spinning landing, friction, damp_tangential 0.3, rolling resistance, worst of 16 touch phases",
+       [](double f) { return rolling_friction_impact_worst_phase(f); }, 16},
       {"Hertz en 0.1, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.1); }, 16},
       {"Hertz en 0.5, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.5); }, 16},
       {"Hertz en 0.9, worst of 16 touch phases", [](double f) { return hertz_impact(f, 0.9); }, 16},
