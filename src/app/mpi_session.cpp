@@ -31,17 +31,24 @@ class MpiLink final : public RankLink {
     return collect(mine, root);
   }
   void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
-    std::vector<MPI_Request> pending(out.size() + in.size());
+    begin_exchange(out, in);
+    end_exchange();
+  }
+  void begin_exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
+    pending_.resize(out.size() + in.size());
     for (std::size_t k = 0; k < in.size(); ++k)
       MPI_Irecv(in[k].bytes.data(), int(in[k].bytes.size()), MPI_CHAR, in[k].rank, kGhostTag, MPI_COMM_WORLD,
-                &pending[k]);
+                &pending_[k]);
     for (std::size_t k = 0; k < out.size(); ++k) {
       MPI_Isend(out[k].bytes.data(), int(out[k].bytes.size()), MPI_CHAR, out[k].rank, kGhostTag, MPI_COMM_WORLD,
-                &pending[in.size() + k]);
+                &pending_[in.size() + k]);
       ++counts_.parcels;
       counts_.parcel_bytes += out[k].bytes.size();
     }
-    MPI_Waitall(int(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  }
+  void end_exchange() const override {
+    MPI_Waitall(int(pending_.size()), pending_.data(), MPI_STATUSES_IGNORE);
+    pending_.clear();
   }
   LinkCounts counts() const override { return counts_; }
   std::vector<std::uint64_t> all_to_all(const std::vector<std::uint64_t>& to_each) const override {
@@ -92,6 +99,7 @@ class MpiLink final : public RankLink {
   static constexpr int kGhostTag = 20;  // the number: one kind of point-to-point message
   int rank_, ranks_;
   mutable LinkCounts counts_;
+  mutable std::vector<MPI_Request> pending_;  // the exchange begun, until end_exchange
 };
 #endif
 

@@ -24,12 +24,14 @@ void add_rotor(const Bodies& b, std::size_t i, const std::vector<Shape>* shapes,
     (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
 }
 
-// Sets spheres_alike once the groups are made.
+// Sets spheres_alike and spheres_in_order once the groups are made.
 void mark_spheres(const Bodies& b, RotorGroups& groups) {
   const std::vector<std::size_t>& s = groups.spheres;
-  groups.spheres_alike = !s.empty();
-  for (std::size_t k = 0; k < s.size(); ++k)
-    groups.spheres_alike &= s[k] == k && b.mass[k] == b.mass[0] && b.inertia[k] == b.inertia[0];
+  groups.spheres_alike = groups.spheres_in_order = !s.empty();
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    groups.spheres_alike &= b.mass[s[k]] == b.mass[s[0]] && b.inertia[s[k]] == b.inertia[s[0]];
+    groups.spheres_in_order &= s[k] == k;
+  }
 }
 
 }  // namespace

@@ -27,9 +27,10 @@ struct RotorGroups {
   std::vector<std::size_t> spheres;     // Rotor::sphere (only with the shapes known)
   std::vector<std::size_t> isotropic;   // Rotor::isotropic
   std::vector<std::size_t> asymmetric;  // Rotor::asymmetric
-  // spheres[k] == k and each has the same mass and inertia (a bed of equal spheres): the
-  // sphere passes read no ids and one mass and inertia, not three arrays (40 bytes a body a pass).
-  bool spheres_alike = false;
+  // Each sphere has the same mass and inertia (a bed of equal spheres): the sphere passes read
+  // one mass and inertia, not two arrays (32 bytes a body a pass, and h/m made once); in order,
+  // spheres[k] == k (one process), they read no ids either.
+  bool spheres_alike = false, spheres_in_order = false;
 };
 
 // True when the principal moments agree within 1e-12 relative (sphere, cube, Platonic solid).
@@ -128,13 +129,15 @@ void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const
 
 // body over the three rotor groups: they hold different bodies and body(i) touches body i's
 // state only, so only the last group that has bodies ends at a barrier (a pass over a mixed
-// scene meets once, not once per group). Equal spheres in id order read one mass and inertia.
+// scene meets once, not once per group). Equal spheres read one mass and inertia.
 template <class Body>
 void over_rotor_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
   const bool isotropic = !groups.isotropic.empty(), asymmetric = !groups.asymmetric.empty();
   const bool sphere_wait = !isotropic && !asymmetric;
-  if (groups.spheres_alike)
+  if (groups.spheres_alike && groups.spheres_in_order)
     over_group<Rotor::sphere, true>(alike_arrays_of(b, 0), groups.spheres, body, sphere_wait);
+  else if (groups.spheres_alike)  // a rank's owned spheres
+    over_group<Rotor::sphere, false>(alike_arrays_of(b, groups.spheres[0]), groups.spheres, body, sphere_wait);
   else
     over_group<Rotor::sphere, false>(arrays_of(b), groups.spheres, body, sphere_wait);
   over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body, !asymmetric);

@@ -60,6 +60,11 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
   for (std::uint32_t b : ids) ghost_fields(r, bodies, b);
 }
 
+void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& local, LocalStore& store) {
+  Reader r{bytes.data()};
+  for (std::uint32_t k : local) ghost_fields(r, store, k);
+}
+
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {
   std::vector<char> bytes(ids.size() * kOwnedBytes);
   Writer w{bytes.data()};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "polydem/bodies.hpp"
+#include "sim/local_store.hpp"
 
 namespace polydem {
 
@@ -16,8 +17,10 @@ constexpr std::size_t kOwnedBytes = sizeof(std::uint32_t) + 28 * sizeof(double);
 // The ghost state of bodies `ids`, in that order.
 std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
 void pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids, char* into);  // ids.size() x kGhostBytes
-// Writes a parcel of pack_ghosts(…, ids) into the bodies `ids`.
+// Writes a parcel of pack_ghosts(…, ids) into the bodies `ids`, or into a rank's local store
+// at the same bodies' local indices `local`.
 void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies);
+void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& local, LocalStore& store);
 
 // The integration state of bodies `ids` with their ids.
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);

@@ -50,12 +50,9 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
   });
 }
 
-bool RankContacts::lists_stale(const Bodies& bodies, const Drivers& drivers) {
+bool RankContacts::lists_stale(const Drivers& drivers) {
   bool stale = forced_ || rebuild_asked_ || !engine_;
-  if (!stale) {
-    store_.refresh(bodies, !settings_.spheres_only);  // a sphere's orientation stays the identity
-    stale = engine_->lists_stale(store_.view(), drivers);
-  }
+  if (!stale) stale = engine_->lists_stale(store_.view(), drivers);  // the store refreshed by exchange_ghosts
   // One rank's moved body rebuilds every rank's lists; one rank's interrupt stops them all here.
   const std::vector<std::uint64_t> any = link_.sum({std::uint64_t(stale), std::uint64_t(stop_asked_)});
   stop_seen_ = any[1] > 0;
@@ -129,7 +126,7 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
   if (!forced_ && engine_) exchange_ghosts(bodies);
-  const bool stale = lists_stale(bodies, drivers);
+  const bool stale = lists_stale(drivers);
   if (stale) {
     // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
     if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
@@ -172,20 +169,32 @@ void RankContacts::sums_taken() {
   engine_->sums_taken();
 }
 
-// Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its owner.
+// Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its
+// owner. The store is refreshed while the ghosts travel (theirs then a step old), and each
+// ghost written into it too when it lands.
 void RankContacts::exchange_ghosts(Bodies& bodies) {
   for (Parcel& p : out_) pack_ghosts(bodies, plan_.send[p.rank], p.bytes.data());
-  link_.exchange(out_, in_);
-  for (const Parcel& p : in_) unpack_ghosts(p.bytes, plan_.receive[p.rank], bodies);
+  link_.begin_exchange(out_, in_);
+  store_.refresh(bodies, !settings_.spheres_only);  // a sphere's orientation stays the identity
+  link_.end_exchange();
+  for (std::size_t k = 0; k < in_.size(); ++k) {
+    unpack_ghosts(in_[k].bytes, plan_.receive[in_[k].rank], bodies);
+    unpack_ghosts(in_[k].bytes, receive_local_[k], store_);
+  }
 }
 
-// The ghost exchange's parcels, sized once per plan (no allocation a step).
+// The ghost exchange's parcels, sized once per plan (no allocation a step), and the local
+// indices of each received parcel's bodies (after local_of_).
 void RankContacts::size_parcels() {
   out_.clear();
   in_.clear();
+  receive_local_.clear();
   for (int q = 0; q < link_.ranks(); ++q) {
     if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * kGhostBytes)});
-    if (!plan_.receive[q].empty()) in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+    if (plan_.receive[q].empty()) continue;
+    in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+    std::vector<std::uint32_t>& local = receive_local_.emplace_back();
+    for (std::uint32_t b : plan_.receive[q]) local.push_back(std::uint32_t(local_of_[b]));
   }
 }
 

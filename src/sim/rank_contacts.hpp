@@ -131,7 +131,7 @@ class RankContacts {
   static constexpr std::size_t kCutSample = std::size_t(1) << 17, kCutSampleRank = 64;
 
  private:
-  bool lists_stale(const Bodies& bodies, const Drivers& drivers);
+  bool lists_stale(const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
   void migrate_bodies(Bodies& bodies);
   void adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table);
@@ -162,6 +162,7 @@ class RankContacts {
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
+  std::vector<std::vector<std::uint32_t>> receive_local_;  // per parcel of in_: its bodies' local indices
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
   bool forced_ = true;

@@ -5,8 +5,10 @@
 
 #include <omp.h>
 
+#include <cstdint>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "integrate/integrate.hpp"
 #include "polydem/parallel.hpp"
@@ -129,25 +131,14 @@ TEST_CASE("drop_sphere_orientations folds L into the world frame and keeps ident
   CHECK(0.5 * b.angular_momentum[0].squaredNorm() / b.inertia[0].x() == Approx(e0).epsilon(1e-15));
 }
 
-TEST_CASE("equal spheres in id order take one mass and inertia: the per-body arrays' bits, at 1 and 2 threads",
-          "[integrate]") {
-  const std::size_t n = 2 * kParallelMinItems;  // enough for a team
-  Bodies start = mixed_bodies(n);
-  CHECK_FALSE(group_rotors(start, shapes()).spheres_alike);  // mixed: spheres not 0..n-1
-  for (std::size_t i = 0; i < n; ++i) {
-    start.shape[i] = 0;
-    start.orientation[i] = Quat::Identity();
-    start.mass[i] = 1.5;                      // kg
-    start.inertia[i] = Vec3::Constant(2e-3);  // kg m^2
-    set_angular_velocity(start, i, start.angular_velocity[i]);
-  }
-  const RotorGroups alike = group_rotors(start, shapes());
+namespace {
+
+// Runs `alike` (spheres_alike) and the same groups reading the per-body arrays from `start`
+// for 200 steps, at 1 and 2 threads: the same bits.
+void check_alike_bits(const Bodies& start, const RotorGroups& alike) {
   REQUIRE(alike.spheres_alike);
   RotorGroups each = alike;  // the same bodies read from their arrays
   each.spheres_alike = false;
-  Bodies heavier = start;
-  heavier.mass[n - 1] = 1.6;  // kg: one differs
-  CHECK_FALSE(group_rotors(heavier, shapes()).spheres_alike);
   Bodies reference = start;
   run(reference, each, 200);
   for (int threads : {1, 2}) {
@@ -162,4 +153,33 @@ TEST_CASE("equal spheres in id order take one mass and inertia: the per-body arr
     CHECK(same_bits(b.angular_velocity_end, reference.angular_velocity_end));
   }
   omp_set_num_threads(1);
+}
+
+}  // namespace
+
+TEST_CASE("equal spheres take one mass and inertia: the per-body arrays' bits, in id order and a rank's share, "
+          "at 1 and 2 threads",
+          "[integrate]") {
+  const std::size_t n = 4 * kParallelMinItems;  // enough for a team, in half of them too
+  Bodies start = mixed_bodies(n);
+  CHECK_FALSE(group_rotors(start, shapes()).spheres_in_order);  // mixed: spheres not 0..n-1
+  for (std::size_t i = 0; i < n; ++i) {
+    start.shape[i] = 0;
+    start.orientation[i] = Quat::Identity();
+    start.mass[i] = 1.5;                      // kg
+    start.inertia[i] = Vec3::Constant(2e-3);  // kg m^2
+    set_angular_velocity(start, i, start.angular_velocity[i]);
+  }
+  const RotorGroups alike = group_rotors(start, shapes());
+  CHECK(alike.spheres_in_order);
+  check_alike_bits(start, alike);
+  std::vector<std::uint32_t> share;  // a rank's owned bodies: not 0..n-1
+  for (std::uint32_t i = 1; i < n; i += 2) share.push_back(i);
+  const RotorGroups owned = group_rotors(start, share, shapes());
+  CHECK_FALSE(owned.spheres_in_order);
+  check_alike_bits(start, owned);
+  Bodies heavier = start;
+  heavier.mass[n - 1] = 1.6;  // kg: one differs
+  CHECK_FALSE(group_rotors(heavier, shapes()).spheres_alike);
+  CHECK_FALSE(group_rotors(heavier, share, shapes()).spheres_alike);
 }
