@@ -88,14 +88,14 @@ template <int N>
   const V dissipated_all = dissipated + (zero + zero);  // + the slip (0) and a started spring's work (0)
   unsigned done = 0;
   for (int l = 0; l < N; ++l) {
-    if (!steady[l]) continue;
+    if (!at(steady, l)) continue;
     done |= 1u << l;
     h[l]->ft = lane(ft, l);
-    h[l]->fd = fd[l];
-    h[l]->gap = dn[l];
-    h[l]->weight = w[l];
+    h[l]->fd = at(fd, l);
+    h[l]->gap = at(dn, l);
+    h[l]->weight = at(w, l);
     h[l]->slipping = false;  // under its cap (steady)
-    out[l] = ContactForce{lane(force, l), Vec3::Zero(), fn[l], dissipated_all[l], 0.0, patch[l], 0.0, 0.0};
+    out[l] = ContactForce{lane(force, l), Vec3::Zero(), at(fn, l), at(dissipated_all, l), 0.0, at(patch, l), 0.0, 0.0};
     torque[l] = lane(moment, l);
   }
   return done;

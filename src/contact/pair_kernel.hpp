@@ -245,7 +245,9 @@ struct PairLaw {
 };
 
 // Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
-template <class Partner>
+// kSteady: a steady lane's contact (law_lanes.hpp), whose sliding and rolling shares are +0: not
+// added, as adding +0 to a sum changes it only from -0, and a sum that starts at +0 never is -0.
+template <bool kSteady = false, class Partner>
 [[gnu::always_inline]] inline void add_contact(const PairLaw<Partner>& pl, std::size_t c, const ContactForce& f,
                                                const Vec3& torque) {
   const FoundContact& found = pl.scratch.found[c];
@@ -255,7 +257,12 @@ template <class Partner>
   record.fn = f.fn;
   pl.totals.force_i += f.force;
   pl.totals.torque_i += torque;
-  pl.totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+  if constexpr (kSteady) {
+    pl.totals.energy.net += f.dissipated - f.patch;
+    pl.totals.energy.patch += f.patch;
+  } else {
+    pl.totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+  }
 }
 
 // Sub-contact c through contact_force, as it computes a contact alone, added and recorded.
@@ -315,16 +322,16 @@ template <class Parts, class Partner>
                                          scratch.weight[c], scratch.weight[c + 1],
                                          scratch.found[c].state->history, scratch.found[c + 1].state->history, f,
                                          torque);
-    if (steady & 1u) add_contact(pl, c, f[0], torque[0]);
+    if (steady & 1u) add_contact<true>(pl, c, f[0], torque[0]);
     else contact_by_law_apart<Parts>(pl, c);
-    if (steady & 2u) add_contact(pl, c + 1, f[1], torque[1]);
+    if (steady & 2u) add_contact<true>(pl, c + 1, f[1], torque[1]);
     else contact_by_law_apart<Parts>(pl, c + 1);
   }
   if (c == n) return;
   ContactForce f;
   Vec3 torque;
   if (steady_alone(pl.lc, scratch.found[c].geometry, scratch.weight[c], scratch.found[c].state->history, f, torque))
-    add_contact(pl, c, f, torque);
+    add_contact<true>(pl, c, f, torque);
   else
     contact_by_law_apart<Parts>(pl, c);
 }

@@ -1,9 +1,10 @@
 #pragma once
 // N doubles in one register (GCC vector extension): two (SSE2) for kernels that run two
-// independent evaluations side by side (contact/law_lanes.hpp), one for a lone evaluation
-// through the same code (scalar instructions). Each lane does the scalar code's IEEE operations
+// independent evaluations side by side (contact/law_lanes.hpp), one (a plain double) for a lone
+// evaluation through the same code. Each lane does the scalar code's IEEE operations
 // in its order (no FMA: the build has none, POLYDEM_NATIVE turns contraction off), so the same bits.
 #include <cmath>
+#include <type_traits>
 
 #include "polydem/math.hpp"
 
@@ -16,13 +17,22 @@ struct Types<2> {
   using V = double __attribute__((vector_size(16)));
   using Mask = long long __attribute__((vector_size(16)));  // a comparison's lanes: all ones or 0
 };
+// One lane: a plain double and bool, so a comparison is a branch or a max, not a mask and its
+// and/andn/or blend, and a lane's test a flag.
 template <>
 struct Types<1> {
-  using V = double __attribute__((vector_size(8)));
-  using Mask = long long __attribute__((vector_size(8)));
+  using V = double;
+  using Mask = bool;
 };
 template <class V>
 constexpr int kWidth = int(sizeof(V) / sizeof(double));
+
+// Lane l of v (a vector, a mask or one lane's scalar).
+template <class T>
+inline auto at(const T& v, int l) {
+  if constexpr (std::is_arithmetic_v<T>) return v;
+  else return v[l];
+}
 
 // Lane l of the result is get(l).
 template <class V, class Get>
@@ -37,7 +47,7 @@ inline V splat(double x) {
 template <class V>
 inline V max0(V a) { return a < splat<V>(0.0) ? splat<V>(0.0) : a; }  // std::max(a, 0.0), lane by lane
 template <class V>
-inline V sqrt(V a) { return gather<V>([&](int l) { return std::sqrt(a[l]); }); }
+inline V sqrt(V a) { return gather<V>([&](int l) { return std::sqrt(at(a, l)); }); }
 
 template <class V>
 struct Vec3Of {
@@ -52,7 +62,7 @@ inline Vec3Of<V> load(const Get& get) {
 template <class V>
 inline Vec3Of<V> splat(const Vec3& a) { return {splat<V>(a.x()), splat<V>(a.y()), splat<V>(a.z())}; }
 template <class V>
-inline Vec3 lane(const Vec3Of<V>& a, int l) { return Vec3(a.x[l], a.y[l], a.z[l]); }
+inline Vec3 lane(const Vec3Of<V>& a, int l) { return Vec3(at(a.x, l), at(a.y, l), at(a.z, l)); }
 template <class V>
 inline Vec3Of<V> operator+(const Vec3Of<V>& a, const Vec3Of<V>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 template <class V>
