@@ -124,6 +124,24 @@ inline double sphere_pair_impact(double fraction, bool exact = false) {
   return std::abs(r.restitution / kEn - 1.0);
 }
 
+// A sphere landing at 45 deg on the wall (both components v, m/s) with spin w (rad/s), at
+// `fraction` of the critical step, `phase` as in sphere_wall_error; m is set to its mass (kg).
+inline MeasuredImpact oblique_landing(const ContactParams& config, double fraction, double phase, double v,
+                                      const Vec3& w, double& m, bool exact = true) {
+  Scene scene = base_scene(config, true);
+  scene.simulation.exact_step = exact;
+  const ShapeLibrary lib = library({sphere_shape(kRadius)});
+  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
+  specs[0].angular_velocity = w;
+  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
+  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * v * *scene.simulation.dt;
+  Simulation sim(scene, lib, specs);
+  m = sim.bodies.mass[0];
+  return run_impact(
+      sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
+      [&] { return sim.bodies.velocity[0].z(); });
+}
+
 // Sphere on a wall at 45 deg, mu 0.3: error of v_t' and R w' against the RK4 reference, / v_t;
 // with the linear law's exact normal step (the default for spheres) or the end-of-step dashpot,
 // and the tangential dashpot of ratio `damp_tangential` (0: none).
@@ -132,20 +150,12 @@ inline double oblique_impact(double fraction, bool exact = true, double phase = 
   const double mu = 0.3, v = 0.3 * std::sqrt(0.5);  // m/s, both components
   ContactParams config = law(kKn, kEn, mu, kKn);
   config.damp_tangential = damp_tangential;
-  Scene scene = base_scene(config, true);
-  scene.simulation.exact_step = exact;
-  const ShapeLibrary lib = library({sphere_shape(kRadius)});
-  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
-  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
-  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * v * *scene.simulation.dt;
-  Simulation sim(scene, lib, specs);
-  const MeasuredImpact r = run_impact(
-      sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
-      [&] { return sim.bodies.velocity[0].z(); });
+  double m = 0.0;  // kg
+  const MeasuredImpact r = oblique_landing(config, fraction, phase, v, Vec3::Zero(), m, exact);
   static std::map<double, Rebound> refs;  // per dashpot, the same for every step size: computed once
   if (!refs.count(damp_tangential)) {
     const LawParams prepared = prepare_law(config);
-    const double m = sim.bodies.mass[0], z = prepared.alpha_n;
+    const double z = prepared.alpha_n;
     const SpringContact reference{m, 0.4 * m * kRadius * kRadius, 2.0 * z * std::sqrt(kKn * m), kRadius, kKn, kKn, mu,
                                   pair_tangential_damping(prepared, m)};
     double change = 0.0;
@@ -206,19 +216,11 @@ inline double rolling_friction_impact(double fraction, double phase = -1.0) {
   const double kr = 0.2 * kKn * kRadius * kRadius, mur = 0.1, damp_tangential = 0.3;  // N m/rad, -, -
   ContactParams config = law(kKn, kEn, mu, kKn);
   config.damp_tangential = damp_tangential, config.kr = kr, config.mur = mur;
-  Scene scene = base_scene(config, true);
-  const ShapeLibrary lib = library({sphere_shape(kRadius)});
-  std::vector<BodySpec> specs = {body("sphere", {0, 0, kRadius + 1e-7}, {v, 0, -v})};
-  specs[0].angular_velocity = Vec3(0, w0, 0);
-  scene.simulation.dt = fraction * critical_step(scene, lib, specs);
-  if (phase >= 0.0) specs[0].position.z() = kRadius + 1e-9 + phase * v * *scene.simulation.dt;
-  Simulation sim(scene, lib, specs);
-  const MeasuredImpact r = run_impact(
-      sim, v, [&] { return sim.bodies.position[0].z() - kRadius; }, [&] { return sim.drivers[0].force.z(); },
-      [&] { return sim.bodies.velocity[0].z(); });
+  double m = 0.0;  // kg
+  const MeasuredImpact r = oblique_landing(config, fraction, phase, v, Vec3(0, w0, 0), m);
   static const Rebound ref = [&] {  // the same for every step size: computed once
     const LawParams prepared = prepare_law(config);
-    const double m = sim.bodies.mass[0], z = prepared.alpha_n;
+    const double z = prepared.alpha_n;
     const SpringContact reference{m,   0.4 * m * kRadius * kRadius, 2.0 * z * std::sqrt(kKn * m), kRadius, kKn, kKn, mu,
                                   pair_tangential_damping(prepared, m), kr, mur};
     double change = 0.0;
