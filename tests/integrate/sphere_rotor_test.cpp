@@ -6,14 +6,15 @@
 #include <omp.h>
 
 #include <cstdint>
-#include <cstring>
 #include <random>
 #include <vector>
 
 #include "integrate/integrate.hpp"
 #include "polydem/parallel.hpp"
+#include "same_motion.hpp"
 
 using namespace polydem;
+using namespace polydem::testing;
 
 namespace {
 
@@ -54,10 +55,6 @@ void loads(Bodies& b, int step) {
   }
 }
 
-bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
-}
-
 void run(Bodies& b, const RotorGroups& groups, int steps) {
   const double dt = 1e-4, h = 0.5 * dt;  // s
   const Vec3 gravity(0.0, 0.0, -9.807);  // m/s^2
@@ -86,11 +83,7 @@ TEST_CASE("a sphere turns no quaternion: the isotropic path's x, v and w bits, t
     omp_set_num_threads(threads);
     Bodies b = start;
     run(b, groups, 200);
-    CHECK(same_bits(b.position, turned.position));
-    CHECK(same_bits(b.velocity, turned.velocity));
-    CHECK(same_bits(b.angular_velocity, turned.angular_velocity));
-    CHECK(same_bits(b.velocity_end, turned.velocity_end));
-    CHECK(same_bits(b.angular_velocity_end, turned.angular_velocity_end));
+    check_same_motion(b, turned);
     double worst = 0.0;  // relative, world L against the turned reference's R L_body
     for (std::size_t i = 0; i < n; ++i) {
       if (i % 3 != 0) {  // not spheres: the same path, the same bits
@@ -145,12 +138,8 @@ void check_alike_bits(const Bodies& start, const RotorGroups& alike) {
     omp_set_num_threads(threads);
     Bodies b = start;
     run(b, alike, 200);
-    CHECK(same_bits(b.position, reference.position));
-    CHECK(same_bits(b.velocity, reference.velocity));
-    CHECK(same_bits(b.angular_velocity, reference.angular_velocity));
+    check_same_motion(b, reference);
     CHECK(same_bits(b.angular_momentum, reference.angular_momentum));
-    CHECK(same_bits(b.velocity_end, reference.velocity_end));
-    CHECK(same_bits(b.angular_velocity_end, reference.angular_velocity_end));
   }
   omp_set_num_threads(1);
 }
