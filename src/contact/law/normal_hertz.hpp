@@ -73,7 +73,7 @@ struct NormalHertz {
   // N per unit weight, the hat's dt^2/12 (kn a + 3 g' r a + g j) for the overlap's acceleration
   // a = (f_rest - f)/m (m/s^2) and jerk j = (f_last - f)/(m dt): f = spring + g r the force at n,
   // f_last at n-1, f_rest the rest of the world's load (N), kn = 1.5 spring/x, g = nu x^1/4 and
-  // g' = g/4x (N s/m, N s/m^2). Without it the error is A dt^2 (en 0.5: -0.13 (dt/critical)^2).
+  // g' = g/4x (N s/m, N s/m^2). Without it the error is A dt^2 (en 0.5: -0.18 (dt/critical)^2).
   [[gnu::always_inline]] static double hat_curvature(double spring, double g, double x, double r, double f_last,
                                                      double f_rest, double m, double dt) {
     const double f = spring + g * r;                                 // N
