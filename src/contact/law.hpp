@@ -224,7 +224,8 @@ template <class Normal, bool kLone>
     } else if (overlap > 0.0) {
       const double r = -vn_e;  // m/s, closing
       // Undamped, velocity Verlet's spring sample is second order in en (the hat: 9.3e-4 at 0.1 x critical for 6.2e-4).
-      double f = c > 0.0 ? Normal::hat_spring(law, k.r_star, k.weight, overlap, r, dt) + Normal::hat_dashpot(nu, overlap, r, dt)
+      double f = c > 0.0 ? Normal::hat_spring(law, k.r_star, k.weight, spring, overlap, r, dt) +
+                               Normal::hat_dashpot(nu, nu_w, overlap, r, dt)
                          : spring;  // N
       if (std::abs(r) * dt < overlap && c > 0.0) {  // the bend's part, away from the touch (there: O(dt^2.5))
         const double f_rest = rest_of_world(f_last_unit, k.m_eff, dt, -vn, -k.v_end.dot(k.normal));  // N

@@ -55,18 +55,19 @@ struct NormalHertz {
   // closed form for the overlap straight at the rate r (m/s, > 0 closing, at n) from x (m), the
   // touch inside the window included, plus hat_curvature for the overlap's bend.
   // N, the dashpot nu x^1/4 x' (nu in N s/m^1.25): 16/45 nu (second difference of x^9/4) / (r dt^2).
-  [[gnu::always_inline]] static double hat_dashpot(double nu, double x, double r, double dt) {
+  // g = nu x^1/4 (N s/m), given.
+  [[gnu::always_inline]] static double hat_dashpot(double nu, double g, double x, double r, double dt) {
     const double d = r * dt;  // m
-    if (std::abs(d) < 1e-3 * x) return nu * std::sqrt(std::sqrt(x)) * r * (1.0 - d * d / (64.0 * x * x));  // its series
+    if (std::abs(d) < 1e-3 * x) return g * r * (1.0 - d * d / (64.0 * x * x));  // its series
     const auto h = [](double y) { return y > 0.0 ? y * y * std::sqrt(std::sqrt(y)) : 0.0; };  // m^9/4
     return 16.0 / 45.0 * nu * (h(x + d) - 2.0 * h(x) + h(x - d)) / (r * dt * dt);
   }
-  // N, the spring at weight w: w K (second difference of x^7/2 / 8.75) / (r dt)^2.
-  [[gnu::always_inline]] static double hat_spring(const LawParams& law, double r_star, double w, double x, double r,
-                                                  double dt) {
-    const double d = r * dt;                           // m
+  // N, the spring at weight w: w K (second difference of x^7/2 / 8.75) / (r dt)^2; spring (N), w K x^1.5, given.
+  [[gnu::always_inline]] static double hat_spring(const LawParams& law, double r_star, double w, double spring, double x,
+                                                  double r, double dt) {
+    const double d = r * dt;  // m
+    if (std::abs(d) < 1e-3 * x) return spring * (1.0 + d * d / (16.0 * x * x));  // its series
     const double stiff = w * force(law, r_star, 1.0);  // N/m^1.5
-    if (std::abs(d) < 1e-3 * x) return stiff * x * std::sqrt(x) * (1.0 + d * d / (16.0 * x * x));  // its series
     const auto q = [](double y) { return y > 0.0 ? y * y * y * std::sqrt(y) / 8.75 : 0.0; };  // m^7/2
     return stiff * (q(x + d) - 2.0 * q(x) + q(x - d)) / (d * d);
   }
@@ -114,9 +115,10 @@ struct NormalHertz {
   // F2 the force's first and second integrals in s.
   static double released_force(const LawParams& law, double r_star, double w, double nu, double x, double r,
                                double dt, double fp) {
-    const double stiff = w * force(law, r_star, 1.0);   // N/m^1.5, w K
+    const double stiff = w * force(law, r_star, 1.0);  // N/m^1.5, w K
+    const double end = x + r * dt;                      // m, at the window's end
+    if (end > 0.0 && stiff * end * std::sqrt(std::sqrt(end)) >= -nu * r) return fp;  // still pressing there
     const double stop = std::pow(-nu * r / stiff, 0.8);  // m, y*
-    if (x + r * dt >= stop) return fp;  // still pressing at the window's end
     const double s_stop = (stop - x) / r;  // s, where the force reaches 0
     if (s_stop <= -dt) return 0.0;
     const auto first = [&](double s) {  // N s, F1
