@@ -117,16 +117,16 @@ struct NormalHertz {
                                double dt, double fp) {
     const double stiff = w * force(law, r_star, 1.0);  // N/m^1.5, w K
     const double end = x + r * dt;                      // m, at the window's end
-    if (end > 0.0 && stiff * end * std::sqrt(std::sqrt(end)) >= -nu * r) return fp;  // still pressing there
+    if (!(stiff > 0.0) || (end > 0.0 && stiff * end * std::sqrt(std::sqrt(end)) >= -nu * r)) return fp;  // pressing there
     const double stop = std::pow(-nu * r / stiff, 0.8);  // m, y*
     const double s_stop = (stop - x) / r;  // s, where the force reaches 0
     if (s_stop <= -dt) return 0.0;
     const auto first = [&](double s) {  // N s, F1
-      const double y = x + r * s;
+      const double y = std::max(x + r * s, 0.0);  // m, not below 0 by round-off
       return (0.4 * stiff * y * y * std::sqrt(y) + 0.8 * nu * r * y * std::sqrt(std::sqrt(y))) / r;
     };
     const auto second = [&](double s) {  // N s^2, F2
-      const double y = x + r * s;
+      const double y = std::max(x + r * s, 0.0);  // m, not below 0 by round-off
       return (stiff * y * y * y * std::sqrt(y) / 8.75 + 16.0 / 45.0 * nu * r * y * y * std::sqrt(std::sqrt(y))) / (r * r);
     };
     const auto side = [&](double a, double b, double sign) {  // N s^2, the hat weight dt + sign s
