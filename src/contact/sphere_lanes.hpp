@@ -1,6 +1,6 @@
 #pragma once
-// Two sphere pairs through the exact step at once, one in each lane (geometry/lanes.hpp): the
-// steady case, nearly every pair of a resting bed. What holds a pair up is its chain of dependent
+// Two sphere pairs through the exact step at once, one in each lane (geometry/lanes.hpp), or one
+// alone through the same code: the steady case, nearly every pair of a resting bed. What holds a pair up is its chain of dependent
 // latencies (square root, the normal's division, the divisions by dt and by the pair mass, the
 // spring's turn), not its instructions: two chains side by side take about the time of one. Each
 // lane does sphere_pair_forces' operations in its order, so a lane has its pair's bits: the
@@ -33,21 +33,25 @@ template <class Sizes>
          sizes.linear_step(k)->k != 0.0;
 }
 
-// Pairs two[0] and two[1] (steady candidates, in list order) side by side; then for l = 0, 1 in
-// turn take(l, &totals) where lane l was steady (its slot advanced) or take(l, nullptr) where not
-// (its slot untouched, for sphere_pair_forces).
-template <class Sizes, class Take>
+// Pairs ks[0..N) (steady candidates, in list order) side by side, N = 2, or one alone through the same
+// operations, N = 1; then for each l in turn take(l, &totals) where lane l was steady (its slot
+// advanced) or take(l, nullptr) where not (its slot untouched, for sphere_pair_forces).
+template <int N, class Sizes, class Take>
 [[gnu::always_inline]] inline void steady_sphere_pairs(const LawParams& law, double band, double dt,
                                                        const BodyView& bodies, PairList& list,
-                                                       const std::uint32_t two[2], const Sizes& sizes,
+                                                       const std::uint32_t ks[N], const Sizes& sizes,
                                                        const Take& take) {
   using namespace lanes;
-  using V = Types<2>::V;
+  using V = typename Types<N>::V;
   using V3 = Vec3Of<V>;
-  const BodyPair p[2] = {list.pairs[two[0]], list.pairs[two[1]]};
-  ContactHistory* const h[2] = {&list.slots[list.slot_begin[two[0]]].history,
-                                &list.slots[list.slot_begin[two[1]]].history};
-  const LinearStep* const step[2] = {sizes.linear_step(two[0]), sizes.linear_step(two[1])};
+  BodyPair p[N];
+  ContactHistory* h[N];
+  const LinearStep* step[N];
+  for (int l = 0; l < N; ++l) {
+    p[l] = list.pairs[ks[l]];
+    h[l] = &list.slots[list.slot_begin[ks[l]]].history;
+    step[l] = sizes.linear_step(ks[l]);
+  }
   const auto each = [&](auto get) { return gather<V>(get); };
   const auto of_i = [&](const Vec3* a) { return load<V>([&](int l) -> const Vec3& { return a[p[l].i]; }); };
   const auto of_j = [&](const Vec3* a) { return load<V>([&](int l) -> const Vec3& { return a[p[l].j]; }); };
@@ -87,26 +91,27 @@ template <class Sizes, class Take>
   ft = select(in_plane2 > zero, sphere_detail::root(length2 / in_plane2) * ft, ft);
   ft = ft + (-splat<V>(law.kt) * dt_v) * vt;
   const V trial2 = dot(ft, ft);
-  const auto steady = ~((dist2 >= reach * reach) | (dist2 == zero)) & (gap < zero) & (h_gap < zero) & (u > zero) &
-                      ~(next.u <= zero) & (trial2 <= ft_max * ft_max);
+  // In reach, the glued arc not letting go within the step (!(u_next <= 0), as exact_normal_force's test).
+  const auto steady = ~((dist2 >= reach * reach) | (dist2 == zero) | (next.u <= zero)) & (gap < zero) &
+                      (h_gap < zero) & (u > zero) & (trial2 <= ft_max * ft_max);
   const V3 force = fn * n + ft;
   const PairTorquesOf<V> torques = sphere_torques(n, force, V3{zero, zero, zero}, c.lever_i, c.lever_j);  // no rolling moment
-  for (int l = 0; l < 2; ++l) {
-    if (!steady[l]) {
+  for (int l = 0; l < N; ++l) {
+    if (!at(steady, l)) {
       take(l, nullptr);
       continue;
     }
     ContactHistory& hl = *h[l];
     hl.ft = lane(ft, l);
-    hl.fd = fd[l];
-    hl.gap = gap[l];
+    hl.fd = at(fd, l);
+    hl.gap = at(gap, l);
     hl.weight = 1.0;
     hl.slipping = false;  // under its cap
     PairTotals t;
     t.force_i = lane(force, l);
     t.torque_i = lane(torques.i, l);
     t.torque_j = lane(torques.j, l);
-    t.energy = EnergyParts{dissipated[l], 0.0, 0.0, 0.0};
+    t.energy = EnergyParts{at(dissipated, l), 0.0, 0.0, 0.0};
     t.contacts = 1;
     take(l, &t);
   }
