@@ -80,8 +80,8 @@ void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direc
 
 // Internal pairs [k, stop) through a kernel that steps two steady pairs side by side
 // (sphere_lanes.hpp): a candidate waits for the next; a pair between them that adds to a sum sends
-// it alone first (kernel.one), so each sum takes its terms in list order (a pair out of reach adds +0, which
-// changes no sum's bits: a sum is never -0).
+// it alone first (kernel.one), so each sum takes its terms in list order (a pair out of reach adds
+// +0, which changes no sum's bits: a sum is never -0).
 template <class Kernel>
 [[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
                                                 PairScratch& scratch, std::uint32_t k, std::uint32_t stop,

@@ -1,8 +1,9 @@
 #pragma once
 // Two sphere pairs through the exact step at once, one in each lane (geometry/lanes.hpp), or one
-// alone through the same code: the steady case, nearly every pair of a resting bed. What holds a pair up is its chain of dependent
-// latencies (square root, the normal's division, the divisions by dt and by the pair mass, the
-// spring's turn), not its instructions: two chains side by side take about the time of one. Each
+// alone through the same code: the steady case, nearly every pair of a resting bed. What holds a
+// pair up is its chain of dependent latencies (square root, the normal's division, the divisions by
+// dt and by the pair mass, the spring's turn), not its instructions: two chains side by side take
+// about the time of one. Each
 // lane does sphere_pair_forces' operations in its order, so a lane has its pair's bits: the
 // geometry, torques and exact step are the scalar path's own templates (sphere_contact,
 // sphere_torques, rest_of_world, glued_ahead) taken on two lanes; what is written here is
