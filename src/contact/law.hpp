@@ -152,7 +152,7 @@ template <bool kLone>
     out.since_touch = onset.since_touch;
   } else if (overlap > 0.0 && u > 0.0) {
     out.fp = u;
-    const GluedAhead next = glued_ahead(step, k.m_eff, dt, overlap, -vn, u / k.weight, f_rest);
+    const GluedAheadOf<double> next = glued_ahead(step, k.m_eff, dt, overlap, -vn, u / k.weight, f_rest);
     if (next.u <= 0.0) [[unlikely]] {  // it lets go within the step
       double push = release_ahead(u / k.weight, next.u, dt);  // N per unit weight
       // The overlap ends by a + 1 past the band (0 without cohesion): the kernels will not see

@@ -80,16 +80,21 @@ void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direc
 
 // Internal pairs [k, stop) through a kernel that steps two steady pairs side by side
 // (sphere_lanes.hpp): a candidate waits for the next; a pair between them that adds to a sum sends
-// it alone first, so each sum takes its terms in list order (a pair out of reach adds +0, which
-// changes no sum's bits: a sum is never -0).
+// it alone first (kernel.one), so each sum takes its terms in list order (a pair out of reach adds
+// +0, which changes no sum's bits: a sum is never -0).
 template <class Kernel>
 [[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
                                                 PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
                                                 std::uint32_t& contacts, bool& ended) {
   constexpr std::uint32_t kNone = ~0u;
   std::uint32_t waiting = kNone;
-  const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {
+  const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {  // not steady: the scalar kernel
     const PairTotals pt = kernel(a, scratch);
+    add_pair(sums, list.pairs[a], pt);
+    keep_pair(list, a, pt, contacts, ended);
+  };
+  const auto lone = [&](std::uint32_t a) __attribute__((noinline)) {  // a candidate without a partner
+    const PairTotals pt = kernel.one(a, scratch);
     add_pair(sums, list.pairs[a], pt);
     keep_pair(list, a, pt, contacts, ended);
   };
@@ -111,10 +116,10 @@ template <class Kernel>
     const PairTotals pt = kernel(k, scratch);
     keep_pair(list, k, pt, contacts, ended);
     if (pt.contacts == 0) continue;  // out of reach: its terms are +0
-    if (waiting != kNone) alone(std::exchange(waiting, kNone));
+    if (waiting != kNone) lone(std::exchange(waiting, kNone));
     add_pair(sums, list.pairs[k], pt);
   }
-  if (waiting != kNone) alone(waiting);
+  if (waiting != kNone) lone(waiting);
 }
 
 // Internal pairs [k, stop) of a chunk in order, each computed and added to both bodies' sums.

@@ -17,14 +17,26 @@ struct SphereKernel {
     return sphere_pair_forces<Parts>(law, band, dt, bodies, list, k, sizes);
   }
 };
-// The same, and steady pairs two at a time (sphere_lanes.hpp, pair_loop.hpp's paired_pairs).
+// The same, and steady pairs two at a time (sphere_lanes.hpp, pair_loop.hpp's paired_pairs), or
+// one alone through the same steady kernel.
 template <class Sizes>
 struct SphereLanesKernel : SphereKernel<SteadyParts, Sizes> {
   static constexpr bool kTwoLanes = true;
   [[gnu::always_inline]] bool candidate(std::uint32_t k) const { return steady_candidate(this->list, k, this->sizes); }
+  template <int N, class Take>
+  [[gnu::always_inline]] void steady(const std::uint32_t pairs[N], const Take& take) const {
+    steady_sphere_pairs<N>(this->law, this->band, this->dt, this->bodies, this->list, pairs, this->sizes, take);
+  }
   template <class Take>
-  [[gnu::always_inline]] void two(const std::uint32_t pairs[2], const Take& take) const {
-    steady_sphere_pairs(this->law, this->band, this->dt, this->bodies, this->list, pairs, this->sizes, take);
+  [[gnu::always_inline]] void two(const std::uint32_t pairs[2], const Take& take) const { steady<2>(pairs, take); }
+  // Candidate k without a partner: the steady kernel on one lane, sphere_pair_forces where not steady.
+  [[gnu::always_inline]] PairTotals one(std::uint32_t k, PairScratch& scratch) const {
+    PairTotals totals;
+    bool done = false;
+    steady<1>(&k, [&](int, const PairTotals* t) {
+      if (t) totals = *t, done = true;
+    });
+    return done ? totals : (*this)(k, scratch);
   }
 };
 }  // namespace

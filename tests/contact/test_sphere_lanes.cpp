@@ -1,5 +1,6 @@
-// Steady sphere pairs two at a time (sphere_lanes.hpp) against sphere_pair_forces, the reference:
-// a lane it takes has the pair's bits (totals, history), one it leaves is untouched; and the whole
+// Steady sphere pairs two at a time and one alone (sphere_lanes.hpp) against sphere_pair_forces, the
+// reference: a lane it takes has the pair's bits (totals, history), one it leaves is untouched; the
+// one-lane kernel takes the same pairs with the same bits; and the whole
 // sphere loop with the lanes ends with the bits of the loop without them (sums in list order).
 #include <catch2/catch.hpp>
 
@@ -116,17 +117,21 @@ TEST_CASE("sphere lanes: a steady pair has sphere_pair_forces' bits, another is 
     PairList list = random_list(d, {{0, 1}, {2, 3}}, law, s, true);
     const EachSphere sizes{bodies, list};
     if (!steady_candidate(list, 0, sizes) || !steady_candidate(list, 1, sizes)) continue;
-    PairList reference = list;
-    const EachSphere reference_sizes{bodies, reference};
+    PairList reference = list, alone = list;
+    const EachSphere reference_sizes{bodies, reference}, alone_sizes{bodies, alone};
     const std::uint32_t two[2] = {0, 1};
-    steady_sphere_pairs(law, 0.0, kDt, bodies, list, two, sizes, [&](int l, const PairTotals* t) {
+    bool taken[2] = {false, false};
+    PairTotals in_lane[2];
+    steady_sphere_pairs<2>(law, 0.0, kDt, bodies, list, two, sizes, [&](int l, const PairTotals* t) {
       const ContactHistory& h = list.slots[l].history;
+      taken[l] = t != nullptr;
       if (!t) {
         ++left;
         REQUIRE(same_bits(h, reference.slots[l].history));
         return;
       }
       ++steady;
+      in_lane[l] = *t;
       const PairTotals ref = sphere_pair_forces<Parts>(law, 0.0, kDt, bodies, reference, two[l], reference_sizes);
       REQUIRE(same_bits(h, reference.slots[l].history));
       REQUIRE(same_bits(t->force_i, ref.force_i));
@@ -135,6 +140,19 @@ TEST_CASE("sphere lanes: a steady pair has sphere_pair_forces' bits, another is 
       REQUIRE(same_bits(t->energy, ref.energy));
       REQUIRE(t->contacts == ref.contacts);
     });
+    // Each pair alone through the one-lane kernel: the same choice and the same bits as in its lane.
+    for (int l = 0; l < 2; ++l) {
+      const std::uint32_t one[1] = {two[l]};
+      steady_sphere_pairs<1>(law, 0.0, kDt, bodies, alone, one, alone_sizes, [&](int, const PairTotals* t) {
+        REQUIRE((t != nullptr) == taken[l]);
+        REQUIRE(same_bits(alone.slots[l].history, list.slots[l].history));
+        if (!t) return;
+        REQUIRE(same_bits(t->force_i, in_lane[l].force_i));
+        REQUIRE(same_bits(t->torque_i, in_lane[l].torque_i));
+        REQUIRE(same_bits(t->torque_j, in_lane[l].torque_j));
+        REQUIRE(same_bits(t->energy, in_lane[l].energy));
+      });
+    }
   }
   CHECK(steady > 15000);  // most draws rest and stick
   CHECK(left > 3000);     // and the rest exercise every way out

@@ -21,15 +21,19 @@ namespace polydem {
 // k' and c' depend on the pair's mass alone (with the law and dt): a pair list keeps them per pair
 // (PairList::linear_steps), set at the pair's first exact step after the list is built. k = 0:
 // not set yet (k' > 0 for any damping and step).
-struct LinearStep {
-  double k = 0.0, c = 0.0;  // N/m, N s/m
-  double rest = 0.0;        // -, 1 - k'/kn: the share of the load the samples leave to the spring
-  double force(double x, double r, double f_rest) const { return k * x + c * r + rest * f_rest; }
+// T: a double, or two-lane doubles where two pairs are stepped side by side (sphere_lanes.hpp),
+// each lane by these same operations (the same bits).
+template <class T>
+struct LinearStepOf {
+  T k{}, c{};  // N/m, N s/m
+  T rest{};    // -, 1 - k'/kn: the share of the load the samples leave to the spring
+  T force(T x, T r, T f_rest) const { return k * x + c * r + rest * f_rest; }
 };
 // N, that load, from the last force f_last (N) and the overlap rates at the half step r and
 // predicted for the step's end r_end (m/s, the bodies' last forces: integrate.hpp): m_eff
 // (kg) times the relative acceleration over the half step, less the contact's own part.
-inline double rest_of_world(double f_last, double m, double dt, double r, double r_end) {
+template <class T>
+inline T rest_of_world(T f_last, T m, T dt, T r, T r_end) {
   return f_last + 2.0 * m * (r_end - r) / dt;
 }
 // N/m and N s/m per unit patch weight: k' and c' above for kn (N/m), damping ratio zeta (-),
@@ -100,13 +104,14 @@ inline ExactOnset exact_onset_force(double kn, double zeta, double m, double dt,
 // glued arc's force, g (dt - theta)^3/(6 dt^2) at a and g theta^3/(6 dt^2) at a + 1 (N).
 // At a, the glued arc one step ahead: overlap x (m) and force u (N per unit weight) at a + 1,
 // from overlap x, rate r = -vn (m/s), force u and load f_rest now (N per unit weight).
-struct GluedAhead {
-  double x, u;  // m, N
+template <class T>
+struct GluedAheadOf {
+  T x, u;  // m, N
 };
-inline GluedAhead glued_ahead(const LinearStep& step, double m, double dt, double x, double r, double u,
-                              double f_rest) {
-  const double r_next = r + (f_rest - u) * dt / m;  // m/s
-  const double x_next = x + r_next * dt;            // m
+template <class T>
+inline GluedAheadOf<T> glued_ahead(const LinearStepOf<T>& step, T m, T dt, T x, T r, T u, T f_rest) {
+  const T r_next = r + (f_rest - u) * dt / m;  // m/s
+  const T x_next = x + r_next * dt;            // m
   return {x_next, step.force(x_next, r_next, f_rest)};
 }
 // release_ahead: at a, the push when the glued arc's next force u_next <= 0; u > 0 the force

@@ -7,7 +7,9 @@
 
 namespace polydem {
 
-struct LinearStep;
+template <class T>
+struct LinearStepOf;
+using LinearStep = LinearStepOf<double>;  // exact_linear.hpp
 
 // Prepared once per parameter set (config or config_driver) by prepare_law. One flat struct
 // for every part (each part's header names its fields) rather than one struct per part: the
