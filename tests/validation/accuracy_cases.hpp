@@ -108,6 +108,24 @@ inline double hertz_impact(double fraction, double en, int phases = 16) {
   return worst;
 }
 
+// The step `simulation: accuracy` picks for that Hertz impact (en as hertz_law), as a fraction of
+// the critical step, and the worst restitution error over 16 touch places at that step.
+struct StepError {
+  double fraction, error;  // -, -
+};
+inline StepError hertz_impact_at_accuracy(double accuracy, double en) {
+  StepError out{0.0, 0.0};
+  const auto set_step = [&](Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+    scene.simulation.dt.reset();
+    scene.simulation.accuracy = accuracy;
+    const Simulation sim(scene, lib, specs);
+    scene.simulation.dt = sim.dt();  // the step it took, so that the touch places are set from it
+    out.fraction = sim.dt() / sim.time_step().critical;
+  };
+  for (int k = 0; k < 16; ++k) out.error = std::max(out.error, sphere_wall_error(hertz_law(en), false, set_step, k / 16.0));
+  return out;
+}
+
 // Spheres of radius 5 and 7 mm (masses 1 : 2.74) meeting at 0.5 m/s: error of the restitution.
 inline double sphere_pair_impact(double fraction, bool exact = false) {
   Scene scene = base_scene(law(kKn, kEn), false);

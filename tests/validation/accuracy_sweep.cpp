@@ -111,22 +111,24 @@ TEST_CASE("accuracy: the polyhedra, Hertz and friction models", "[.accuracy_mode
       {"kHertz", [](double f) { return std::max({hertz_impact(f, 0.1), hertz_impact(f, 0.5), hertz_impact(f, 0.9)}); }},
       {"kOblique", [](double f) { return oblique_impact_worst_phase(f); }, 100000}};
   for (const auto& [name, worst, per_unit] : models) {
-    std::vector<double> errors;
-    for (double f : fractions) errors.push_back(worst(f));
-    std::printf("%s (%zu points):\n", name, fractions.size());
-    double running = 0.0;
-    for (std::size_t k = 0; k < fractions.size(); ++k) {
-      running = std::max(running, errors[k]);
-      const bool last = k + 1 == fractions.size();
-      const bool fine = fractions[k] >= 0.05 - 1e-9 && fractions[k] < 0.35 - 1e-9;
-      double bound = fine || (per_unit > 0 && !last) ? std::max(running, errors[k + 1]) : running;
-      if (per_unit > 0 && !last)  // between this point and the next, ends excluded
-        for (long i = std::lround(fractions[k] * per_unit) + 1; i < std::lround(fractions[k + 1] * per_unit); ++i)
-          running = std::max(running, worst(double(i) / per_unit)), bound = std::max(bound, running);
-      if (per_unit > 0) bound *= 1.02;  // a spike's peak between samples (a scan every 1.37e-5: 0.3% over)
-      const double unit = std::pow(10.0, std::floor(std::log10(bound)) - 2);
-      std::printf("    {%g, %.2e},  // measured %.3e\n", fractions[k], (std::floor(bound / unit) + 1.0) * unit, errors[k]);
+    SECTION(name) {  // one table: `tests_validation "[.accuracy_models]" -c kHertz`
+      std::vector<double> errors;
+      for (double f : fractions) errors.push_back(worst(f));
+      std::printf("%s (%zu points):\n", name, fractions.size());
+      double running = 0.0;
+      for (std::size_t k = 0; k < fractions.size(); ++k) {
+        running = std::max(running, errors[k]);
+        const bool last = k + 1 == fractions.size();
+        const bool fine = fractions[k] >= 0.05 - 1e-9 && fractions[k] < 0.35 - 1e-9;
+        double bound = fine || (per_unit > 0 && !last) ? std::max(running, errors[k + 1]) : running;
+        if (per_unit > 0 && !last)  // between this point and the next, ends excluded
+          for (long i = std::lround(fractions[k] * per_unit) + 1; i < std::lround(fractions[k + 1] * per_unit); ++i)
+            running = std::max(running, worst(double(i) / per_unit)), bound = std::max(bound, running);
+        if (per_unit > 0) bound *= 1.02;  // a spike's peak between samples (a scan every 1.37e-5: 0.3% over)
+        const double unit = std::pow(10.0, std::floor(std::log10(bound)) - 2);
+        std::printf("    {%g, %.2e},  // measured %.3e\n", fractions[k], (std::floor(bound / unit) + 1.0) * unit, errors[k]);
+      }
+      std::fflush(stdout);
     }
-    std::fflush(stdout);
   }
 }

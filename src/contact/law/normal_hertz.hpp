@@ -50,39 +50,46 @@ struct NormalHertz {
     return 2.0 * law.alpha_n * std::sqrt(2.0 * m_eff * law.e_star * std::sqrt(r_star));
   }
   [[gnu::always_inline]] static double damping(double nu_pair, double x) { return nu_pair * std::sqrt(std::sqrt(x)); }
-  // The force at n is the hat average over [n-1, n+1] of the force along the motion (Verlet
-  // then follows the exact samples to O(dt^4) where the force is smooth; README, Hertz): in
-  // closed form for the overlap straight at the rate r (m/s, > 0 closing, at n) from x (m), the
-  // touch inside the window included, plus hat_curvature for the overlap's bend.
-  // N, the dashpot nu x^1/4 x' (nu in N s/m^1.25): 16/45 nu (second difference of x^9/4) / (r dt^2).
-  // g = nu x^1/4 (N s/m), given.
-  [[gnu::always_inline]] static double hat_dashpot(double nu, double g, double x, double r, double dt) {
-    const double d = r * dt;  // m
-    if (std::abs(d) < 1e-3 * x) return g * r * (1.0 - d * d / (64.0 * x * x));  // its series
-    const auto h = [](double y) { return y > 0.0 ? y * y * std::sqrt(std::sqrt(y)) : 0.0; };  // m^9/4
-    return 16.0 / 45.0 * nu * (h(x + d) - 2.0 * h(x) + h(x - d)) / (r * dt * dt);
+  // N per unit weight, the force at n of a damped contact past its onset step: the hat average
+  // over [n-1, n+1] of the force along the motion (Verlet then follows the exact samples to
+  // O(dt^4) where the force is smooth; README, Hertz). For the overlap straight at the rate r
+  // (m/s, > 0 closing, at n) from x (m): the spring and the dashpot in closed form, the touch
+  // inside the window included (hat_closed), or their series in q = (r dt / x)^2; plus, away
+  // from the touch, hat_curvature for the overlap's bend. spring = K x^1.5 and g = nu x^1/4
+  // (N, N s/m) given; nu (N s/m^1.25) the pair's; the rest as hat_curvature.
+  [[gnu::always_inline]] static double hat_force(const LawParams& law, double r_star, double nu, double spring, double g,
+                                                 double x, double r, double dv, double f_last, double inv_m, double dt) {
+    const double inv_x = 1.0 / x;                // 1/m
+    const double d = r * dt, q = d * inv_x * (d * inv_x);  // m, -
+    // The series' next terms are 2.4e-4 q^3 and 8.0e-4 q^3 (of 1): below round-off for q < 1e-4.
+    const double f = q < 1e-4 ? spring * (1.0 + q * (1.0 / 16.0 + q * (1.0 / 640.0))) +
+                                    g * r * (1.0 - q * (1.0 / 64.0 + q * (77.0 / 30720.0)))
+                              : hat_closed(law, r_star, nu, x, r, dt);
+    if (!(q < 1.0)) return f;  // within |r| dt of the touch the bend is O(dt^2.5)
+    return f + hat_curvature(spring, g, inv_x, r, dv, f_last, inv_m, dt);
   }
-  // N, the spring at weight w: w K (second difference of x^7/2 / 8.75) / (r dt)^2; spring (N), w K x^1.5, given.
-  [[gnu::always_inline]] static double hat_spring(const LawParams& law, double r_star, double w, double spring, double x,
-                                                  double r, double dt) {
+  // N per unit weight, the hat's spring K (second difference of x^7/2 / 8.75) / (r dt)^2 plus
+  // its dashpot 16/45 nu (second difference of x^9/4) / (r dt^2) (nu as hat_force).
+  static double hat_closed(const LawParams& law, double r_star, double nu, double x, double r, double dt) {
     const double d = r * dt;  // m
-    if (std::abs(d) < 1e-3 * x) return spring * (1.0 + d * d / (16.0 * x * x));  // its series
-    const double stiff = w * force(law, r_star, 1.0);  // N/m^1.5
-    const auto q = [](double y) { return y > 0.0 ? y * y * y * std::sqrt(y) / 8.75 : 0.0; };  // m^7/2
-    return stiff * (q(x + d) - 2.0 * q(x) + q(x - d)) / (d * d);
+    const auto p7 = [](double y) { return y > 0.0 ? y * y * y * std::sqrt(y) / 8.75 : 0.0; };  // m^7/2
+    const auto p9 = [](double y) { return y > 0.0 ? y * y * std::sqrt(std::sqrt(y)) : 0.0; };  // m^9/4
+    return (force(law, r_star, 1.0) * (p7(x + d) - 2.0 * p7(x) + p7(x - d)) / d +
+            16.0 / 45.0 * nu * (p9(x + d) - 2.0 * p9(x) + p9(x - d)) / dt) / d;
   }
   // N per unit weight, the hat's dt^2/12 (kn a + 3 g' r a + g j) for the overlap's acceleration
-  // a = (f_rest - f)/m (m/s^2) and jerk j = (f_last - f)/(m dt): f = spring + g r the force at n,
-  // f_last at n-1, f_rest the rest of the world's load (N), kn = 1.5 spring/x, g = nu x^1/4 and
-  // g' = g/4x (N s/m, N s/m^2). Without it the error is A dt^2 (en 0.5: -0.18 (dt/critical)^2).
-  [[gnu::always_inline]] static double hat_curvature(double spring, double g, double x, double r, double f_last,
-                                                     double f_rest, double m, double dt) {
-    const double f = spring + g * r;                                 // N
-    const double a = (f_rest - f) / m, j = (f_last - f) / (m * dt);  // m/s^2, m/s^3
-    return dt * dt / 12.0 * ((1.5 * spring + 0.75 * g * r) / x * a + g * j);
+  // a = (f_last - f)/m + 2 dv/dt (m/s^2; dv = vn - vn_end, the half-step's rate less the
+  // predicted end's: the rest of the world's load) and jerk j = (f_last - f)/(m dt): f = spring +
+  // g r the force at n, f_last at n-1 (N), kn = 1.5 spring/x, g' = g/4x (N/m, N s/m^2), inv_x
+  // = 1/x, inv_m = 1/m. Without it the error is A dt^2 (en 0.5: -0.18 (dt/critical)^2).
+  [[gnu::always_inline]] static double hat_curvature(double spring, double g, double inv_x, double r, double dv,
+                                                     double f_last, double inv_m, double dt) {
+    const double slope = (1.5 * spring + 0.75 * g * r) * inv_x;  // N/m, kn + 3 g' r
+    const double jerk = (f_last - spring - g * r) * inv_m;       // m/s^2, (f_last - f)/m
+    return dt * (1.0 / 12.0) * (jerk * (slope * dt + g) + 2.0 * slope * dv);
   }
-  // The step where the overlap starts, approached at v > 0 (m/s) by a pair of mass m (kg) (nu as
-  // hat_dashpot): the drift has put the overlap x (m) on the straight line, deeper than the
+  // The step where the overlap starts, approached at v > 0 (m/s) by a pair of mass m (kg) (nu
+  // N s/m^1.25, weighted): the drift has put the overlap x (m) on the straight line, deeper than the
   // impact's arc (hertz_arc.hpp). As the linear law's exact onset (exact_linear.hpp), the arc
   // through x (the touch s before) is taken: the step's force brings the half-step velocity to
   // the arc's chord from s to s + dt, so the pair goes on along the exact impact's samples

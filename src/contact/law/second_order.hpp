@@ -18,13 +18,16 @@
 
 namespace polydem {
 
+// m/s, dashpot_velocity (below) for hm = h / m_eff (s/kg) given.
+[[gnu::always_inline]] inline double implicit_velocity(double vn_end, double spring, double c, double f_last, double hm) {
+  return (vn_end + hm * (spring - f_last)) / (1.0 + hm * c);
+}
 // m/s, the normal velocity (> 0 separating) the dashpot reads at n+1: the predicted vn_end with
 // this contact's force per unit patch weight moved from its last value f_last (N) to
 // spring - c vn (N, N s/m), on the pair's mass m_eff (kg), over half a step h (s).
 [[gnu::always_inline]] inline double dashpot_velocity(double vn_end, double spring, double c, double f_last,
                                                       double m_eff, double h) {
-  const double hm = h / m_eff;  // s/kg
-  return (vn_end + hm * (spring - f_last)) / (1.0 + hm * c);
+  return implicit_velocity(vn_end, spring, c, f_last, h / m_eff);
 }
 
 // Where the overlap x (m) starts at the normal velocity vn < 0 (m/s): it began tau = x / -vn
