@@ -1,6 +1,7 @@
 #include "sim/rank_contacts.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 #include <utility>
 
@@ -50,11 +51,17 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
   });
 }
 
-bool RankContacts::lists_stale(const Drivers& drivers) {
+// This rank's requests: a rebuild (its bodies moved, none listed yet, or asked for), a stop.
+RankContacts::Requests RankContacts::requests_here(const Drivers& drivers) {
   bool stale = forced_ || rebuild_asked_ || !engine_;
-  if (!stale) stale = engine_->lists_stale(store_.view(), drivers);  // the store refreshed by exchange_ghosts
+  if (!stale) stale = engine_->lists_stale(store_.view(), drivers);
+  return Requests(stale) | Requests(stop_asked_) << 1;
+}
+
+bool RankContacts::lists_stale(const Drivers& drivers) {
+  const Requests mine = requests_here(drivers);  // the store refreshed by exchange_ghosts
   // One rank's moved body rebuilds every rank's lists; one rank's interrupt stops them all here.
-  const std::vector<std::uint64_t> any = link_.sum({std::uint64_t(stale), std::uint64_t(stop_asked_)});
+  const std::vector<std::uint64_t> any = link_.sum({mine & 1, mine >> 1});
   stop_seen_ = any[1] > 0;
   return any[0] > 0;
 }
@@ -125,8 +132,9 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
-  if (!forced_ && engine_) exchange_ghosts(bodies);
-  const bool stale = lists_stale(drivers);
+  const bool exchange = !forced_ && engine_;
+  if (exchange && !fold_) exchange_ghosts(bodies);
+  const bool stale = exchange && fold_ ? exchange_deciding(bodies, drivers) : lists_stale(drivers);
   if (stale) {
     // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
     if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
@@ -183,16 +191,45 @@ void RankContacts::exchange_ghosts(Bodies& bodies) {
   }
 }
 
+// The ghost exchange carrying the step's decision (fold_: every rank a neighbour of every
+// other), so a step meets the other ranks once. The store is refreshed and measured first, its
+// ghosts a step old (they cannot exceed: their owners' measures answered for them then), each
+// parcel ends with its sender's requests, and the ghosts are measured again once landed.
+bool RankContacts::exchange_deciding(Bodies& bodies, const Drivers& drivers) {
+  store_.refresh(bodies, !settings_.spheres_only);  // a sphere's orientation stays the identity
+  Requests any = requests_here(drivers);
+  for (Parcel& p : out_) {
+    pack_ghosts(bodies, plan_.send[p.rank], p.bytes.data());
+    std::memcpy(p.bytes.data() + p.bytes.size() - sizeof any, &any, sizeof any);
+  }
+  link_.exchange(out_, in_);
+  for (std::size_t k = 0; k < in_.size(); ++k) {
+    unpack_ghosts(in_[k].bytes, plan_.receive[in_[k].rank], bodies);
+    unpack_ghosts(in_[k].bytes, receive_local_[k], store_);
+    Requests theirs = 0;
+    std::memcpy(&theirs, in_[k].bytes.data() + in_[k].bytes.size() - sizeof theirs, sizeof theirs);
+    any |= theirs;
+  }
+  engine_->remeasure(store_.view(), ghost_local_);
+  stop_seen_ = (any >> 1) != 0;
+  return (any & 1) != 0;
+}
+
 // The ghost exchange's parcels, sized once per plan (no allocation a step), and the local
-// indices of each received parcel's bodies (after local_of_).
+// indices of each received parcel's bodies (after local_of_). The parcels carry the step's
+// requests when every rank sends to and receives from every other (a collective: all agree).
 void RankContacts::size_parcels() {
   out_.clear();
   in_.clear();
   receive_local_.clear();
+  std::uint64_t links = 0;  // other ranks this one sends to and receives from
+  for (int q = 0; q < link_.ranks(); ++q) links += !plan_.send[q].empty() && !plan_.receive[q].empty();
+  fold_ = link_.ranks() > 1 && link_.sum({links}).at(0) == std::uint64_t(link_.ranks()) * (link_.ranks() - 1);
+  const std::size_t word = fold_ ? sizeof(Requests) : 0;  // bytes after the ghosts
   for (int q = 0; q < link_.ranks(); ++q) {
-    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * kGhostBytes)});
+    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * kGhostBytes + word)});
     if (plan_.receive[q].empty()) continue;
-    in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+    in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes + word)});
     std::vector<std::uint32_t>& local = receive_local_.emplace_back();
     for (std::uint32_t b : plan_.receive[q]) local.push_back(std::uint32_t(local_of_[b]));
   }

@@ -3,8 +3,8 @@
 // (their centres in its box of a recursive bisection weighted by each body's measured contact
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
-// to point from their owners (sim/ghost_plan.hpp); one reduction per step decides the rebuild
-// (and carries an interrupt); a gather shares the drivers' reactions (summed in the one-process
+// to point from their owners (sim/ghost_plan.hpp), their parcels carrying each rank's rebuild and
+// stop requests when every rank is every other's neighbour (else one reduction a step decides); a gather shares the drivers' reactions (summed in the one-process
 // pair order) at the steps that read them; the contact count and the energy ledger's exact
 // sums are reduced only at output rows and when the ledger closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
@@ -131,7 +131,10 @@ class RankContacts {
   static constexpr std::size_t kCutSample = std::size_t(1) << 17, kCutSampleRank = 64;
 
  private:
+  using Requests = std::uint64_t;  // bit 0: rebuild, bit 1: stop
+  Requests requests_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
+  bool exchange_deciding(Bodies& bodies, const Drivers& drivers);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
   void migrate_bodies(Bodies& bodies);
   void adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table);
@@ -165,6 +168,7 @@ class RankContacts {
   std::vector<std::vector<std::uint32_t>> receive_local_;  // per parcel of in_: its bodies' local indices
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
+  bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;
