@@ -91,20 +91,14 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
   for (int n : {2, 3}) {
     ThreadRanks all(n);
     std::vector<Outcome> got(n);
-    std::vector<LinkCounts> traffic(n);
     std::vector<std::thread> ranks;
     for (int r = 0; r < n; ++r)
       ranks.emplace_back([&, r] {
         const ThreadLink link(all, r);
         got[r] = run(p, kSteps, &link, n == 3);  // 3 ranks: kicks left open, as the run loop leaves them
-        traffic[r] = link.counts();
       });
     for (std::thread& t : ranks) t.join();
     CHECK_FALSE(all.mismatch);
-    // Two ranks, each the other's neighbour: the step's rebuild decision rides the ghost
-    // parcels, so collectives come only at rebuilds and output (one a step before).
-    if (n == 2)
-      for (const LinkCounts& c : traffic) CHECK(c.collectives < std::uint64_t(kSteps) / 2);
     std::size_t owned = 0, held = 0, fewest = one.bodies.size();
     double shares = 0.0;
     for (int r = 0; r < n; ++r) {

@@ -27,7 +27,6 @@ class ThreadLink final : public RankLink {
   int rank() const override { return rank_; }
   int ranks() const override { return int(all_.posted.size()); }
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
-    ++counts_.collectives;  // every collective of the default link is one
     all_.posted[rank_] = mine;
     all_.sync.arrive_and_wait();
     std::vector<std::vector<char>> copy = all_.posted;
@@ -40,7 +39,6 @@ class ThreadLink final : public RankLink {
   }
   // Halves as MPI's: `in` is filled only at the end, so a caller reading it early reads stale bytes.
   void begin_exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
-    counts_.parcels += out.size();
     for (const Parcel& p : out) all_.box[rank_][p.rank] = p.bytes;
     out_ = &out;
     in_ = &in;
@@ -54,14 +52,12 @@ class ThreadLink final : public RankLink {
     all_.sync.arrive_and_wait();
     for (const Parcel& p : *out_) all_.box[rank_][p.rank].clear();
   }
-  LinkCounts counts() const override { return counts_; }  // parcels and collectives alone
 
  private:
   ThreadRanks& all_;
   int rank_;
   mutable const std::vector<Parcel>* out_ = nullptr;  // the exchange begun, until end_exchange
   mutable std::vector<Parcel>* in_ = nullptr;
-  mutable LinkCounts counts_;
 };
 
 // Runs `rank(link)` on `n` threads, one rank each, and waits for them all.
