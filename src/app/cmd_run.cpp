@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <optional>
 
@@ -215,6 +216,16 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
   }
 }
 
+// Each rank's clock (POLYDEM_MPI_TIMES set): the run loop's wall and CPU seconds and the part of
+// them inside MPI calls, by kind; the rest is the rank's work. Timed: read on a quiet machine.
+void print_link_times(const RankLink& link, double loop_wall, double loop_cpu) {
+  const LinkTimes t = link.times();
+  std::fprintf(stderr, "polydem: rank %d of %d: loop %.3f s wall, %.3f s CPU; in MPI (wall / CPU s): ghost waits "
+               "%.3f / %.3f, reductions %.3f / %.3f, gathers %.3f / %.3f\n", link.rank(), link.ranks(), loop_wall,
+               loop_cpu, t.wall[LinkTimes::kExchange], t.cpu[LinkTimes::kExchange], t.wall[LinkTimes::kReduction],
+               t.cpu[LinkTimes::kReduction], t.wall[LinkTimes::kGather], t.cpu[LinkTimes::kGather]);
+}
+
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
@@ -239,8 +250,11 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
     std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s%s, %d threads%s, output in %s\n",
                  sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), omp_get_max_threads(),
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "", o.out_dir.c_str());
+  const std::clock_t cpu_start = std::clock();
   const RunSummary s = run_simulation(sim, o);
+  const double loop_cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;  // s, every thread of the process
   if (link && std::getenv("POLYDEM_MPI_COUNTS")) print_link_counts(sim, *link, s.steps);
+  if (link && std::getenv("POLYDEM_MPI_TIMES")) print_link_times(*link, s.wall_seconds, loop_cpu);
   if (!io) return s.interrupted ? kExitInterrupted : 0;
   const ContactStats& c = sim.engine().stats();
   std::fprintf(stderr, "polydem: %lld steps in %.2f s (%.3g us per body-step), %zu rebuilds; ParaView: %s/scene.pvd\n",

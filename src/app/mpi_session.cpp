@@ -1,6 +1,8 @@
 #include "app/mpi_session.hpp"
 
+#include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <initializer_list>
 
 #ifdef POLYDEM_WITH_MPI
@@ -19,9 +21,36 @@ int launcher_value(const char* openmpi, const char* pmi, int absent) {
 }
 
 #ifdef POLYDEM_WITH_MPI
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// Adds its scope's wall and CPU seconds to one kind of `times`, when `times` is given.
+class TimedCall {
+ public:
+  TimedCall(LinkTimes* times, LinkTimes::Kind kind) : times_(times), kind_(kind) {
+    if (times_) wall_ = std::chrono::steady_clock::now(), cpu_ = thread_cpu_seconds();
+  }
+  ~TimedCall() {
+    if (!times_) return;
+    times_->wall[kind_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count();
+    times_->cpu[kind_] += thread_cpu_seconds() - cpu_;
+  }
+  TimedCall(const TimedCall&) = delete;
+  TimedCall& operator=(const TimedCall&) = delete;
+
+ private:
+  LinkTimes* times_;
+  LinkTimes::Kind kind_;
+  std::chrono::steady_clock::time_point wall_;
+  double cpu_ = 0.0;  // s
+};
+
 class MpiLink final : public RankLink {
  public:
-  MpiLink(int rank, int ranks) : rank_(rank), ranks_(ranks) {}
+  MpiLink(int rank, int ranks) : rank_(rank), ranks_(ranks), timed_(std::getenv("POLYDEM_MPI_TIMES") != nullptr) {}
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
@@ -47,18 +76,22 @@ class MpiLink final : public RankLink {
     }
   }
   void end_exchange() const override {
+    const TimedCall timed = timer(LinkTimes::kExchange);
     MPI_Waitall(int(pending_.size()), pending_.data(), MPI_STATUSES_IGNORE);
     pending_.clear();
   }
   LinkCounts counts() const override { return counts_; }
+  LinkTimes times() const override { return times_; }
   std::vector<std::uint64_t> all_to_all(const std::vector<std::uint64_t>& to_each) const override {
     std::vector<std::uint64_t> from(ranks_);
+    const TimedCall timed = timer(LinkTimes::kGather);
     MPI_Alltoall(to_each.data(), 1, MPI_UINT64_T, from.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD);
     count_collective(to_each.size());
     return from;
   }
   std::vector<std::uint64_t> sum(const std::vector<std::uint64_t>& mine) const override {
     std::vector<std::uint64_t> total(mine.size());
+    const TimedCall timed = timer(LinkTimes::kReduction);
     MPI_Allreduce(mine.data(), total.data(), int(mine.size()), MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
     count_collective(mine.size());
     return total;
@@ -66,6 +99,7 @@ class MpiLink final : public RankLink {
 
  private:
   static constexpr int kEveryRank = -1;
+  TimedCall timer(LinkTimes::Kind kind) const { return TimedCall(timed_ ? &times_ : nullptr, kind); }
   // A collective of `n` values each way (the bytes in: what a reduction or a transpose brings).
   void count_collective(std::size_t n) const {
     ++counts_.collectives;
@@ -75,6 +109,7 @@ class MpiLink final : public RankLink {
   // Every rank's `mine` onto `root`, or onto every rank (kEveryRank): sizes first, then bytes.
   std::vector<std::vector<char>> collect(const std::vector<char>& mine, int root) const {
     const int n = int(mine.size());
+    const TimedCall timed = timer(LinkTimes::kGather);
     ++counts_.collectives;
     counts_.collective_bytes += mine.size();
     std::vector<int> sizes(ranks_), offsets(ranks_ + 1, 0);
@@ -98,7 +133,9 @@ class MpiLink final : public RankLink {
   }
   static constexpr int kGhostTag = 20;  // the number: one kind of point-to-point message
   int rank_, ranks_;
+  bool timed_;
   mutable LinkCounts counts_;
+  mutable LinkTimes times_;
   mutable std::vector<MPI_Request> pending_;  // the exchange begun, until end_exchange
 };
 #endif

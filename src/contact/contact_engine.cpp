@@ -370,6 +370,13 @@ void ContactEngine::measure_motion(const LocalBodies& bodies) {
   trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin);
 }
 
+void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {
+  const std::vector<Vec3>& position = *bodies.position;
+  if (spheres_only_ && spheres_posed_each_step_)
+    for (std::uint32_t b : some) posed_[b].position = world_vertices_[b] = position[b];
+  trigger_.remeasure(position, *bodies.orientation, core_reach_, some);
+}
+
 bool ContactEngine::stale_after_measure(const Drivers& drivers) {
   const bool moved = trigger_.take_exceeded();  // taken every step: the next step measures afresh
   return must_rebuild_ || moved || drivers_moved(drivers);

@@ -82,6 +82,9 @@ class ContactEngine {
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
   void measure_motion(const LocalBodies& bodies);
+  // measure_motion's poses and bounds again for the bodies `some` alone, their answer left out:
+  // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
+  void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);
   bool stale_after_measure(const Drivers& drivers);
   void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
   // The pairs' forces added to the bodies (team stage: ends at a barrier), the drivers'

@@ -89,6 +89,13 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   return exceeded;
 }
 
+void RebuildTrigger::remeasure(const std::vector<Vec3>& x, const std::vector<Quat>& q,
+                               const std::vector<double>& bounding_radius, const std::vector<std::uint32_t>& some) {
+  if (q_built.empty() || x_built.size() != x.size()) return;  // points, or no build: measure answered
+  for (std::uint32_t i : some)
+    displacement_[i] = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
+}
+
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }
 
 }  // namespace polydem

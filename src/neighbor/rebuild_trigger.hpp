@@ -3,6 +3,7 @@
 // more than skin/2 since the last build, not on a fixed period.
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "polydem/math.hpp"
@@ -35,6 +36,10 @@ class RebuildTrigger {
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
                double skin);
   bool take_exceeded();
+  // measure's bounds again for the bodies `some` alone, the answer unchanged (a rank's ghosts:
+  // their owners answer for them); nothing for points, which keep no bound.
+  void remeasure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
+                 const std::vector<std::uint32_t>& some);
   // m, per body, the displacement_bound found by the last needs_rebuild (0 right after a build):
   // two features closer than their distance at the build minus both bounds cannot have met.
   // Empty for points.

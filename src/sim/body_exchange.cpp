@@ -34,6 +34,15 @@ void ghost_fields(Io& io, B& b, std::size_t i) {
   io.field(b.angular_velocity_end[i]);
 }
 
+// What a motion parcel carries of a body after its orientation (when sent).
+template <class Io, class B>
+void velocity_fields(Io& io, B& b, std::size_t i) {
+  io.field(b.velocity[i]);
+  io.field(b.angular_velocity[i]);
+  io.field(b.velocity_end[i]);
+  io.field(b.angular_velocity_end[i]);
+}
+
 template <class Io, class B>
 void owned_fields(Io& io, B& b, std::size_t i) {
   ghost_fields(io, b, i);
@@ -63,6 +72,33 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
 void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& local, LocalStore& store) {
   Reader r{bytes.data()};
   for (std::uint32_t k : local) ghost_fields(r, store, k);
+}
+
+std::size_t motion_bytes(bool turning) { return (turning ? 16 : 12) * sizeof(double); }  // 4 vectors (1 quaternion)
+
+void pack_motion(const Bodies& bodies, const std::vector<std::uint32_t>& ids, bool turning, char* into) {
+  Writer w{into};
+  for (std::uint32_t b : ids) {
+    if (turning) w.field(bodies.orientation[b]);
+    velocity_fields(w, bodies, b);
+  }
+}
+
+void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, Bodies& bodies,
+                   LocalStore& store) {
+  Reader r{bytes};
+  for (std::size_t k = 0; k < to.ids.size(); ++k) {
+    const std::uint32_t b = to.ids[k], l = to.local[k];
+    if (turning) r.field(bodies.orientation[b]);
+    velocity_fields(r, bodies, b);
+    to.drifted[k] += bodies.velocity[b] * dt;  // the owner's drift (integrate.hpp drift_body): its bits
+    bodies.position[b] = store.position[l] = to.drifted[k];
+    if (turning) store.orientation[l] = bodies.orientation[b];
+    store.velocity[l] = bodies.velocity[b];
+    store.angular_velocity[l] = bodies.angular_velocity[b];
+    store.velocity_end[l] = bodies.velocity_end[b];
+    store.angular_velocity_end[l] = bodies.angular_velocity_end[b];
+  }
 }
 
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {

@@ -1,8 +1,8 @@
 #pragma once
 // Body state as bytes between ranks. A ghost parcel carries what the contact stage reads and
-// changes every step (pose and velocities, 152 bytes a body) in the order of a GhostPlan list
-// both ranks hold; an owned-state record carries all that integration changes (224 bytes
-// and the id), for the gathers that give every rank the whole state (rebuilds, output).
+// changes (pose and velocities, 152 bytes a body; at a rebuild) in the order of a GhostPlan
+// list both ranks hold, a motion parcel the same less what the receiver knows (each step); an
+// owned-state record carries all that integration changes (224 bytes and the id), for the gathers that give every rank the whole state (rebuilds, output).
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +21,22 @@ void pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids, ch
 // at the same bodies' local indices `local`.
 void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies);
 void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& local, LocalStore& store);
+
+// A step's ghost parcel between rebuilds (the ghosts' motion): the velocities, and the
+// orientation when bodies turn (`turning` false: a spheres-only scene, every orientation the
+// identity), not the position: the receiver drifts its copy as the owner did, x += v dt, the
+// same bits (the only write of a position between rebuilds). Spheres 96 bytes a body, else 128.
+std::size_t motion_bytes(bool turning);
+void pack_motion(const Bodies& bodies, const std::vector<std::uint32_t>& ids, bool turning, char* into);
+// Writes a pack_motion parcel of bodies `ids` into them and into the store at their local
+// indices `local`, each position `drifted[k]` (the k-th body's at the last step) moved by v dt first.
+struct MotionTarget {
+  const std::vector<std::uint32_t>& ids;
+  const std::vector<std::uint32_t>& local;
+  Vec3* drifted;  // m
+};
+void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, Bodies& bodies,
+                   LocalStore& store);
 
 // The integration state of bodies `ids` with their ids.
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);

@@ -1,6 +1,7 @@
 #include "sim/rank_contacts.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 #include <utility>
 
@@ -50,11 +51,17 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
   });
 }
 
-bool RankContacts::lists_stale(const Drivers& drivers) {
+// This rank's requests: a rebuild (its bodies moved, none listed yet, or asked for), a stop.
+RankContacts::Requests RankContacts::requests_here(const Drivers& drivers) {
   bool stale = forced_ || rebuild_asked_ || !engine_;
-  if (!stale) stale = engine_->lists_stale(store_.view(), drivers);  // the store refreshed by exchange_ghosts
+  if (!stale) stale = engine_->lists_stale(store_.view(), drivers);
+  return Requests(stale) | Requests(stop_asked_) << 1;
+}
+
+bool RankContacts::lists_stale(const Drivers& drivers) {
+  const Requests mine = requests_here(drivers);  // the store refreshed by exchange_ghosts
   // One rank's moved body rebuilds every rank's lists; one rank's interrupt stops them all here.
-  const std::vector<std::uint64_t> any = link_.sum({std::uint64_t(stale), std::uint64_t(stop_asked_)});
+  const std::vector<std::uint64_t> any = link_.sum({mine & 1, mine >> 1});
   stop_seen_ = any[1] > 0;
   return any[0] > 0;
 }
@@ -100,7 +107,7 @@ void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const
     if (plan_.ghost[k]) ghost_local_.push_back(std::uint32_t(k));
   }
   owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
-  size_parcels();
+  size_parcels(bodies);
   store_.select(bodies, plan_.local, plan_.ghost);
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(body_table, local_of_, false);
@@ -125,8 +132,9 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
-  if (!forced_ && engine_) exchange_ghosts(bodies);
-  const bool stale = lists_stale(drivers);
+  const bool exchange = !forced_ && engine_;
+  if (exchange && !fold_) exchange_ghosts(bodies, dt);
+  const bool stale = exchange && fold_ ? exchange_deciding(bodies, drivers, dt) : lists_stale(drivers);
   if (stale) {
     // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
     if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
@@ -172,29 +180,71 @@ void RankContacts::sums_taken() {
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its
 // owner. The store is refreshed while the ghosts travel (theirs then a step old), and each
 // ghost written into it too when it lands.
-void RankContacts::exchange_ghosts(Bodies& bodies) {
-  for (Parcel& p : out_) pack_ghosts(bodies, plan_.send[p.rank], p.bytes.data());
+void RankContacts::exchange_ghosts(Bodies& bodies, double dt) {
+  const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
+  for (Parcel& p : out_) pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());
   link_.begin_exchange(out_, in_);
-  store_.refresh(bodies, !settings_.spheres_only);  // a sphere's orientation stays the identity
+  store_.refresh(bodies, turning);
   link_.end_exchange();
-  for (std::size_t k = 0; k < in_.size(); ++k) {
-    unpack_ghosts(in_[k].bytes, plan_.receive[in_[k].rank], bodies);
-    unpack_ghosts(in_[k].bytes, receive_local_[k], store_);
-  }
+  unpack_parcels(bodies, dt);
 }
 
-// The ghost exchange's parcels, sized once per plan (no allocation a step), and the local
-// indices of each received parcel's bodies (after local_of_).
-void RankContacts::size_parcels() {
+// Each landed motion parcel into the ghosts of `bodies` and of the store, drifted by dt (s).
+void RankContacts::unpack_parcels(Bodies& bodies, double dt) {
+  const bool turning = !settings_.spheres_only;
+  for (std::size_t k = 0; k < in_.size(); ++k)
+    unpack_motion(in_[k].bytes.data(), {plan_.receive[in_[k].rank], receive_local_[k], drifted_[k].data()}, turning,
+                  dt, bodies, store_);
+}
+
+// The ghost exchange carrying the step's decision (fold_: every rank a neighbour of every
+// other), so a step meets the other ranks once. The store is refreshed and measured first, its
+// ghosts a step old (they cannot exceed: their owners' measures answered for them then), each
+// parcel ends with its sender's requests, and the ghosts are measured again once landed.
+bool RankContacts::exchange_deciding(Bodies& bodies, const Drivers& drivers, double dt) {
+  const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
+  store_.refresh(bodies, turning);
+  Requests any = requests_here(drivers);
+  for (Parcel& p : out_) {
+    pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());
+    std::memcpy(p.bytes.data() + p.bytes.size() - sizeof any, &any, sizeof any);
+  }
+  link_.exchange(out_, in_);
+  unpack_parcels(bodies, dt);
+  for (std::size_t k = 0; k < in_.size(); ++k) {
+    Requests theirs = 0;
+    std::memcpy(&theirs, in_[k].bytes.data() + in_[k].bytes.size() - sizeof theirs, sizeof theirs);
+    any |= theirs;
+  }
+  engine_->remeasure(store_.view(), ghost_local_);
+  stop_seen_ = (any >> 1) != 0;
+  return (any & 1) != 0;
+}
+
+// The ghost exchange's parcels, sized once per plan (no allocation a step), the local indices
+// of each received parcel's bodies (after local_of_) and their positions now (`bodies`: the
+// ghosts current, as after a rebuild), which the next steps drift. The parcels carry the step's
+// requests when every rank sends to and receives from every other (a collective: all agree).
+void RankContacts::size_parcels(const Bodies& bodies) {
   out_.clear();
   in_.clear();
   receive_local_.clear();
+  drifted_.clear();
+  std::uint64_t links = 0;  // other ranks this one sends to and receives from
+  for (int q = 0; q < link_.ranks(); ++q) links += !plan_.send[q].empty() && !plan_.receive[q].empty();
+  fold_ = link_.ranks() > 1 && link_.sum({links}).at(0) == std::uint64_t(link_.ranks()) * (link_.ranks() - 1);
+  const std::size_t word = fold_ ? sizeof(Requests) : 0;  // bytes after the ghosts
+  const std::size_t body = motion_bytes(!settings_.spheres_only);
   for (int q = 0; q < link_.ranks(); ++q) {
-    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * kGhostBytes)});
+    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * body + word)});
     if (plan_.receive[q].empty()) continue;
-    in_.push_back({q, std::vector<char>(plan_.receive[q].size() * kGhostBytes)});
+    in_.push_back({q, std::vector<char>(plan_.receive[q].size() * body + word)});
     std::vector<std::uint32_t>& local = receive_local_.emplace_back();
-    for (std::uint32_t b : plan_.receive[q]) local.push_back(std::uint32_t(local_of_[b]));
+    std::vector<Vec3>& x = drifted_.emplace_back();
+    for (std::uint32_t b : plan_.receive[q]) {
+      local.push_back(std::uint32_t(local_of_[b]));
+      x.push_back(bodies.position[b]);
+    }
   }
 }
 

@@ -2,9 +2,10 @@
 // The contact stage of a distributed run (issue 20): each rank integrates the bodies it owns
 // (their centres in its box of a recursive bisection weighted by each body's measured contact
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
-// sum is the one of one process. Between rebuilds the ghosts' poses and velocities come point
-// to point from their owners (sim/ghost_plan.hpp); one reduction per step decides the rebuild
-// (and carries an interrupt); a gather shares the drivers' reactions (summed in the one-process
+// sum is the one of one process. Between rebuilds the ghosts' velocities (and orientations,
+// when bodies turn) come point to point from their owners (sim/ghost_plan.hpp), each rank
+// drifting its ghosts' positions as their owners do (sim/body_exchange.hpp), their parcels carrying each rank's rebuild and
+// stop requests when every rank is every other's neighbour (else one reduction a step decides); a gather shares the drivers' reactions (summed in the one-process
 // pair order) at the steps that read them; the contact count and the energy ledger's exact
 // sums are reduced only at output rows and when the ledger closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
@@ -131,7 +132,10 @@ class RankContacts {
   static constexpr std::size_t kCutSample = std::size_t(1) << 17, kCutSampleRank = 64;
 
  private:
+  using Requests = std::uint64_t;  // bit 0: rebuild, bit 1: stop
+  Requests requests_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
+  bool exchange_deciding(Bodies& bodies, const Drivers& drivers, double dt);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
   void migrate_bodies(Bodies& bodies);
   void adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table);
@@ -140,11 +144,12 @@ class RankContacts {
   void recut_if_unbalanced(const Bodies& bodies);
   std::vector<char> cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void exchange_ghosts(Bodies& bodies);
+  void exchange_ghosts(Bodies& bodies, double dt);
+  void unpack_parcels(Bodies& bodies, double dt);
   OwnedSums owned_sums(Bodies& bodies) {
     return {engine_->force_sums(store_.view()), local_of_.data(), bodies.force.data(), bodies.torque.data()};
   }
-  void size_parcels();
+  void size_parcels(const Bodies& bodies);
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
 
@@ -163,8 +168,10 @@ class RankContacts {
   LocalStore store_;
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::vector<std::uint32_t>> receive_local_;  // per parcel of in_: its bodies' local indices
+  std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
+  bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;

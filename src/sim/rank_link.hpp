@@ -27,6 +27,13 @@ struct LinkCounts {
   std::uint64_t collective_bytes_in = 0;                // the other ranks' bytes they brought to this rank
 };
 
+// Seconds a rank spent inside MPI calls since the start, by kind (POLYDEM_MPI_TIMES set, else
+// zeros): timed, to split a step's clock into work and waiting (README, MPI section).
+struct LinkTimes {
+  enum Kind { kExchange, kReduction, kGather, kKinds };  // ghost waits; sums (the step's decision); gathers, transposes
+  double wall[kKinds] = {}, cpu[kKinds] = {};  // s elapsed, s of this thread's CPU (a waiting rank polls)
+};
+
 class RankLink {
  public:
   virtual ~RankLink() = default;
@@ -50,6 +57,7 @@ class RankLink {
   virtual void begin_exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const { exchange(out, in); }
   virtual void end_exchange() const {}
   virtual LinkCounts counts() const { return {}; }
+  virtual LinkTimes times() const { return {}; }
   // Element [q] of rank q's `to_each`, for every q, in rank order (a collective, ranks values
   // each way): the sizes of the parcels a rebuild sends, so each receiver posts them. By
   // default from an all_gather.

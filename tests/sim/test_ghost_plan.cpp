@@ -1,12 +1,14 @@
 // The ghost exchange's plan and parcels without MPI: over 400 random centres cut in 2, 3 and 4
 // boxes (recursive bisection, equal weights), every body is owned by one rank, each rank's
 // ghosts are exactly the bodies owned elsewhere within the halo of its box, rank p's send list to q is q's receive list from p
-// (so a parcel is bare state in an order both know), and body state crosses a parcel bit for bit.
+// (so a parcel is bare state in an order both know), and body state crosses a parcel bit for bit,
+// a motion parcel with the receiver's drift as the owner's drift.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 #include <random>
 
+#include "integrate/integrate.hpp"
 #include "sim/body_exchange.hpp"
 #include "sim/ghost_plan.hpp"
 
@@ -95,4 +97,45 @@ TEST_CASE("Ghost and owned parcels carry body state bit for bit") {
     CHECK(owned.velocity[b] == from.velocity[b]);
   }
   CHECK(owned.position[0] == Vec3::Zero());  // bodies not in the parcel are left alone
+}
+
+TEST_CASE("A motion parcel and the receiver's drift give the owner's drifted state bit for bit") {
+  const std::vector<Vec3> x = random_centres(12, 5);
+  const double dt = 3.7e-5;  // s
+  for (bool turning : {false, true}) {
+    Bodies owner;
+    owner.resize(x.size());
+    for (std::size_t b = 0; b < x.size(); ++b) {
+      owner.position[b] = x[b];
+      owner.inertia[b] = Vec3(1.0, 2.0 + double(b), 3.0) * 1e-6;  // kg m^2: asymmetric
+      owner.angular_momentum[b] = x[b] * 1e-5;
+    }
+    Bodies held = owner;  // the receiver's copies as of the last step
+    const std::vector<std::uint32_t> ids{0, 3, 4, 9};
+    LocalStore store;
+    store.select(held, ids, std::vector<std::uint8_t>(ids.size(), 1));
+    std::vector<Vec3> drifted;
+    for (std::uint32_t b : ids) drifted.push_back(held.position[b]);
+    for (std::size_t b = 0; b < x.size(); ++b) {  // the owner's step: new velocities, then its drift
+      owner.velocity[b] = Vec3(0.3, -1.1, 2.9) * x[b].norm();
+      owner.velocity_end[b] = owner.velocity[b] / 3.0;
+      owner.angular_velocity_end[b] = x[b] * 1e-9;
+    }
+    if (turning) drift(owner, dt);
+    else for (std::size_t b = 0; b < x.size(); ++b) owner.position[b] += owner.velocity[b] * dt;
+    std::vector<char> bytes(ids.size() * motion_bytes(turning));
+    pack_motion(owner, ids, turning, bytes.data());
+    const std::vector<std::uint32_t> local{0, 1, 2, 3};
+    unpack_motion(bytes.data(), {ids, local, drifted.data()}, turning, dt, held, store);
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const std::uint32_t b = ids[k];
+      CHECK(std::memcmp(held.position[b].data(), owner.position[b].data(), sizeof(Vec3)) == 0);
+      CHECK(std::memcmp(store.position[k].data(), owner.position[b].data(), sizeof(Vec3)) == 0);
+      CHECK(store.velocity[k] == owner.velocity[b]);
+      CHECK(store.angular_velocity[k] == owner.angular_velocity[b]);
+      CHECK(store.velocity_end[k] == owner.velocity_end[b]);
+      CHECK(store.angular_velocity_end[k] == owner.angular_velocity_end[b]);
+      CHECK(store.orientation[k].coeffs() == owner.orientation[b].coeffs());  // not sent when not turning: both the identity
+    }
+  }
 }
