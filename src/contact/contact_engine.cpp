@@ -100,7 +100,8 @@ struct DriverPartner {
 constexpr double kSearchExtra = 1.0;
 
 // A sphere's passes (closing and opening kicks, drift, the rebuild check) and a sphere-wall pair,
-// in sphere pairs apart (callgrind, the bed: ... instructions a body, ... a wall pair, ... a pair).
+// in sphere pairs apart (split_pairs' unit). Not calibrated yet: README's figures suggest ~2.4 and
+// ~4.9 (~280 instructions a body-step, ~580 a wall pair-step, ~120 a unit of the walk's weight).
 constexpr double kPassWeight = 1.0;
 constexpr double kWallPairWeight = 1.0;
 
