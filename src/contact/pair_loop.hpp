@@ -64,6 +64,75 @@ void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direc
   }
 }
 
+// A pair's terms in its bodies' sums.
+[[gnu::always_inline]] inline void add_pair(BodySum* sums, BodyPair p, const PairTotals& pt) {
+  add_as_i(sums[p.i], pt.force_i, pt.torque_i);
+  add_as_j(sums[p.j], pt.force_i, pt.torque_j);
+}
+// Pair k's own results: its touching count and pending energy, its block's contacts and ended flag.
+[[gnu::always_inline]] inline void keep_pair(PairList& list, std::uint32_t k, const PairTotals& pt,
+                                             std::uint32_t& contacts, bool& ended) {
+  ended |= (list.touching[k] != 0) & (pt.contacts == 0);  // touching at the last step, not now
+  list.touching[k] = std::uint16_t(pt.contacts);
+  list.pending[k] += pt.energy;
+  contacts += std::uint32_t(pt.contacts);
+}
+
+// Internal pairs [k, stop) through a kernel that steps two steady pairs side by side
+// (sphere_lanes.hpp): a candidate waits for the next; a pair between them that adds to a sum sends
+// it alone first, so each sum takes its terms in list order (a pair out of reach adds +0, which
+// changes no sum's bits: a sum is never -0).
+template <class Kernel>
+[[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
+                                                PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
+                                                std::uint32_t& contacts, bool& ended) {
+  constexpr std::uint32_t kNone = ~0u;
+  std::uint32_t waiting = kNone;
+  const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {
+    const PairTotals pt = kernel(a, scratch);
+    add_pair(sums, list.pairs[a], pt);
+    keep_pair(list, a, pt, contacts, ended);
+  };
+  for (; k < stop; ++k) {
+    if (kernel.candidate(k)) {
+      if (waiting == kNone) {
+        waiting = k;
+        continue;
+      }
+      const std::uint32_t two[2] = {waiting, k};
+      kernel.two(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
+        if (!t) return alone(two[l]);
+        add_pair(sums, list.pairs[two[l]], *t);
+        keep_pair(list, two[l], *t, contacts, ended);
+      });
+      waiting = kNone;
+      continue;
+    }
+    const PairTotals pt = kernel(k, scratch);
+    keep_pair(list, k, pt, contacts, ended);
+    if (pt.contacts == 0) continue;  // out of reach: its terms are +0
+    if (waiting != kNone) alone(std::exchange(waiting, kNone));
+    add_pair(sums, list.pairs[k], pt);
+  }
+  if (waiting != kNone) alone(waiting);
+}
+
+// Internal pairs [k, stop) of a chunk in order, each computed and added to both bodies' sums.
+template <class Kernel>
+[[gnu::always_inline]] inline void internal_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
+                                                  PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
+                                                  std::uint32_t& contacts, bool& ended) {
+  if constexpr (requires { Kernel::kTwoLanes; }) {
+    paired_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
+  } else {
+    for (; k < stop; ++k) {
+      const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
+      add_pair(sums, list.pairs[k], pt);
+      keep_pair(list, k, pt, contacts, ended);
+    }
+  }
+}
+
 // Chunk t's pairs in order: each internal pair computed and added to both bodies' sums, each
 // foreign pair's result added to the side homed here; the blocks' contacts and ended flags. The
 // runs of internal pairs between two foreign ones are plain loops (one thread: the whole list).
@@ -79,17 +148,9 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
     bool ended = false;
     const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * kPairBlock));
     for (std::uint32_t k = std::uint32_t(b * kPairBlock); k < end; ++k) {
-      for (const std::uint32_t stop = std::min(end, next); k < stop; ++k) {
-        const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
-        const BodyPair p = list.pairs[k];
-        add_as_i(sums[p.i], pt.force_i, pt.torque_i);
-        add_as_j(sums[p.j], pt.force_i, pt.torque_j);
-        ended |= (list.touching[k] != 0) & (pt.contacts == 0);  // touching at the last step, not now
-        list.touching[k] = std::uint16_t(pt.contacts);
-        list.pending[k] += pt.energy;
-        contacts += std::uint32_t(pt.contacts);
-      }
-      if (k == end) break;
+      const std::uint32_t stop = std::min(end, next);
+      internal_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
+      if ((k = stop) == end) break;
       const BodyPair p = list.pairs[k];  // k == next: a foreign pair
       const ForeignResult& r = direct.foreign[f];
       if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], r.force_i, r.torque_i);

@@ -10,9 +10,10 @@ namespace polydem {
 // each body's (`direct`) and its energies by block, as the general pair loop does.
 // Inside a team the threads leave it without a barrier (all_pair_forces<true>): the caller meets
 // them before reading the results. `equal`: every sphere alike, so no radius or mass is read per
-// body and the list keeps no k', c' per pair (its linear_steps may be empty).
+// body and the list keeps no k', c' per pair (its linear_steps may be empty). `lanes`: steady
+// pairs two at a time where the law allows (sphere_lanes.hpp; false: one at a time, the same bits).
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
-                      DirectSums& direct, const EqualSpheres* equal = nullptr);
+                      DirectSums& direct, const EqualSpheres* equal = nullptr, bool lanes = true);
 
 // The radii and pair masses the sphere kernel reads: each body's, and k', c' cached per pair.
 struct EachSphere {

@@ -50,25 +50,45 @@ struct NormalHertz {
     return 2.0 * law.alpha_n * std::sqrt(2.0 * m_eff * law.e_star * std::sqrt(r_star));
   }
   [[gnu::always_inline]] static double damping(double nu_pair, double x) { return nu_pair * std::sqrt(std::sqrt(x)); }
-  // N, the dashpot's force at the sample of overlap x (m), rate r (m/s, > 0 closing, at the
-  // sample), nu (N s/m, the pair's times the weight): its impulse over the sample's Verlet cell
-  // (half a step either side) divided by dt (s). The dashpot nu x^1/4 dx/dt is the time
-  // derivative of 4/5 nu x^5/4, so that impulse is 4/5 nu (x^5/4 at the cell's ends), the ends'
-  // overlaps x +- r dt/2 (not below 0); the step where the overlap starts takes onset_force.
-  // Sampling nu x^1/4 r instead misses O(dt^1.25) near the touch, x^1/4 being steep there.
-  [[gnu::always_inline]] static double cell_dashpot(double nu, double x, double r, double dt) {
-    const auto grown = [](double y) { return y > 0.0 ? y * std::sqrt(std::sqrt(y)) : 0.0; };  // m^5/4
-    const double half = 0.5 * r * dt;  // m
-    return 0.8 * nu * (grown(x + half) - grown(x - half)) / dt;
+  // The force at n is the hat average over [n-1, n+1] of the force along the motion (Verlet
+  // then follows the exact samples to O(dt^4) where the force is smooth; README, Hertz): in
+  // closed form for the overlap straight at the rate r (m/s, > 0 closing, at n) from x (m), the
+  // touch inside the window included, plus hat_curvature for the overlap's bend.
+  // N, the dashpot nu x^1/4 x' (nu in N s/m^1.25): 16/45 nu (second difference of x^9/4) / (r dt^2).
+  // g = nu x^1/4 (N s/m), given.
+  [[gnu::always_inline]] static double hat_dashpot(double nu, double g, double x, double r, double dt) {
+    const double d = r * dt;  // m
+    if (std::abs(d) < 1e-3 * x) return g * r * (1.0 - d * d / (64.0 * x * x));  // its series
+    const auto h = [](double y) { return y > 0.0 ? y * y * std::sqrt(std::sqrt(y)) : 0.0; };  // m^9/4
+    return 16.0 / 45.0 * nu * (h(x + d) - 2.0 * h(x) + h(x - d)) / (r * dt * dt);
+  }
+  // N, the spring at weight w: w K (second difference of x^7/2 / 8.75) / (r dt)^2; spring (N), w K x^1.5, given.
+  [[gnu::always_inline]] static double hat_spring(const LawParams& law, double r_star, double w, double spring, double x,
+                                                  double r, double dt) {
+    const double d = r * dt;  // m
+    if (std::abs(d) < 1e-3 * x) return spring * (1.0 + d * d / (16.0 * x * x));  // its series
+    const double stiff = w * force(law, r_star, 1.0);  // N/m^1.5
+    const auto q = [](double y) { return y > 0.0 ? y * y * y * std::sqrt(y) / 8.75 : 0.0; };  // m^7/2
+    return stiff * (q(x + d) - 2.0 * q(x) + q(x - d)) / (d * d);
+  }
+  // N per unit weight, the hat's dt^2/12 (kn a + 3 g' r a + g j) for the overlap's acceleration
+  // a = (f_rest - f)/m (m/s^2) and jerk j = (f_last - f)/(m dt): f = spring + g r the force at n,
+  // f_last at n-1, f_rest the rest of the world's load (N), kn = 1.5 spring/x, g = nu x^1/4 and
+  // g' = g/4x (N s/m, N s/m^2). Without it the error is A dt^2 (en 0.5: -0.18 (dt/critical)^2).
+  [[gnu::always_inline]] static double hat_curvature(double spring, double g, double x, double r, double f_last,
+                                                     double f_rest, double m, double dt) {
+    const double f = spring + g * r;                                 // N
+    const double a = (f_rest - f) / m, j = (f_last - f) / (m * dt);  // m/s^2, m/s^3
+    return dt * dt / 12.0 * ((1.5 * spring + 0.75 * g * r) / x * a + g * j);
   }
   // The step where the overlap starts, approached at v > 0 (m/s) by a pair of mass m (kg) (nu as
-  // cell_dashpot): the drift has put the overlap x (m) on the straight line, deeper than the
+  // hat_dashpot): the drift has put the overlap x (m) on the straight line, deeper than the
   // impact's arc (hertz_arc.hpp). As the linear law's exact onset (exact_linear.hpp), the arc
   // through x (the touch s before) is taken: the step's force brings the half-step velocity to
-  // the arc's at s + dt/2, so the pair goes on along the exact impact shifted in time. Returns
-  // that force (N). The cell's impulse from the touch at x / v instead left the pair too deep by
-  // ~dt^9/4: en 0.1 at 0.3 x critical 4.5% off (worst of 16 touch places); the arc's series to
-  // t^7/2 (49fd0f7 to f521392) 1.7%, short there; stepped, 0.91%.
+  // the arc's chord from s to s + dt, so the pair goes on along the exact impact's samples
+  // shifted in time (the hat forces' samples). Returns that force (N). The arc's velocity at
+  // s + dt/2, off the chord by ~dt^2 x''' ~ dt^5/4 near the touch, stays with an undamped spring's
+  // point samples (en 1 at 0.3 x critical: 1.2e-2, the chord 2.2e-2; damped, the chord's error is order 2.5).
   static double onset_force(const LawParams& law, double r_star, double w, double nu, double m, double x, double v,
                             double dt) {
     const double stiff = w * force(law, r_star, 1.0);              // N/m^1.5, w K
@@ -82,30 +102,38 @@ struct NormalHertz {
       tau += (x / x0 - arc.s) / arc.u;
       arc = advance_arc(arc, sigma(tau), c, 1);
     }
-    const double end = sigma(tau + 0.5 * dt / t0);  // -, the half step on
+    const double now = arc.s;                               // -, the arc at x
+    const double end = sigma(tau + (c > 0.0 ? dt : 0.5 * dt) / t0);  // -, a step (a half step) on
     arc = advance_arc(arc, end, c, 1 + int(8.0 * (end - arc.sigma) / end));
-    return std::max(m * v * (1.0 - arc.u), 0.0) / dt;
+    const double u = c > 0.0 ? (arc.s - now) * t0 / dt : arc.u;  // -, the new half-step velocity over v
+    return std::max(m * v * (1.0 - u), 0.0) / dt;
   }
-  // N, the force of the step where the clamp lets go, fp (N) the clamped force sampled, the
-  // overlap x (m) opening at rate r < 0 (m/s; nu, dt as cell_dashpot): w K y^1.5 + nu r y^1/4
-  // falls to 0 at y* = (nu (-r) / (w K))^4/5 inside the cell (or before its end x + r dt/2). The cell's
-  // impulse of the clamped force is that of the force from the cell's start down to y* (the
-  // overlap linear in time: w (U(start) - U(y*)) / -r - 4/5 nu (start^5/4 - y*^5/4)); fp took
-  // the dashpot's negative tail beyond y*. Without it en 0.9's let-go near y* (x^1/4 steep) was
-  // order 1.25 between 0.1 and 0.05 x critical.
+  // N, the force where the clamp lets go: the hat average of the clamped force w K y^1.5 +
+  // nu r y^1/4 along y = x + r s (s in [-dt, dt], r < 0 opening; the rest as hat_spring) over
+  // the part where it presses, y > y* = (nu (-r) / (w K))^4/5; fp, the unclamped hat, where the
+  // whole window presses. Each side of the hat is [(dt -+ s) F1 +- F2] between its ends, F1 and
+  // F2 the force's first and second integrals in s.
   static double released_force(const LawParams& law, double r_star, double w, double nu, double x, double r,
                                double dt, double fp) {
-    const auto grown = [](double y) { return y * std::sqrt(std::sqrt(y)); };  // m^5/4
-    const double half = -0.5 * r * dt;  // m, what the overlap loses over half a step
-    const double end = x - half;        // m, at the cell's end
     const double stiff = w * force(law, r_star, 1.0);  // N/m^1.5, w K
-    if (end > 0.0 && stiff * grown(end) >= -nu * r) return fp;  // still pressing at the cell's end
-    const double start = x + half;  // m
-    const double stop = std::max(std::pow(-nu * r / stiff, 0.8), std::max(end, 0.0));  // m
-    if (stop >= start) return 0.0;
-    const double impulse = w * (potential(law, r_star, start) - potential(law, r_star, stop)) / -r -
-                           0.8 * nu * (grown(start) - grown(stop));  // N s
-    return impulse / dt;
+    const double end = x + r * dt;                      // m, at the window's end
+    if (!(stiff > 0.0) || (end > 0.0 && stiff * end * std::sqrt(std::sqrt(end)) >= -nu * r)) return fp;  // pressing there
+    const double stop = std::pow(-nu * r / stiff, 0.8);  // m, y*
+    const double s_stop = (stop - x) / r;  // s, where the force reaches 0
+    if (s_stop <= -dt) return 0.0;
+    const auto first = [&](double s) {  // N s, F1
+      const double y = std::max(x + r * s, 0.0);  // m, not below 0 by round-off
+      return (0.4 * stiff * y * y * std::sqrt(y) + 0.8 * nu * r * y * std::sqrt(std::sqrt(y))) / r;
+    };
+    const auto second = [&](double s) {  // N s^2, F2
+      const double y = std::max(x + r * s, 0.0);  // m, not below 0 by round-off
+      return (stiff * y * y * y * std::sqrt(y) / 8.75 + 16.0 / 45.0 * nu * r * y * y * std::sqrt(std::sqrt(y))) / (r * r);
+    };
+    const auto side = [&](double a, double b, double sign) {  // N s^2, the hat weight dt + sign s
+      if (!(b > a)) return 0.0;
+      return (dt + sign * b) * first(b) - sign * second(b) - (dt + sign * a) * first(a) + sign * second(a);
+    };
+    return (side(-dt, std::min(0.0, s_stop), 1.0) + side(0.0, std::min(dt, s_stop), -1.0)) / (dt * dt);
   }
   // N/m, the tangent stiffnesses at the largest overlap of an impact of mass m (kg) at v (m/s)
   // on a contact of curvature r_star (m): the stability limit takes these.
