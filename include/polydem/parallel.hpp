@@ -61,10 +61,10 @@ struct TeamCut {
 };
 
 // This thread's share [first, last) of the items 0 .. n - 1 (bodies) under `cut`: the static
-// schedule's (libgomp's) without a cut for this team.
+// schedule's (libgomp's) without a cut for this team and these n.
 inline std::pair<std::size_t, std::size_t> team_share(std::size_t n, TeamCut cut) {
   const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
-  if (cut.threads == int(threads)) return {std::min<std::size_t>(n, cut.at[t]), std::min<std::size_t>(n, cut.at[t + 1])};
+  if (cut.threads == int(threads) && cut.at[threads] == n) return {cut.at[t], cut.at[t + 1]};
   const std::size_t q = n / threads, r = n % threads;
   const std::size_t first = t * q + std::min(t, r);
   return {first, first + q + (t < r)};

@@ -99,11 +99,12 @@ struct DriverPartner {
 // the next rebuilds (candidate_memory.hpp).
 constexpr double kSearchExtra = 1.0;
 
-// A sphere's passes (closing and opening kicks, drift, the rebuild check) and a sphere-wall pair,
-// in sphere pairs apart (split_pairs' unit). Not calibrated yet: README's figures suggest ~2.4 and
-// ~4.9 (~280 instructions a body-step, ~580 a wall pair-step, ~120 a unit of the walk's weight).
-constexpr double kPassWeight = 1.0;
-constexpr double kWallPairWeight = 1.0;
+// A body's passes (closing and opening kicks, drift, the rebuild check; a polyhedron's pose) and a
+// sphere-wall pair, in body pairs apart (split_pairs' unit: a sphere pair out of reach; a polyhedron
+// pair): callgrind --separate-threads on the beds (README, "One body cut").
+constexpr double kSpherePassWeight = 1.4;
+constexpr double kWallPairWeight = 7.4;
+constexpr double kPolyhedronPassWeight = 2.9;
 
 // m, the farthest core vertex from the centre of mass, unscaled.
 double core_reach(const Shape& s) {
@@ -346,19 +347,18 @@ void ContactEngine::mark_drivers(const LocalBodies& bodies, const Drivers& drive
   driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
 }
 
-// A moving driver can reach bodies the lists did not pair it with: rebuild once its surface
-// may have moved half the skin where bodies are (translation, plus turning times the lever).
-// Spheres: each body's passes and wall pairs, in body pairs apart (split_pairs' unit), so the
-// body cut of the walk evens out the walk and the wall pairs (no barrier between them). The
-// passes' work is shared by that cut too. Polyhedra: the walk alone (their wall pairs are shared
-// as they come).
+// Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
+// body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
+// between them). Polyhedra's wall pairs are shared as they come.
 void ContactEngine::weigh_bodies() {
-  if (!spheres_only_) return release(direct_.body_weight);
   direct_.body_weight.resize(direct_.sums.size());
   for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
-    direct_.body_weight[b] = float(kPassWeight + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]));
+    direct_.body_weight[b] = spheres_only_ ? float(kSpherePassWeight + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
+                                           : float(kPolyhedronPassWeight);
 }
 
+// A moving driver can reach bodies the lists did not pair it with: rebuild once its surface
+// may have moved half the skin where bodies are (translation, plus turning times the lever).
 bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   for (std::size_t j = 0; j < drivers_at_build_.size(); ++j) {
     const DriverState& now = drivers[j];

@@ -4,9 +4,11 @@
 // sum of its pairs', and a block flagged where a pair's contact ended.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 
 #include "contact/pair_loop.hpp"
@@ -26,6 +28,20 @@ std::vector<BodyPair> random_pairs(std::mt19937_64& rng, std::uint32_t n_bodies,
   std::sort(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   pairs.erase(std::unique(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i == b.i && a.j == b.j; }),
               pairs.end());
+  return pairs;
+}
+
+// Each body paired with its next `reach` along a chain whose ids are shuffled: ids at random in
+// space, as a random pour's (a body's pairs as i fall with its id).
+std::vector<BodyPair> shuffled_chain_pairs(std::mt19937_64& rng, std::uint32_t n_bodies, std::uint32_t reach) {
+  std::vector<std::uint32_t> id(n_bodies);
+  std::iota(id.begin(), id.end(), 0u);
+  std::shuffle(id.begin(), id.end(), rng);
+  std::vector<BodyPair> pairs;
+  for (std::uint32_t b = 0; b < n_bodies; ++b)
+    for (std::uint32_t d = 1; d <= reach && b + d < n_bodies; ++d)
+      pairs.push_back({std::min(id[b], id[b + d]), std::max(id[b], id[b + d])});
+  std::sort(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   return pairs;
 }
 
@@ -202,6 +218,17 @@ TEST_CASE("a split weighs the bodies' other work: heavy bodies at the low ids mo
   // ~5.8 pairs a body: the first quarter weighs ~30.8 a body, the rest ~6.8, half of all ~19,100:
   // reached at body ~620.
   CHECK(std::abs(double(heavy.body_cut[1]) - 620.0) <= 0.03 * n_bodies);
+}
+
+TEST_CASE("ids at random in space: the cut halves the bodies, each foreign result weighed where it is added", "[pair_split]") {
+  std::mt19937_64 rng(19);
+  const std::uint32_t n_bodies = 3000;
+  PairSplit split;
+  split_pairs(shuffled_chain_pairs(rng, n_bodies, 3), {}, {}, n_bodies, 2, split);
+  // Half the bodies each: half the internal pairs each, and the crossing pairs' results added half
+  // in the first chunk's walk (their i), half at the start of the second (their j). Weighed in the
+  // first chunk alone, the cut fell at body ~1,320 (0.44 n).
+  CHECK(std::abs(double(split.body_cut[1]) - 0.5 * n_bodies) <= 0.03 * n_bodies);
 }
 
 TEST_CASE("a team's shares of the bodies take each body once, by the cut made for its size", "[pair_split]") {
