@@ -8,7 +8,11 @@
 // stage or step) they share the items among its threads and end at a barrier, with no thread
 // wake-up; called outside any team they open their own region. Every thread of a team must
 // reach the same loops in the same order (the counts are the same on every thread).
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 #include <omp.h>
 
@@ -45,6 +49,35 @@ void parallel_for_dynamic(std::size_t n, const Fn& fn) {
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t k = 0; k < n; ++k) fn(k);
   });
+}
+
+// Where a team cuts the bodies 0 .. n - 1 among its threads: thread t takes [at[t], at[t + 1]).
+// The step's passes over bodies and its pair loops take the same cut (pair_split.hpp), so a body's
+// state stays in the cache of the core that writes it. Made for a team of `threads`: another team
+// (the thread governor changed it) takes the static shares.
+struct TeamCut {
+  const std::uint32_t* at = nullptr;  // threads + 1 bodies, increasing, 0 first
+  int threads = 0;
+};
+
+// This thread's share [first, last) of the items 0 .. n - 1 (bodies) under `cut`: the static
+// schedule's (libgomp's) without a cut for this team and these n.
+inline std::pair<std::size_t, std::size_t> team_share(std::size_t n, TeamCut cut) {
+  const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
+  if (cut.threads == int(threads) && cut.at[threads] == n) return {cut.at[t], cut.at[t + 1]};
+  const std::size_t q = n / threads, r = n % threads;
+  const std::size_t first = t * q + std::min(t, r);
+  return {first, first + q + (t < r)};
+}
+
+// The same for items that are bodies `ids` (increasing): the share of the ids in this thread's bodies.
+template <class Id>
+std::pair<std::size_t, std::size_t> team_share(const std::vector<Id>& ids, TeamCut cut) {
+  const int threads = omp_get_num_threads();
+  if (cut.threads != threads) return team_share(ids.size(), cut);
+  const int t = omp_get_thread_num();
+  const auto first = std::lower_bound(ids.begin(), ids.end(), Id(cut.at[t]));
+  return {std::size_t(first - ids.begin()), std::size_t(std::lower_bound(first, ids.end(), Id(cut.at[t + 1])) - ids.begin())};
 }
 
 }  // namespace polydem

@@ -99,6 +99,13 @@ struct DriverPartner {
 // the next rebuilds (candidate_memory.hpp).
 constexpr double kSearchExtra = 1.0;
 
+// A body's passes (closing and opening kicks, drift, the rebuild check; a polyhedron's pose) and a
+// sphere-wall pair, in body pairs apart (split_pairs' unit: a sphere pair out of reach; a polyhedron
+// pair): callgrind --separate-threads on the beds (README, "One body cut").
+constexpr double kSpherePassWeight = 1.4;
+constexpr double kWallPairWeight = 7.4;
+constexpr double kPolyhedronPassWeight = 2.9;
+
 // m, the farthest core vertex from the centre of mass, unscaled.
 double core_reach(const Shape& s) {
   double r = 0.0;
@@ -200,8 +207,9 @@ void ContactEngine::pose(const LocalBodies& bodies) {
                           posed_.data()};
   in_team(n >= kParallelMinItems, [&] {
     const PoseArrays a = arrays;
-#pragma omp for schedule(static)
-    for (std::size_t e = 0; e < n; ++e) pose_body(a, a.listed[e]);
+    const auto [first, last] = team_share(listed_, body_cut());  // the bodies this thread's walk reads most
+    for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
+#pragma omp barrier
   });
 }
 
@@ -283,6 +291,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
+  weigh_bodies();
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
   if (spheres_only_)
@@ -338,6 +347,16 @@ void ContactEngine::mark_drivers(const LocalBodies& bodies, const Drivers& drive
   driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
 }
 
+// Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
+// body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
+// between them). Polyhedra's wall pairs are shared as they come.
+void ContactEngine::weigh_bodies() {
+  direct_.body_weight.resize(direct_.sums.size());
+  for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
+    direct_.body_weight[b] = spheres_only_ ? float(kSpherePassWeight + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
+                                           : float(kPolyhedronPassWeight);
+}
+
 // A moving driver can reach bodies the lists did not pair it with: rebuild once its surface
 // may have moved half the skin where bodies are (translation, plus turning times the lever).
 bool ContactEngine::drivers_moved(const Drivers& drivers) const {
@@ -364,10 +383,10 @@ void ContactEngine::measure_motion(const LocalBodies& bodies) {
   // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
   if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
-#pragma omp for schedule(static) nowait
-    for (std::size_t b = 0; b < position.size(); ++b) posed_[b].position = world_vertices_[b] = position[b];
+    const auto [first, last] = team_share(position.size(), body_cut());
+    for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
-  trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin);
+  trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, body_cut());
 }
 
 void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {
@@ -430,7 +449,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
       // also even out the body pairs' walk, which ends without a barrier).
       if (spheres_only_)
-        even_pair_forces(driver_list_, kernel);
+        even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
       else
         all_pair_forces(driver_list_, kernel);
     });

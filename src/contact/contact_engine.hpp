@@ -99,6 +99,9 @@ class ContactEngine {
   ForceSums force_sums(const LocalBodies& bodies);
   // Every body's sum was taken by force_sums (each cleared): the next loop starts from them.
   void sums_taken() { direct_.zero = true; }
+  // The bodies' cut of the body pairs' loop (pair_split.hpp), for the step's passes over bodies:
+  // each thread then moves the bodies whose sums it made. None before the loop first ran.
+  TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }
@@ -155,6 +158,7 @@ class ContactEngine {
   void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
   void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
+  void weigh_bodies();  // direct_.body_weight, at a rebuild
   bool drivers_moved(const Drivers& drivers) const;
 
   const std::vector<Shape>& shapes_;

@@ -200,7 +200,7 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
 #pragma omp barrier
 #pragma omp single
     {  // every thread has read the old count (the barrier) before this one changes it
-      split_pairs(list.pairs, list.touching, direct.sums.size(), threads, direct.split);
+      split_pairs(list.pairs, list.touching, direct.body_weight, direct.sums.size(), threads, direct.split);
       direct.foreign.resize(direct.split.foreign_side.size());
     }
   }
@@ -243,18 +243,21 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
   });
 }
 
-// all_pair_forces for pairs of like cost (spheres and walls): each thread takes the run of
-// blocks nearest its share of the pairs, the same every step, so a pair's arrays stay in one
-// core's cache and, the list being sorted by body, mostly its body's state too (shared as they
-// came, blocks moved between the cores each step). Ends at a barrier.
+// all_pair_forces for pairs of like cost (spheres and walls) in a list sorted by body: each
+// thread takes the run of blocks nearest the pairs of its bodies in `cut` (`begin`, per body + 1:
+// its first pair), the bodies its passes move, or without a cut for this team its share of the
+// pairs; the same every step, so a pair's arrays and its body's state stay in one core's cache
+// (shared as they came, blocks moved between the cores each step). Ends at a barrier.
 template <class Kernel>
-void even_pair_forces(PairList& list, const Kernel& kernel) {
+void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t* begin = nullptr, TeamCut cut = {}) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
   assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
   in_team(blocks >= 2, [&] {
     PairScratch scratch;
     const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
-    auto first_block = [&](std::size_t u) { return (u * n / threads + kPairBlock / 2) / kPairBlock; };
+    const bool by_bodies = begin && cut.threads == int(threads);
+    auto first_pair = [&](std::size_t u) { return by_bodies ? std::size_t(begin[cut.at[u]]) : u * n / threads; };
+    auto first_block = [&](std::size_t u) { return (first_pair(u) + kPairBlock / 2) / kPairBlock; };
     for (std::size_t b = first_block(t), end = t + 1 == threads ? blocks : first_block(t + 1); b < end; ++b)
       pair_loop_detail::block_forces(list, kernel, b, scratch);
 #pragma omp barrier

@@ -42,34 +42,65 @@ std::vector<int> home_chunks(const std::vector<BodyPair>& pairs, std::size_t n_b
   return home;
 }
 
-// Per block, the pairs its chunk computes in its walk and the foreign ones it adds, weighed.
-std::vector<double> walk_weights(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
-                                 const std::vector<std::uint32_t>& cut, const std::vector<int>& home) {
+// Per body, its last pair (the chunk holding it makes the body's sum), or 0: no pair.
+std::vector<std::uint32_t> last_pairs(const std::vector<BodyPair>& pairs, std::size_t n_bodies) {
+  std::vector<std::uint32_t> last(n_bodies, 0);
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) last[pairs[k].i] = last[pairs[k].j] = k;
+  return last;
+}
+
+// Per block, the bodies' other work (`body_weight`), each body's in the block of its first pair
+// as i (or of the next body's), where the body cut puts it.
+std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::vector<float>& body_weight) {
   std::vector<double> weight((pairs.size() + kPairBlock - 1) / kPairBlock, 0.0);
+  if (weight.empty()) return weight;
+  std::size_t k = 0;
+  for (std::uint32_t b = 0; b < body_weight.size(); ++b) {
+    while (k < pairs.size() && pairs[k].i < b) ++k;
+    weight[std::min(k, pairs.size() - 1) / kPairBlock] += body_weight[b];
+  }
+  return weight;
+}
+
+// Per block, the pairs its chunk computes in its walk and the foreign results its chunk adds, weighed,
+// on top of `weight` (the bodies'): a side homed in the pair's chunk is added in the walk (the
+// pair's block), the other at the start of its body's home chunk (the block of its last pair).
+std::vector<double> walk_weights(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
+                                 const std::vector<std::uint32_t>& cut, const std::vector<int>& home,
+                                 const std::vector<std::uint32_t>& last, std::vector<double> weight) {
   int c = 0;
   for (std::uint32_t k = 0; k < pairs.size(); ++k) {
     while (k >= cut[c + 1]) ++c;
-    const bool internal = home[pairs[k].i] == c && home[pairs[k].j] == c;
-    weight[k / kPairBlock] += internal ? pair_weight(touching, k) : kForeignWeight;
+    const BodyPair p = pairs[k];
+    if (home[p.i] == c && home[p.j] == c) {
+      weight[k / kPairBlock] += pair_weight(touching, k);
+      continue;
+    }
+    for (std::uint32_t b : {p.i, p.j}) weight[(home[b] == c ? k : last[b]) / kPairBlock] += kForeignWeight;
   }
   return weight;
 }
 
 }  // namespace
 
-void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching, std::size_t n_bodies,
-                 int threads, PairSplit& split) {
+void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
+                 const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split) {
   const std::size_t n = pairs.size();
   split.threads = threads;
-  std::vector<double> weight((n + kPairBlock - 1) / kPairBlock, 0.0);
+  const std::vector<double> bodies = body_weights(pairs, body_weight);
+  std::vector<double> weight = bodies;
   for (std::uint32_t k = 0; k < n; ++k) weight[k / kPairBlock] += pair_weight(touching, k);
   std::vector<int> home;
+  const std::vector<std::uint32_t> last = threads == 1 ? std::vector<std::uint32_t>{} : last_pairs(pairs, n_bodies);
   for (int round = 0; round < 3; ++round) {  // the foreign pairs move with the cut: a few rounds settle it
     cut_by_weight(weight, threads, n, split.cut);
     home = home_chunks(pairs, n_bodies, split.cut);
     if (threads == 1) break;
-    weight = walk_weights(pairs, touching, split.cut, home);
+    weight = walk_weights(pairs, touching, split.cut, home, last, bodies);
   }
+  split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
+  for (int t = 0; t < threads; ++t)  // no pairs: even shares
+    split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
   // The foreign pairs, with the side (if any) homed in their own chunk.
   split.foreign.clear();
   split.foreign_side.clear();

@@ -27,6 +27,7 @@ struct ForeignResult {
 struct PairSplit {
   int threads = 0;                           // the team it was cut for; 0: to be cut
   std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of kPairBlock but the last
+  std::vector<std::uint32_t> body_cut;       // threads + 1 bodies: chunk t's pairs' bodies i from body_cut[t] (TeamCut)
   std::vector<std::uint32_t> foreign;        // foreign pairs, increasing, then the list size (a sentinel)
   std::vector<std::uint32_t> foreign_begin;  // per chunk + 1: its foreign pairs' ordinals
   std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j
@@ -38,13 +39,17 @@ struct PairSplit {
 
 // Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the work
 // each chunk does in its walk: its internal pairs, each weighed by its contacts at the last step
-// (`touching`, per pair, or empty: none), and the foreign ones' adds (computed before, shared out).
-void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching, std::size_t n_bodies,
-                 int threads, PairSplit& split);
+// (`touching`, per pair, or empty: none), and the foreign ones' adds (computed before, shared out),
+// plus the work of the bodies it takes in the step's other passes (`body_weight`, per body in
+// pairs apart, or empty: none). Thread t takes the bodies from the body i of chunk t's first pair
+// (body_cut): each body with pairs as i is in the share of the chunk of its last one.
+void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
+                 const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split);
 
 // The body pairs' sums (per body of the contact stage), made by their loop every step.
 struct DirectSums {
   std::vector<BodySum> sums;
+  std::vector<float> body_weight;  // per body, its other passes' work in pairs apart (split_pairs), or empty
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`
   // Every sum is +0 (reset, or each taken and cleared by ForceSums since the loop): the first

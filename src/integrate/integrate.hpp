@@ -107,20 +107,20 @@ inline AlikeArrays alike_arrays_of(Bodies& b, std::size_t like) {
 template <Rotor kRotor>
 using RotorPath = std::integral_constant<Rotor, kRotor>;
 
-// Runs body(arrays, i, RotorPath<kRotor>) over the bodies of `ids` (one rotor group), each
-// thread of the team on its share with the arrays' addresses in its own registers; ends at a
-// barrier when `wait` (the same on every thread).
-// kInOrder: ids[k] == k, so k is the body (the same share of bodies to each thread).
+// Runs body(arrays, i, RotorPath<kRotor>) over the bodies of `ids` (one rotor group, increasing),
+// each thread of the team on its share of `cut` with the arrays' addresses in its own registers;
+// ends at a barrier when `wait` (the same on every thread).
+// kInOrder: ids[k] == k, so k is the body.
 template <Rotor kRotor, bool kInOrder, class Arrays, class Body>
-void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const Body& body, bool wait) {
+void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const Body& body, bool wait, TeamCut cut) {
   const std::size_t n = ids.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   in_team(n >= kParallelMinItems, [&] {
     const Arrays a = arrays;
     const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = 0; k < n; ++k) each(a, kInOrder ? k : id[k], RotorPath<kRotor>{});
+    const auto [first, last] = kInOrder ? team_share(n, cut) : team_share(ids, cut);
+    for (std::size_t k = first; k < last; ++k) each(a, kInOrder ? k : id[k], RotorPath<kRotor>{});
     if (wait) {
 #pragma omp barrier
     }
@@ -129,19 +129,20 @@ void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const
 
 // body over the three rotor groups: they hold different bodies and body(i) touches body i's
 // state only, so only the last group that has bodies ends at a barrier (a pass over a mixed
-// scene meets once, not once per group). Equal spheres read one mass and inertia.
+// scene meets once, not once per group). Equal spheres read one mass and inertia. Each thread
+// takes the bodies of its share of `cut` (the contact stage's, or none: static shares).
 template <class Body>
-void over_rotor_groups(Bodies& b, const RotorGroups& groups, const Body& body) {
+void over_rotor_groups(Bodies& b, const RotorGroups& groups, const Body& body, TeamCut cut = {}) {
   const bool isotropic = !groups.isotropic.empty(), asymmetric = !groups.asymmetric.empty();
   const bool sphere_wait = !isotropic && !asymmetric;
   if (groups.spheres_alike && groups.spheres_in_order)
-    over_group<Rotor::sphere, true>(alike_arrays_of(b, 0), groups.spheres, body, sphere_wait);
+    over_group<Rotor::sphere, true>(alike_arrays_of(b, 0), groups.spheres, body, sphere_wait, cut);
   else if (groups.spheres_alike)  // a rank's owned spheres
-    over_group<Rotor::sphere, false>(alike_arrays_of(b, groups.spheres[0]), groups.spheres, body, sphere_wait);
+    over_group<Rotor::sphere, false>(alike_arrays_of(b, groups.spheres[0]), groups.spheres, body, sphere_wait, cut);
   else
-    over_group<Rotor::sphere, false>(arrays_of(b), groups.spheres, body, sphere_wait);
-  over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body, !asymmetric);
-  over_group<Rotor::asymmetric, false>(arrays_of(b), groups.asymmetric, body, true);
+    over_group<Rotor::sphere, false>(arrays_of(b), groups.spheres, body, sphere_wait, cut);
+  over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body, !asymmetric, cut);
+  over_group<Rotor::asymmetric, false>(arrays_of(b), groups.asymmetric, body, true, cut);
 }
 
 namespace integrate_detail {
@@ -237,12 +238,12 @@ template <Rotor kRotor, class Arrays>
 // kick(b, h, groups) with before(i) run on each body just before its kick (a step's closing
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
 template <class Before>
-void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before) {
+void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before, TeamCut cut = {}) {
   auto one = [h, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
   };
-  over_rotor_groups(b, groups, one);
+  over_rotor_groups(b, groups, one, cut);
 }
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).
@@ -260,21 +261,21 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups);
 // A step's start in one pass over the bodies: kick(h), drift(dt), predict_end_velocities(h),
 // then force = m gravity and torque = 0 (the new step's forces start from gravity, m/s^2).
 // Each body's arithmetic is that of the separate calls: the same bits, one loop instead of four.
-void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity);
+void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity, TeamCut cut = {});
 
 // The last step's closing pass (kick_after(b, h, groups, before)) and start_step in one pass
 // over the bodies, body by body: each body's arithmetic is theirs (the same bits), its arrays
 // read and written once, not twice. Nothing may read the state between the two (Simulation::step).
 template <class Before>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before) {
+                          const Before& before, TeamCut cut = {}) {
   auto one = [h, dt, gravity, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     constexpr Rotor kRotor = decltype(rotor)::value;
     integrate_detail::kick_body_twice<kRotor>(a, i, h);  // the closing kick and start_body's
     integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
   };
-  over_rotor_groups(b, groups, one);
+  over_rotor_groups(b, groups, one, cut);
 }
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).

@@ -56,7 +56,7 @@ bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector
 }
 
 void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>& q,
-                             const std::vector<double>& bounding_radius, double skin) {
+                             const std::vector<double>& bounding_radius, double skin, TeamCut cut) {
   const std::size_t n = x.size();  // q and bounding_radius: as many (needs_rebuild checks)
   if (rebuild_count == 0 || x_built.size() != n) {
     exceeded_.store(true, std::memory_order_relaxed);
@@ -65,10 +65,10 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   const double limit = 0.5 * skin;  // m, each body may use half the skin
   bool exceeded = false;            // by this thread's bodies
   if (q_built.empty()) {  // points: radius 0, displacement_bound is |dx|, and no bound is kept
-    exceeded = points_exceed(x, limit);
+    exceeded = points_exceed(x, limit, cut);
   } else {
-#pragma omp for schedule(static) nowait
-    for (std::size_t i = 0; i < n; ++i) {
+    const auto [first, last] = team_share(n, cut);
+    for (std::size_t i = first; i < last; ++i) {
       const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
       displacement_[i] = d;
       // Written as !(d <= limit) so a NaN state also asks for a rebuild.
@@ -81,10 +81,10 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
 }
 
 // Not inlined: measure with both loops no longer inlines displacement_bound (+12% of its cost, cubes).
-[[gnu::noinline]] bool RebuildTrigger::points_exceed(const std::vector<Vec3>& x, double limit) const {
+[[gnu::noinline]] bool RebuildTrigger::points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const {
   bool exceeded = false;
-#pragma omp for schedule(static) nowait
-  for (std::size_t i = 0; i < x.size(); ++i)
+  const auto [first, last] = team_share(x.size(), cut);
+  for (std::size_t i = first; i < last; ++i)
     if (!((x[i] - x_built[i]).norm() <= limit)) exceeded = true;  // NaN too
   return exceeded;
 }

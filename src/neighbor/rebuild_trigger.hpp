@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "polydem/math.hpp"
+#include "polydem/parallel.hpp"
 
 namespace polydem {
 
@@ -33,8 +34,9 @@ class RebuildTrigger {
   // `measure` keeps each body's bound (every thread of the team calls it), then, after the
   // region, `take_exceeded` answers as needs_rebuild would and clears the answer. Inside a team
   // the threads leave `measure` without meeting: the region's end is the barrier before the answer.
+  // Each thread measures its bodies of `cut` (those its passes moved).
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
-               double skin);
+               double skin, TeamCut cut = {});
   bool take_exceeded();
   // measure's bounds again for the bodies `some` alone, the answer unchanged (a rank's ghosts:
   // their owners answer for them); nothing for points, which keep no bound.
@@ -49,7 +51,7 @@ class RebuildTrigger {
 
  private:
   // measure's loop for points: |x - x_built| alone.
-  bool points_exceed(const std::vector<Vec3>& x, double limit) const;
+  bool points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const;
 
   std::vector<Vec3> x_built;  // m
   std::vector<Quat> q_built;  // empty when mark_built was told the bodies are points

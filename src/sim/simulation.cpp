@@ -206,13 +206,15 @@ void Simulation::step(bool leave_kick_open) {
   // reads the new owners).
   const RotorGroups& moved = one_process || !contacts ? rotors_ : ranks_->owned_rotors();
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
+  // Each thread moves the bodies whose pairs it walks (one process: the contact stage's cut).
+  const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
   in_team(team, [&] {
     if (close_last && one_process)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)));
+      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)), cut);
     else if (close_last)
       ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
     else
-      start_step(bodies, 0.5 * dt_, dt_, moved, gravity_);  // kick, drift, predict, gravity
+      start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
   });
   if (close_last) sums_taken();
@@ -237,7 +239,7 @@ void Simulation::step(bool leave_kick_open) {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       engine_->forces(local, drivers, dt_, !stale, false);
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local));
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local), engine_->body_cut());
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(bodies, 0.5 * dt_);
     } else {
@@ -257,7 +259,7 @@ void Simulation::close_step() {
     if (ranks_)
       ranks_->kick_closing(bodies, 0.5 * dt_);
     else
-      kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies)));
+      kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies)), engine_->body_cut());
   });
   sums_taken();
 }

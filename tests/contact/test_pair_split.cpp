@@ -4,9 +4,11 @@
 // sum of its pairs', and a block flagged where a pair's contact ended.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 
 #include "contact/pair_loop.hpp"
@@ -26,6 +28,20 @@ std::vector<BodyPair> random_pairs(std::mt19937_64& rng, std::uint32_t n_bodies,
   std::sort(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   pairs.erase(std::unique(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i == b.i && a.j == b.j; }),
               pairs.end());
+  return pairs;
+}
+
+// Each body paired with its next `reach` along a chain whose ids are shuffled: ids at random in
+// space, as a random pour's (a body's pairs as i fall with its id).
+std::vector<BodyPair> shuffled_chain_pairs(std::mt19937_64& rng, std::uint32_t n_bodies, std::uint32_t reach) {
+  std::vector<std::uint32_t> id(n_bodies);
+  std::iota(id.begin(), id.end(), 0u);
+  std::shuffle(id.begin(), id.end(), rng);
+  std::vector<BodyPair> pairs;
+  for (std::uint32_t b = 0; b < n_bodies; ++b)
+    for (std::uint32_t d = 1; d <= reach && b + d < n_bodies; ++d)
+      pairs.push_back({std::min(id[b], id[b + d]), std::max(id[b], id[b + d])});
+  std::sort(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   return pairs;
 }
 
@@ -124,7 +140,7 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
   const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
   for (int threads : {1, 2, 3, 5}) {
     PairSplit split;
-    split_pairs(pairs, {}, n_bodies, threads, split);
+    split_pairs(pairs, {}, {}, n_bodies, threads, split);
     CAPTURE(threads);
     REQUIRE(split.cut.size() == std::size_t(threads) + 1);
     CHECK(split.cut.front() == 0);
@@ -156,10 +172,90 @@ TEST_CASE("a split gives the chunk of the touching pairs fewer pairs", "[pair_sp
   std::vector<std::uint16_t> touching(pairs.size(), 0);
   for (std::size_t k = 0; k < pairs.size() / 4; ++k) touching[k] = 2;  // a pile at the low ids: its pairs cost more
   PairSplit plain, weighed;
-  split_pairs(pairs, {}, n_bodies, 2, plain);
-  split_pairs(pairs, touching, n_bodies, 2, weighed);
+  split_pairs(pairs, {}, {}, n_bodies, 2, plain);
+  split_pairs(pairs, touching, {}, n_bodies, 2, weighed);
   const double middle = 0.5 * double(pairs.size());
   CHECK(std::abs(double(plain.cut[1]) - middle) <= double(kPairBlock) + 0.05 * middle);  // pairs alike: halves
   CHECK(double(weighed.cut[1]) < 0.75 * middle);  // the pile's chunk ends early
   CHECK(weighed.cut[1] > pairs.size() / 4 / 2);   // yet takes more than the pile's first half
+}
+
+TEST_CASE("a split cuts the bodies where it cuts the pairs: each body with the chunk of its last pair as i", "[pair_split]") {
+  std::mt19937_64 rng(13);
+  const std::uint32_t n_bodies = 3000;
+  const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
+  for (int threads : {1, 2, 3, 5}) {
+    PairSplit split;
+    split_pairs(pairs, {}, {}, n_bodies, threads, split);
+    CAPTURE(threads);
+    const std::vector<std::uint32_t>& at = split.body_cut;
+    REQUIRE(at.size() == std::size_t(threads) + 1);
+    CHECK(at.front() == 0);
+    CHECK(at.back() == n_bodies);
+    for (int t = 0; t < threads; ++t) CHECK(at[t] <= at[t + 1]);
+    std::vector<int> last(n_bodies, -1);  // the chunk of each body's last pair as i
+    int c = 0, wrong_share = 0;
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+      while (k >= split.cut[c + 1]) ++c;
+      last[pairs[k].i] = c;
+    }
+    for (std::uint32_t b = 0; b < n_bodies; ++b)
+      if (last[b] >= 0) wrong_share += b < at[last[b]] || b >= at[last[b] + 1];
+    CHECK(wrong_share == 0);
+  }
+}
+
+TEST_CASE("a split weighs the bodies' other work: heavy bodies at the low ids move the cut down", "[pair_split]") {
+  std::mt19937_64 rng(17);
+  const std::uint32_t n_bodies = 3000;
+  const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);  // ~6 pairs a body
+  std::vector<float> weight(n_bodies, 1.0f);
+  PairSplit light, heavy;
+  split_pairs(pairs, {}, weight, n_bodies, 2, light);
+  for (std::uint32_t b = 0; b < n_bodies / 4; ++b) weight[b] = 25.0f;  // the first quarter: 4x a body's pairs and pass
+  split_pairs(pairs, {}, weight, n_bodies, 2, heavy);
+  CHECK(std::abs(double(light.body_cut[1]) - 0.5 * n_bodies) <= 0.05 * n_bodies);  // alike: halves
+  // ~5.8 pairs a body: the first quarter weighs ~30.8 a body, the rest ~6.8, half of all ~19,100:
+  // reached at body ~620.
+  CHECK(std::abs(double(heavy.body_cut[1]) - 620.0) <= 0.03 * n_bodies);
+}
+
+TEST_CASE("ids at random in space: the cut halves the bodies, each foreign result weighed where it is added", "[pair_split]") {
+  std::mt19937_64 rng(19);
+  const std::uint32_t n_bodies = 3000;
+  PairSplit split;
+  split_pairs(shuffled_chain_pairs(rng, n_bodies, 3), {}, {}, n_bodies, 2, split);
+  // Half the bodies each: half the internal pairs each, and the crossing pairs' results added half
+  // in the first chunk's walk (their i), half at the start of the second (their j). Weighed in the
+  // first chunk alone, the cut fell at body ~1,320 (0.44 n).
+  CHECK(std::abs(double(split.body_cut[1]) - 0.5 * n_bodies) <= 0.03 * n_bodies);
+}
+
+TEST_CASE("a team's shares of the bodies take each body once, by the cut made for its size", "[pair_split]") {
+  const std::vector<std::uint32_t> at = {0, 10, 10, 700, 1000};  // four threads, one with no body
+  std::vector<std::size_t> ids;  // every third body
+  for (std::size_t b = 0; b < 1000; b += 3) ids.push_back(b);
+  for (int threads : {4, 3}) {  // the cut's team, and another (static shares)
+    std::vector<int> taken(1000, 0), owner(1000, -1), taken_ids(ids.size(), 0);
+#pragma omp parallel num_threads(threads)
+    {
+      const auto [first, last] = team_share(1000, TeamCut{at.data(), 4});
+      for (std::size_t b = first; b < last; ++b) {
+#pragma omp atomic
+        ++taken[b];
+        owner[b] = omp_get_thread_num();
+      }
+      const auto [id_first, id_last] = team_share(ids, TeamCut{at.data(), 4});
+      for (std::size_t k = id_first; k < id_last; ++k) {
+#pragma omp atomic
+        ++taken_ids[k];
+      }
+    }
+    CAPTURE(threads);
+    CHECK(std::count(taken.begin(), taken.end(), 1) == 1000);
+    CHECK(std::count(taken_ids.begin(), taken_ids.end(), 1) == long(ids.size()));
+    if (threads == 4)
+      for (int t = 0; t < 4; ++t)
+        for (std::uint32_t b = at[t]; b < at[t + 1]; ++b) CHECK(owner[b] == t);
+  }
 }
