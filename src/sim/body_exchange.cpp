@@ -23,17 +23,6 @@ struct Reader {
   void doubles(double* d, std::size_t n) { std::memcpy(d, at, n * sizeof(double)); at += n * sizeof(double); }
 };
 
-// The fields in one order for both directions: Io is a Writer (const bodies) or a Reader.
-template <class Io, class B>
-void ghost_fields(Io& io, B& b, std::size_t i) {
-  io.field(b.position[i]);
-  io.field(b.orientation[i]);
-  io.field(b.velocity[i]);
-  io.field(b.angular_velocity[i]);
-  io.field(b.velocity_end[i]);
-  io.field(b.angular_velocity_end[i]);
-}
-
 // What a motion parcel carries of a body after its orientation (when sent).
 template <class Io, class B>
 void velocity_fields(Io& io, B& b, std::size_t i) {
@@ -41,6 +30,14 @@ void velocity_fields(Io& io, B& b, std::size_t i) {
   io.field(b.angular_velocity[i]);
   io.field(b.velocity_end[i]);
   io.field(b.angular_velocity_end[i]);
+}
+
+// The fields in one order for both directions: Io is a Writer (const bodies) or a Reader.
+template <class Io, class B>
+void ghost_fields(Io& io, B& b, std::size_t i) {
+  io.field(b.position[i]);
+  io.field(b.orientation[i]);
+  velocity_fields(io, b, i);
 }
 
 template <class Io, class B>
