@@ -126,6 +126,29 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
   }
 }
 
+// The split of `pairs` for a team of `threads`, its pair cut's ends checked.
+PairSplit split_for(const std::vector<BodyPair>& pairs, std::uint32_t n_bodies, int threads) {
+  PairSplit split;
+  split_pairs(pairs, {}, {}, n_bodies, threads, split);
+  REQUIRE(split.cut.size() == std::size_t(threads) + 1);
+  CHECK(split.cut.front() == 0);
+  CHECK(split.cut.back() == pairs.size());
+  return split;
+}
+
+// The chunk of each body's last pair, as i only or as either side; -1 for a body in no pair.
+std::vector<int> last_chunk(const std::vector<BodyPair>& pairs, const PairSplit& split, std::uint32_t n_bodies,
+                            bool either_side) {
+  std::vector<int> last(n_bodies, -1);
+  int c = 0;
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+    while (k >= split.cut[c + 1]) ++c;
+    last[pairs[k].i] = c;
+    if (either_side) last[pairs[k].j] = c;
+  }
+  return last;
+}
+
 }  // namespace
 
 TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pair_split]") {
@@ -139,12 +162,8 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
   const std::uint32_t n_bodies = 3000;
   const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
   for (int threads : {1, 2, 3, 5}) {
-    PairSplit split;
-    split_pairs(pairs, {}, {}, n_bodies, threads, split);
     CAPTURE(threads);
-    REQUIRE(split.cut.size() == std::size_t(threads) + 1);
-    CHECK(split.cut.front() == 0);
-    CHECK(split.cut.back() == pairs.size());
+    const PairSplit split = split_for(pairs, n_bodies, threads);
     for (int t = 1; t < threads; ++t) CHECK((split.cut[t] % kPairBlock == 0 || split.cut[t] == pairs.size()));
     std::vector<int> home(n_bodies, -1);
     for (int t = 0; t < threads; ++t)
@@ -152,12 +171,8 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
         CHECK(home[split.homes[h]] == -1);  // one home a body
         home[split.homes[h]] = t;
       }
-    std::vector<int> last(n_bodies, -1);  // the chunk of each body's last pair
-    int c = 0, wrong_home = 0;
-    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
-      while (k >= split.cut[c + 1]) ++c;
-      last[pairs[k].i] = last[pairs[k].j] = c;
-    }
+    const std::vector<int> last = last_chunk(pairs, split, n_bodies, true);
+    int wrong_home = 0;
     for (std::uint32_t b = 0; b < n_bodies; ++b) wrong_home += home[b] != last[b];
     CHECK(wrong_home == 0);
     // Ids that follow space: only a boundary layer of pairs is foreign.
@@ -185,20 +200,15 @@ TEST_CASE("a split cuts the bodies where it cuts the pairs: each body with the c
   const std::uint32_t n_bodies = 3000;
   const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
   for (int threads : {1, 2, 3, 5}) {
-    PairSplit split;
-    split_pairs(pairs, {}, {}, n_bodies, threads, split);
     CAPTURE(threads);
+    const PairSplit split = split_for(pairs, n_bodies, threads);
     const std::vector<std::uint32_t>& at = split.body_cut;
     REQUIRE(at.size() == std::size_t(threads) + 1);
     CHECK(at.front() == 0);
     CHECK(at.back() == n_bodies);
     for (int t = 0; t < threads; ++t) CHECK(at[t] <= at[t + 1]);
-    std::vector<int> last(n_bodies, -1);  // the chunk of each body's last pair as i
-    int c = 0, wrong_share = 0;
-    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
-      while (k >= split.cut[c + 1]) ++c;
-      last[pairs[k].i] = c;
-    }
+    const std::vector<int> last = last_chunk(pairs, split, n_bodies, false);
+    int wrong_share = 0;
     for (std::uint32_t b = 0; b < n_bodies; ++b)
       if (last[b] >= 0) wrong_share += b < at[last[b]] || b >= at[last[b] + 1];
     CHECK(wrong_share == 0);
