@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # Configures and builds build-asan/: clang, AddressSanitizer + UndefinedBehaviorSanitizer,
-# RelWithDebInfo, with the libFuzzer targets. Used by tools/sanitize.sh and tools/fuzz.sh.
-# usage: tools/build_asan.sh [TARGET...]   (default: everything)
+# RelWithDebInfo with line tables only (enough for the reports' stacks, a faster build). Used by
+# tools/sanitize.sh. With --fuzz: build-fuzz/, the same plus libFuzzer's coverage instrumentation
+# on every file and the fuzz_NAME targets (tools/fuzz.sh); the tests do not pay for it.
+# usage: tools/build_asan.sh [--fuzz] [TARGET...]   (default: everything)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh clang
 command -v ccache > /dev/null && export CMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}
-mkdir -p build-asan
-CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOLYDEM_SANITIZE=address,undefined \
-  -DPOLYDEM_FUZZ=ON -DPOLYDEM_TEST_TIMEOUT=900 > build-asan/cmake.log 2>&1 || { cat build-asan/cmake.log; exit 1; }
+dir=build-asan fuzz=OFF
+if [ "${1:-}" = --fuzz ]; then dir=build-fuzz fuzz=ON; shift; fi
+mkdir -p "$dir"
+CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
+  -DPOLYDEM_SANITIZE=address,undefined -DPOLYDEM_FUZZ=$fuzz -DPOLYDEM_TEST_TIMEOUT=900 > "$dir/cmake.log" 2>&1 ||
+  { cat "$dir/cmake.log"; exit 1; }
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
-cmake --build build-asan -j"$(nproc)" "${targets[@]}" > build-asan/build.log 2>&1 || { tail -50 build-asan/build.log; exit 1; }
+cmake --build "$dir" -j"$(nproc)" "${targets[@]}" > "$dir/build.log" 2>&1 || { tail -50 "$dir/build.log"; exit 1; }
