@@ -5,6 +5,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "contact/hertz_damping_table.hpp"
+
 namespace polydem {
 
 namespace {
@@ -47,9 +49,7 @@ double hertz_restitution_for_damping_ratio(double alpha) {
   return 0.0;  // never released: fully damped
 }
 
-namespace {
-
-double solve_damping_ratio(double en) {
+double solve_hertz_damping_ratio(double en) {
   double lo = 0.0, hi = 0.5;
   while (hertz_restitution_for_damping_ratio(hi) > en) {
     lo = hi;
@@ -62,19 +62,19 @@ double solve_damping_ratio(double en) {
   return 0.5 * (lo + hi);
 }
 
-}  // namespace
-
 double hertz_damping_ratio_for_restitution(double en) {
   if (!(en > 0.0 && en <= 1.0)) throw std::invalid_argument("hertz_damping_ratio_for_restitution: en not in (0, 1]");
   if (en == 1.0) return 0.0;
-  // Solved once per en: each solve integrates ~40 impacts (~0.3 s), and every law built with
-  // that en (each run, each pair kind, each test's scene) asks again.
+  const long hundredths = std::lround(en * 100.0);
+  if (hundredths >= 1 && en == static_cast<double>(hundredths) / 100.0) return kHertzDampingRatio[hundredths - 1];
+  // Other en: solved once per en (~40 impacts integrated, ~1 s), since every law built with
+  // that en (each pair kind, each test's scene) asks again.
   static std::mutex guard;
   static std::map<double, double> solved;
   const std::lock_guard<std::mutex> lock(guard);
   const auto known = solved.find(en);
   if (known != solved.end()) return known->second;
-  return solved[en] = solve_damping_ratio(en);
+  return solved[en] = solve_hertz_damping_ratio(en);
 }
 
 }  // namespace polydem

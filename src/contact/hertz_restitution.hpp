@@ -11,7 +11,12 @@ namespace polydem {
 // en for the damping ratio a >= 0 (1e-6 accurate).
 double hertz_restitution_for_damping_ratio(double alpha);
 
-// The a >= 0 that gives back en in (0, 1] (bisection on the monotone function above).
+// The a >= 0 that gives back en in (0, 1] (bisection on the monotone function above): ~2.2e9
+// instructions a solve.
+double solve_hertz_damping_ratio(double en);
+
+// solve_hertz_damping_ratio(en), bit for bit: read from kHertzDampingRatio where en is a
+// hundredth (0.01-0.99, as a scene writes it), else solved once per en and kept.
 double hertz_damping_ratio_for_restitution(double en);
 
 }  // namespace polydem

@@ -277,9 +277,14 @@ template <class Normal, bool kLone>
 }
 }  // namespace law_detail
 
+// Whether contact_force fills ContactForce::elastic. The kernels skip it: the ledger's stored
+// energy is summed over the lists on output steps (ContactEngine::elastic), and its sqrt and pow
+// (Hertz: x^2.5, Mindlin's kt) stay in the loop though unread, as calls that may set errno.
+enum class Stored : bool { kSkip = false, kFill = true };
+
 // The parts in order: normal with damping, cohesion, tangential spring (and dashpot), rolling.
 // kLone: a contact alone in its pair, weight 1 throughout (the sphere path).
-template <class Parts, bool kLone = false>
+template <class Parts, bool kLone = false, Stored kStored = Stored::kFill>
 [[gnu::always_inline]] inline ContactForce contact_force(const LawParams& law, const ContactKinematics& k,
                                                          ContactHistory& h, double dt) {
   using Normal = typename Parts::Normal;
@@ -411,7 +416,7 @@ template <class Parts, bool kLone = false>
   out.force = out.fn * k.normal + h.ft;
   if (pushed) [[unlikely]] out.force += push_t;
   if (tangential_damping) out.force += damper;
-  out.elastic = stored_energy<Parts>(law, h, k.r_star);  // for callers of one contact: the pair kernels leave it unread (inlined: no cost)
+  if constexpr (kStored == Stored::kFill) out.elastic = stored_energy<Parts>(law, h, k.r_star);  // J, for callers of one contact
   return out;
 }
 

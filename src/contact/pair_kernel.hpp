@@ -296,7 +296,7 @@ template <class Parts, class Partner>
                         pl.r_star,
                         pl.exact_step,
                         law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k]};  // k', c' for the pair's fixed mass
-  const ContactForce f = contact_force<Parts>(law, kin, pl.scratch.found[c].state->history, lc.dt);
+  const ContactForce f = contact_force<Parts, false, Stored::kSkip>(law, kin, pl.scratch.found[c].state->history, lc.dt);
   if constexpr (Parts::rolling) add_contact(pl, c, f, motion.lever.cross(f.force) + f.moment);
   else add_contact(pl, c, f, motion.lever.cross(f.force));
 }

@@ -138,7 +138,7 @@ template <class Parts, class Sizes>
   if constexpr (Parts::Normal::kCurved) kin.r_star = sizes.r_star(ri, rj);
   kin.linear_step = sizes.linear_step(k);  // the pair's mass is fixed: k', c' once per list
   if (!list.active[s]) slot.history = ContactHistory{};
-  const ContactForce f = contact_force<Parts, true>(law, kin, slot.history, dt);
+  const ContactForce f = contact_force<Parts, true, Stored::kSkip>(law, kin, slot.history, dt);
   list.active[s] = 1;
   if (list.recording) list.records[s] = {point, f.force, f.fn};
   totals.force_i = f.force;

@@ -91,7 +91,7 @@ template <class Parts>
                         law.contact_mass ? nullptr : &sizes.steps[k & sizes.mask]};
   SlotState& state = list.touch(s);  // a driver list is sparse
   // kLone: weights 1 at both steps, as every sphere-wall contact's (no division by them: the same bits).
-  const ContactForce f = contact_force<Parts, true>(law, kin, state.history, dt);
+  const ContactForce f = contact_force<Parts, true, Stored::kSkip>(law, kin, state.history, dt);
   state.record = {point, f.force, f.fn};  // a driver list always records: the hand-over reads the point
   totals.force_i += f.force;  // from zero, as apply_law's sum: the same signed zeros
   totals.torque_i += lever.cross(f.force) + f.moment;

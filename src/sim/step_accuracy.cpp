@@ -197,8 +197,10 @@ double accuracy_fraction(double accuracy, ImpactModel model) {
   return kUnsafeFraction;
 }
 
-double auto_fraction(bool exact) {
-  return exact ? accuracy_fraction(kAutoAccuracy, ImpactModel{.exact = true}) : kAutoFraction;
+double auto_fraction(ImpactModel model) {
+  if (model.exact) return accuracy_fraction(kAutoAccuracy, ImpactModel{.exact = true});
+  if (model.hertz && !model.polyhedra) return accuracy_fraction(kAutoAccuracy, ImpactModel{.hertz = true});
+  return kAutoFraction;
 }
 
 std::string impact_error_note(double dt, double critical, ImpactModel model) {

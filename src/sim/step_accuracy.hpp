@@ -26,8 +26,10 @@ double expected_restitution_error(double fraction, ImpactModel model = {});
 constexpr double kAutoAccuracy = 1e-3;
 
 // The fraction of the critical step `dt: auto` takes: kAutoAccuracy's by the exact step's
-// sphere-wall rows where every contact takes the exact step, else kAutoFraction (sim/time_step.hpp).
-double auto_fraction(bool exact);
+// sphere-wall rows where every contact takes the exact step (0.181), by the Hertz rows for
+// spheres under a Hertz law (0.167), else kAutoFraction (sim/time_step.hpp). The oblique
+// impact's rows are left out of both, as friction's error is the tangential spring's.
+double auto_fraction(ImpactModel model);
 
 // The largest fraction of the critical step (at most kUnsafeFraction) whose expected error
 // under `model` is within `accuracy`.

@@ -144,7 +144,7 @@ TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shap
   if (given_dt)
     e.chosen = *given_dt;
   else
-    e.chosen = (accuracy ? accuracy_fraction(*accuracy, model) : auto_fraction(model.exact)) * limit.dt;
+    e.chosen = (accuracy ? accuracy_fraction(*accuracy, model) : auto_fraction(model)) * limit.dt;
   return e;
 }
 

@@ -39,8 +39,8 @@ double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& sha
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
 // heavier contacts; a single impact's restitution is then 0.1-0.25% off (tools/bench/accuracy).
-// Where every contact takes the linear law's exact step, `dt: auto` takes the step of
-// kAutoAccuracy instead, and simulation: accuracy picks another fraction (sim/step_accuracy.hpp).
+// Where every contact takes the linear law's exact step, or spheres meet under Hertz, `dt: auto`
+// takes the step of kAutoAccuracy instead, and simulation: accuracy picks another fraction (sim/step_accuracy.hpp).
 // A given step above kUnsafeFraction draws a warning, and `accuracy` never picks more.
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;
@@ -50,7 +50,7 @@ constexpr double kUnsafeFraction = 0.3;
 // contact point of any body; pairs of bodies halve it, a driver does not. Each law's normal
 // part gives its stiffness at an impact at `impact_speed` (m/s; two bodies close at twice it).
 // The step: given_dt, else the fraction of the limit whose expected restitution error is
-// within `accuracy` under `model` (accuracy_fraction), else auto_fraction(model.exact) of the limit.
+// within `accuracy` under `model` (accuracy_fraction), else auto_fraction(model) of the limit.
 TimeStepEstimate estimate_time_step(const Bodies& bodies, const std::vector<Shape>& shapes,
                                     const LawParams& particle, const LawParams* driver,
                                     std::optional<double> given_dt, double impact_speed = kMinImpactSpeed,

@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 
+#include "contact/hertz_damping_table.hpp"
 #include "contact/hertz_restitution.hpp"
 #include "contact/law.hpp"
 
@@ -108,4 +110,21 @@ TEST_CASE("hertz: elastic impact duration and overlap, and the solved en, with t
       CHECK(integrate(law, v, t / 2000).restitution == Approx(en).epsilon(0.005));
     }
   }
+}
+
+TEST_CASE("hertz: the damping ratio table holds the solve's values to the last bit", "[law][hertz]") {
+  // ~1 s a solve: the two ends of the common range; "[.hertz_damping_table]" checks every entry.
+  for (double en : {0.1, 0.9}) {
+    INFO("en " << en);
+    CHECK(hertz_damping_ratio_for_restitution(en) == solve_hertz_damping_ratio(en));
+  }
+}
+
+TEST_CASE("hertz: print and check the damping ratio table", "[.hertz_damping_table]") {
+  for (int k = 1; k <= 99; ++k) {
+    const double solved = solve_hertz_damping_ratio(k / 100.0);
+    std::printf("%a,%s", solved, k % 4 == 0 ? "\n" : " ");
+    CHECK(kHertzDampingRatio[k - 1] == solved);
+  }
+  std::printf("\n");
 }

@@ -1,7 +1,7 @@
 // The step for a target restitution error (simulation: accuracy, sim/step_accuracy.cpp): the
 // model reproduces the sphere-wall errors measured in tools/bench/accuracy/results.csv, grows
 // with the step, and inverts; `dt: auto` without it takes kAutoAccuracy's step where every
-// contact takes the exact step, else kAutoFraction.
+// contact takes the exact step, by the Hertz rows for spheres under Hertz, else kAutoFraction.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -39,10 +39,19 @@ TEST_CASE("step accuracy: with the exact step, the worst sphere-wall errors of e
 }
 
 TEST_CASE("step accuracy: dt: auto keeps 1e-3 where every contact takes the exact step, 0.1 x critical elsewhere", "[step_accuracy]") {
-  const double f = auto_fraction(true);
+  const double f = auto_fraction({.exact = true});
   CHECK(expected_restitution_error(f, kExact) == Approx(kAutoAccuracy).epsilon(1e-9));
   CHECK(f == Approx(0.18 * std::pow(0.2 / 0.18, std::log(1e-3 / 0.000978) / std::log(0.00145 / 0.000978))).epsilon(1e-9));
-  CHECK(auto_fraction(false) == kAutoFraction);
+  CHECK(auto_fraction({}) == kAutoFraction);
+  CHECK(auto_fraction({.polyhedra = true, .hertz = true}) == kAutoFraction);
+}
+
+TEST_CASE("step accuracy: dt: auto keeps 1e-3 by the Hertz rows for spheres under Hertz", "[step_accuracy]") {
+  const ImpactModel hertz{.hertz = true};
+  const double f = auto_fraction(hertz);
+  CHECK(expected_restitution_error(f, hertz) == Approx(kAutoAccuracy).epsilon(1e-9));
+  CHECK(f == Approx(0.167).margin(0.001));  // acc16's kHertz: 1e-3 between 0.165 and 0.17
+  CHECK(auto_fraction({.hertz = true, .friction = true}) == f);
 }
 
 TEST_CASE("step accuracy: error grows with the step and the fraction inverts it", "[step_accuracy]") {
@@ -103,7 +112,7 @@ TEST_CASE("step accuracy: a scene's model is the largest of its cases' and inver
     }
   }
   // Friction adds the oblique impact: above the frictionless spheres at dt: auto.
-  CHECK(expected_restitution_error(auto_fraction(true), {.exact = true, .friction = true}) > kAutoAccuracy);
+  CHECK(expected_restitution_error(auto_fraction({.exact = true}), {.exact = true, .friction = true}) > kAutoAccuracy);
 }
 
 TEST_CASE("step accuracy: the note names the error, rounded up, and the fraction", "[step_accuracy]") {

@@ -69,7 +69,7 @@ struct ContactForce {
   Vec3 moment;        // N m, rolling resistance moment on i (j gets the opposite)
   double fn;          // N, normal force (positive repulsive)
   double dissipated;  // J, dissipated this step by the dashpots, cohesion, sliding and rolling slip
-  double elastic;     // J, stored in the normal, cohesion, tangential and rolling springs
+  double elastic;     // J, stored in the normal, cohesion, tangential and rolling springs (0 in the kernels: Stored::kSkip)
   double patch = 0.0; // J, added to the springs this step by the change of the patch weight
   double sliding = 0.0;  // J, the Coulomb slip's share of `dissipated` (tangential springs let go included)
   double rolling = 0.0;  // J, the rolling slip's share of `dissipated` (rolling springs let go included)
