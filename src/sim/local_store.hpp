@@ -3,8 +3,8 @@
 // ghosts of bodies owned elsewhere, in increasing global id (contact/local_bodies.hpp: why the
 // order gives the bits of one process). A ghost carries only what contacts read: pose,
 // velocities, shape, scale, mass and its global id. The set changes only at list rebuilds;
-// the state is refreshed every step from the global arrays, where the ghosts' owners' parcels
-// land (sim/ghost_plan.hpp).
+// the owned bodies' state is written by the step's opening pass (write_through) or refreshed
+// from the global arrays, the ghosts' where their owners' parcels land (sim/ghost_plan.hpp).
 #include <cstdint>
 #include <vector>
 

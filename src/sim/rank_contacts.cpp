@@ -181,8 +181,8 @@ void RankContacts::sums_taken() {
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its
-// owner. The store is refreshed while the ghosts travel (theirs then a step old), and each
-// ghost written into it too when it lands.
+// owner. The store is refreshed while the ghosts travel (theirs then a step old) unless the
+// opening pass wrote it, and each ghost written into it too when it lands.
 void RankContacts::exchange_ghosts(Bodies& bodies, double dt) {
   const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
   for (Parcel& p : out_) pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());
