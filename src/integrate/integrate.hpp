@@ -263,17 +263,26 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups);
 // Each body's arithmetic is that of the separate calls: the same bits, one loop instead of four.
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity, TeamCut cut = {});
 
+// No hook after a body's pass.
+struct NoAfter {
+  template <class Arrays, class Path>
+  void operator()(const Arrays&, std::size_t, Path) const {}
+};
+
 // The last step's closing pass (kick_after(b, h, groups, before)) and start_step in one pass
 // over the bodies, body by body: each body's arithmetic is theirs (the same bits), its arrays
 // read and written once, not twice. Nothing may read the state between the two (Simulation::step).
-template <class Before>
+// after(arrays, i, rotor) runs on body i once its pass is done (a rank copies the new state to
+// its contact store while it is in registers).
+template <class Before, class After = NoAfter>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before, TeamCut cut = {}) {
-  auto one = [h, dt, gravity, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+                          const Before& before, TeamCut cut = {}, const After& after = {}) {
+  auto one = [h, dt, gravity, before, after](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     constexpr Rotor kRotor = decltype(rotor)::value;
     integrate_detail::kick_body_twice<kRotor>(a, i, h);  // the closing kick and start_body's
     integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
+    after(a, i, rotor);
   };
   over_rotor_groups(b, groups, one, cut);
 }

@@ -3,12 +3,13 @@
 // ghosts of bodies owned elsewhere, in increasing global id (contact/local_bodies.hpp: why the
 // order gives the bits of one process). A ghost carries only what contacts read: pose,
 // velocities, shape, scale, mass and its global id. The set changes only at list rebuilds;
-// the state is refreshed every step from the global arrays, where the ghosts' owners' parcels
-// land (sim/ghost_plan.hpp).
+// the owned bodies' state is written by the step's opening pass (write_through) or refreshed
+// from the global arrays, the ghosts' where their owners' parcels land (sim/ghost_plan.hpp).
 #include <cstdint>
 #include <vector>
 
 #include "contact/local_bodies.hpp"
+#include "integrate/integrate.hpp"
 #include "polydem/bodies.hpp"
 
 namespace polydem {
@@ -31,10 +32,36 @@ struct LocalStore {
   // copied stand.
   void refresh(const Bodies& all, bool turning = true);
   void clear_forces();  // zeroes force and torque (before the engine sums into them)
+  // A step's opening pass hook (integrate.hpp's close_and_start_step `after`): writes owned body
+  // i's new pose and velocities at its local index while they are in registers, so the step's
+  // refresh (a second pass reading the global arrays back) is not needed.
+  struct Write;
+  Write write_through(const std::vector<std::int32_t>& local_of);
   LocalBodies view() {
     return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
             &shape,    &scale,       &mass,     &ghost,            &force,        &torque};
   }
 };
+
+struct LocalStore::Write {
+  const std::int32_t* local_of;  // global id -> local index
+  Vec3 *position, *velocity, *angular_velocity, *velocity_end, *angular_velocity_end;
+  Quat* orientation;
+  template <class Arrays, class Path>
+  [[gnu::always_inline]] void operator()(const Arrays& a, std::size_t i, Path) const {
+    const std::size_t l = std::size_t(local_of[i]);
+    position[l] = a.position[i];
+    velocity[l] = a.velocity[i];
+    angular_velocity[l] = a.angular_velocity[i];
+    velocity_end[l] = a.velocity_end[i];
+    angular_velocity_end[l] = a.angular_velocity_end[i];
+    if constexpr (Path::value != Rotor::sphere) orientation[l] = a.orientation[i];  // a sphere's never turns
+  }
+};
+
+inline LocalStore::Write LocalStore::write_through(const std::vector<std::int32_t>& local_of) {
+  return {local_of.data(),     position.data(),    velocity.data(), angular_velocity.data(),
+          velocity_end.data(), angular_velocity_end.data(), orientation.data()};
+}
 
 }  // namespace polydem

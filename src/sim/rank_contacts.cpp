@@ -133,6 +133,8 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
   const bool exchange = !forced_ && engine_;
+  // The opening pass wrote the owned bodies into the store, the ghosts hold the last parcels': no refresh.
+  refresh_ = !std::exchange(store_written_, false);
   if (exchange && !fold_) exchange_ghosts(bodies, dt);
   const bool stale = exchange && fold_ ? exchange_deciding(bodies, drivers, dt) : lists_stale(drivers);
   if (stale) {
@@ -168,7 +170,8 @@ void RankContacts::add_sums(Bodies& bodies) {
 void RankContacts::kick_closing(Bodies& bodies, double h) { kick_after(bodies, h, owned_rotors_, owned_sums(bodies)); }
 
 void RankContacts::close_and_start(Bodies& bodies, double h, double dt, const Vec3& gravity) {
-  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies));
+  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies), {}, store_.write_through(local_of_));
+  store_written_ = true;
 }
 
 void RankContacts::sums_taken() {
@@ -178,13 +181,13 @@ void RankContacts::sums_taken() {
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its
-// owner. The store is refreshed while the ghosts travel (theirs then a step old), and each
-// ghost written into it too when it lands.
+// owner. The store is refreshed while the ghosts travel (theirs then a step old) unless the
+// opening pass wrote it, and each ghost written into it too when it lands.
 void RankContacts::exchange_ghosts(Bodies& bodies, double dt) {
   const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
   for (Parcel& p : out_) pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());
   link_.begin_exchange(out_, in_);
-  store_.refresh(bodies, turning);
+  if (refresh_) store_.refresh(bodies, turning);
   link_.end_exchange();
   unpack_parcels(bodies, dt);
 }
@@ -203,7 +206,7 @@ void RankContacts::unpack_parcels(Bodies& bodies, double dt) {
 // parcel ends with its sender's requests, and the ghosts are measured again once landed.
 bool RankContacts::exchange_deciding(Bodies& bodies, const Drivers& drivers, double dt) {
   const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
-  store_.refresh(bodies, turning);
+  if (refresh_) store_.refresh(bodies, turning);
   Requests any = requests_here(drivers);
   for (Parcel& p : out_) {
     pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());

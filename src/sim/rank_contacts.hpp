@@ -171,6 +171,8 @@ class RankContacts {
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
+  bool store_written_ = false;  // the opening pass wrote the owned bodies' new state into store_
+  bool refresh_ = true;         // this step's ghost exchange refreshes store_ from the global arrays
   bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
   bool rebuild_asked_ = false;
