@@ -47,25 +47,34 @@ struct SteadyLawOf {
   lanes::Vec3Of<V> force;   // N, on i: fn n + ft
   typename lanes::Types<lanes::kWidth<V>>::Mask steady;  // overlapping now and at n, glued over the step, sticking
 };
+// Lanes' last steps: each one's history and k', c' (read where the law reads them, in its order).
+template <int N>
+struct LastSteps {
+  const ContactHistory* h[N];
+  const LinearStep* step[N];
+};
 // contact_force's steady branch for LawParts<NormalLinear> at weight 1 (the law's products by it
 // are exact) with the exact step, written once for the sphere pairs and the sphere-wall pairs: n
 // (unit, j to i), gap (m), v_rel and v_end (m/s, at the half step and the end), m (kg, the dashpot's
-// mass), the pair's k', c' and the history's fd (N), gap (m) and ft (N).
-template <class V>
+// mass) and the lanes' last steps.
+template <class V, int N = lanes::kWidth<V>>
 [[gnu::always_inline]] inline SteadyLawOf<V> steady_linear_law(const LawParams& law, double dt, const lanes::Vec3Of<V>& n,
                                                                 V gap, const lanes::Vec3Of<V>& v_rel,
                                                                 const lanes::Vec3Of<V>& v_end, V m,
-                                                                const LinearStepOf<V>& k_c, V h_fd, V h_gap,
-                                                                lanes::Vec3Of<V> ft) {
+                                                                const LastSteps<N>& last) {
   using namespace lanes;
   using V3 = Vec3Of<V>;
   const V zero = splat<V>(0.0), dt_v = splat<V>(dt);
   // exact_normal_force
   const V kn = splat<V>(law.kn);
+  const auto each = [&](auto get) { return gather<V>(get); };
   const V vn = dot(v_rel, n), r = -vn;  // m/s
+  const V h_fd = each([&](int l) { return last.h[l]->fd; }), h_gap = each([&](int l) { return last.h[l]->gap; });
   const V spring = kn * -gap;           // N
   const V f_last = h_fd + kn * -h_gap;  // N
   const V f_rest = rest_of_world(f_last, m, dt_v, r, -dot(v_end, n));  // N
+  const LinearStepOf<V> k_c{each([&](int l) { return last.step[l]->k; }), each([&](int l) { return last.step[l]->c; }),
+                            each([&](int l) { return last.step[l]->rest; })};
   const V u = k_c.force(-gap, r, f_rest);  // N
   const GluedAheadOf<V> next = glued_ahead(k_c, m, dt_v, -gap, r, u, f_rest);
   SteadyLawOf<V> out;
@@ -75,6 +84,7 @@ template <class V>
   // the tangential spring, turned and sticking
   const V3 vt = v_rel - vn * n;
   const V ft_max = splat<V>(law.mu) * out.fn;
+  V3 ft = load<V>([&](int l) -> const Vec3& { return last.h[l]->ft; });
   const V length2 = dot(ft, ft);
   ft = ft - dot(ft, n) * n;
   const V in_plane2 = dot(ft, ft);
@@ -100,11 +110,11 @@ template <int N, class Sizes, class Take>
   using V3 = Vec3Of<V>;
   BodyPair p[N];
   ContactHistory* h[N];
-  const LinearStep* step[N];
+  LastSteps<N> last;
   for (int l = 0; l < N; ++l) {
     p[l] = list.pairs[ks[l]];
-    h[l] = &list.slots[list.slot_begin[ks[l]]].history;
-    step[l] = sizes.linear_step(ks[l]);
+    last.h[l] = h[l] = &list.slots[list.slot_begin[ks[l]]].history;
+    last.step[l] = sizes.linear_step(ks[l]);
   }
   const auto each = [&](auto get) { return gather<V>(get); };
   const auto of_i = [&](const Vec3* a) { return load<V>([&](int l) -> const Vec3& { return a[p[l].i]; }); };
@@ -121,11 +131,7 @@ template <int N, class Sizes, class Take>
   const V gap = c.gap;  // m, < 0 where steady: the overlap is -gap
   const V3 v_end = of_i(bodies.velocity_end) - of_j(bodies.velocity_end);
   const V m = each([&](int l) { return sizes.pair_mass(p[l]); });  // kg
-  const V h_fd = each([&](int l) { return h[l]->fd; }), h_gap = each([&](int l) { return h[l]->gap; });
-  const LinearStepOf<V> k_c{each([&](int l) { return step[l]->k; }), each([&](int l) { return step[l]->c; }),
-                            each([&](int l) { return step[l]->rest; })};
-  const V3 h_ft = load<V>([&](int l) -> const Vec3& { return h[l]->ft; });
-  const SteadyLawOf<V> f = steady_linear_law(law, dt, n, gap, c.v_rel, v_end, m, k_c, h_fd, h_gap, h_ft);
+  const SteadyLawOf<V> f = steady_linear_law(law, dt, n, gap, c.v_rel, v_end, m, last);
   const auto steady = ~((dist2 >= reach * reach) | (dist2 == zero)) & f.steady;
   const V3& force = f.force;
   const PairTorquesOf<V> torques = sphere_torques(n, force, V3{zero, zero, zero}, c.lever_i, c.lever_j);  // no rolling moment

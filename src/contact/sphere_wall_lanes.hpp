@@ -39,12 +39,13 @@ template <int N, class Take>
   std::uint32_t body[N];
   const DriverState* wall[N];
   SlotState* state[N];
-  const LinearStep* step[N];
+  LastSteps<N> last;
   for (int l = 0; l < N; ++l) {
     body[l] = list.pairs[ks[l]].i;
     wall[l] = &drivers[list.pairs[ks[l]].j];
     state[l] = &list.touch(list.slot_begin[ks[l]]);  // made: the slot is active
-    step[l] = &sizes.steps[ks[l] & sizes.mask];
+    last.h[l] = &state[l]->history;
+    last.step[l] = &sizes.steps[ks[l] & sizes.mask];
   }
   const auto each = [&](auto get) { return gather<V>(get); };
   const auto of_body = [&](const Vec3* a) { return load<V>([&](int l) -> const Vec3& { return a[body[l]]; }); };
@@ -61,12 +62,7 @@ template <int N, class Take>
   const V3 v_rel = of_body(bodies.velocity) + cross(of_body(bodies.angular_velocity), lever);
   const V3 v_end = of_body(bodies.velocity_end) + cross(of_body(bodies.angular_velocity_end), lever);
   const V m = each([&](int l) { return sizes.mass[body[l] & sizes.mask]; });  // kg
-  const V h_fd = each([&](int l) { return state[l]->history.fd; });
-  const V h_gap = each([&](int l) { return state[l]->history.gap; });
-  const LinearStepOf<V> k_c{each([&](int l) { return step[l]->k; }), each([&](int l) { return step[l]->c; }),
-                            each([&](int l) { return step[l]->rest; })};
-  const V3 h_ft = load<V>([&](int l) -> const Vec3& { return state[l]->history.ft; });
-  const SteadyLawOf<V> f = steady_linear_law(law, dt, n, gap, v_rel, v_end, m, k_c, h_fd, h_gap, h_ft);
+  const SteadyLawOf<V> f = steady_linear_law(law, dt, n, gap, v_rel, v_end, m, last);
   const auto steady = (gap < splat<V>(band)) & f.steady;  // in reach (gap < 0 where f.steady: no NaN)
   // The totals from zero, as sphere_wall_forces' sums: the same signed zeros (no rolling moment).
   const V3 force_i = zeros + f.force;                               // N
