@@ -10,7 +10,7 @@
 #include "contact/candidate_memory.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
-#include "contact/sphere_wall.hpp"
+#include "contact/sphere_wall_lanes.hpp"
 
 namespace polydem {
 
@@ -448,7 +448,12 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       };
       // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
       // also even out the body pairs' walk, which ends without a barrier).
-      if (spheres_only_)
+      if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
+        even_pair_forces(driver_list_,
+                         WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
+                                                           sizes, at_rest},
+                         driver_begin_.data(), body_cut());
+      else if (spheres_only_)
         even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
       else
         all_pair_forces(driver_list_, kernel);

@@ -78,6 +78,18 @@ void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direc
   contacts += std::uint32_t(pt.contacts);
 }
 
+// Candidate k without a partner: the kernel's steady code on one lane (the same bits as in a
+// lane of two), its scalar code where the pair is not steady.
+template <class Kernel>
+[[gnu::always_inline]] inline PairTotals steady_alone(const Kernel& kernel, std::uint32_t k, PairScratch& scratch) {
+  PairTotals totals;
+  bool done = false;
+  kernel.template steady<1>(&k, [&](int, const PairTotals* t) {
+    if (t) totals = *t, done = true;
+  });
+  return done ? totals : kernel(k, scratch);
+}
+
 // Internal pairs [k, stop) through a kernel that steps two steady pairs side by side
 // (sphere_lanes.hpp): a candidate waits for the next; a pair between them that adds to a sum sends
 // it alone first (kernel.one), so each sum takes its terms in list order (a pair out of reach adds
@@ -94,7 +106,7 @@ template <class Kernel>
     keep_pair(list, a, pt, contacts, ended);
   };
   const auto lone = [&](std::uint32_t a) __attribute__((noinline)) {  // a candidate without a partner
-    const PairTotals pt = kernel.one(a, scratch);
+    const PairTotals pt = steady_alone(kernel, a, scratch);
     add_pair(sums, list.pairs[a], pt);
     keep_pair(list, a, pt, contacts, ended);
   };
@@ -105,7 +117,7 @@ template <class Kernel>
         continue;
       }
       const std::uint32_t two[2] = {waiting, k};
-      kernel.two(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
+      kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
         if (!t) return alone(two[l]);
         add_pair(sums, list.pairs[two[l]], *t);
         keep_pair(list, two[l], *t, contacts, ended);
@@ -169,21 +181,53 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
   }
 }
 
+// Pair k's results kept in the list (its forces too), its block's contacts and ended flag.
+[[gnu::always_inline]] inline void keep_results(PairList& list, std::uint32_t k, const PairTotals& t,
+                                                std::uint32_t& contacts, bool& ended) {
+  list.force_i[k] = t.force_i;
+  list.torque_i[k] = t.torque_i;
+  list.torque_j[k] = t.torque_j;
+  keep_pair(list, k, t, contacts, ended);
+}
+
+// Block b's pairs [k, end) through a kernel that steps two steady pairs side by side: a candidate
+// waits for the next one (each pair's results are its own, so any order gives the same bits).
+template <class Kernel>
+[[gnu::always_inline]] inline void paired_block(PairList& list, const Kernel& kernel, PairScratch& scratch,
+                                                std::uint32_t k, std::uint32_t end, std::uint32_t& contacts,
+                                                bool& ended) {
+  constexpr std::uint32_t kNone = ~0u;
+  std::uint32_t waiting = kNone;
+  const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {  // a lane not steady: the scalar kernel
+    keep_results(list, a, kernel(a, scratch), contacts, ended);
+  };
+  for (; k < end; ++k) {
+    if (!kernel.candidate(k)) {
+      keep_results(list, k, kernel(k, scratch), contacts, ended);
+    } else if (waiting == kNone) {
+      waiting = k;
+    } else {
+      const std::uint32_t two[2] = {std::exchange(waiting, kNone), k};
+      kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
+        if (!t) return alone(two[l]);
+        keep_results(list, two[l], *t, contacts, ended);
+      });
+    }
+  }
+  if (waiting != kNone) keep_results(list, waiting, steady_alone(kernel, waiting, scratch), contacts, ended);
+}
+
 // Block b's pairs: each one's forces kept in the list, its energy added to its pending sum in
 // step order, the block's contacts counted and its ended contacts flagged.
 template <class Kernel>
 void block_forces(PairList& list, const Kernel& kernel, std::size_t b, PairScratch& scratch) {
   std::uint32_t contacts = 0;
   bool ended = false;
-  for (std::size_t k = b * kPairBlock; k < std::min(list.size(), (b + 1) * kPairBlock); ++k) {
-    const PairTotals t = kernel(std::uint32_t(k), scratch);
-    list.force_i[k] = t.force_i;
-    list.torque_i[k] = t.torque_i;
-    list.torque_j[k] = t.torque_j;
-    ended |= (list.touching[k] != 0) & (t.contacts == 0);  // touching at the last step, not now
-    list.touching[k] = std::uint16_t(t.contacts);
-    list.pending[k] += t.energy;
-    contacts += std::uint32_t(t.contacts);
+  const std::uint32_t begin = std::uint32_t(b * kPairBlock), end = std::uint32_t(std::min(list.size(), (b + 1) * kPairBlock));
+  if constexpr (requires { Kernel::kTwoLanes; }) {
+    paired_block(list, kernel, scratch, begin, end, contacts, ended);
+  } else {
+    for (std::uint32_t k = begin; k < end; ++k) keep_results(list, k, kernel(k, scratch), contacts, ended);
   }
   list.block_contacts[b] = contacts;
   list.block_ended[b] = ended;

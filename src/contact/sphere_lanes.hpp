@@ -19,11 +19,15 @@ namespace polydem {
 
 using SteadyParts = LawParts<NormalLinear, false, false, false>;
 
+// Whether the law is one steady_linear_law computes: linear with the exact step and friction.
+template <class Parts>
+bool steady_law_fits(const LawParams& law) {
+  return std::is_same_v<Parts, SteadyParts> && law.exact_step && law.alpha_n > 0.0 && law.mu > 0.0 && law.kt > 0.0;
+}
 // Whether this step's pairs may take the lanes.
 template <class Parts>
 bool lanes_fit(const LawParams& law, const PairList& list) {
-  return std::is_same_v<Parts, SteadyParts> && law.exact_step && law.alpha_n > 0.0 && law.mu > 0.0 && law.kt > 0.0 &&
-         !list.recording;
+  return steady_law_fits<Parts>(law) && !list.recording;
 }
 
 // Whether pair k may be steady: overlapping at the last step, its k', c' made.
@@ -32,6 +36,65 @@ template <class Sizes>
   const std::uint32_t s = list.slot_begin[k];
   return s != list.slot_begin[k + 1] && list.active[s] && list.slots[s].history.gap < 0.0 &&
          sizes.linear_step(k)->k != 0.0;
+}
+
+// What a steady contact's law gives (V: one contact, or two side by side), and where it is steady.
+template <class V>
+struct SteadyLawOf {
+  V fn, fd;                 // N, the normal force and its dashpot share
+  V dissipated;             // J, this step
+  lanes::Vec3Of<V> ft;      // N, the tangential spring, turned and loaded
+  lanes::Vec3Of<V> force;   // N, on i: fn n + ft
+  typename lanes::Types<lanes::kWidth<V>>::Mask steady;  // overlapping now and at n, glued over the step, sticking
+};
+// Lanes' last steps: each one's history and k', c' (read where the law reads them, in its order).
+template <int N>
+struct LastSteps {
+  const ContactHistory* h[N];
+  const LinearStep* step[N];
+};
+// contact_force's steady branch for LawParts<NormalLinear> at weight 1 (the law's products by it
+// are exact) with the exact step, written once for the sphere pairs and the sphere-wall pairs: n
+// (unit, j to i), gap (m), v_rel and v_end (m/s, at the half step and the end), m (kg, the dashpot's
+// mass) and the lanes' last steps.
+template <class V, int N = lanes::kWidth<V>>
+[[gnu::always_inline]] inline SteadyLawOf<V> steady_linear_law(const LawParams& law, double dt, const lanes::Vec3Of<V>& n,
+                                                                V gap, const lanes::Vec3Of<V>& v_rel,
+                                                                const lanes::Vec3Of<V>& v_end, V m,
+                                                                const LastSteps<N>& last) {
+  using namespace lanes;
+  using V3 = Vec3Of<V>;
+  const V zero = splat<V>(0.0), dt_v = splat<V>(dt);
+  // exact_normal_force
+  const V kn = splat<V>(law.kn);
+  const auto each = [&](auto get) { return gather<V>(get); };
+  const V vn = dot(v_rel, n), r = -vn;  // m/s
+  const V h_fd = each([&](int l) { return last.h[l]->fd; }), h_gap = each([&](int l) { return last.h[l]->gap; });
+  const V spring = kn * -gap;           // N
+  const V f_last = h_fd + kn * -h_gap;  // N
+  const V f_rest = rest_of_world(f_last, m, dt_v, r, -dot(v_end, n));  // N
+  const LinearStepOf<V> k_c{each([&](int l) { return last.step[l]->k; }), each([&](int l) { return last.step[l]->c; }),
+                            each([&](int l) { return last.step[l]->rest; })};
+  const V u = k_c.force(-gap, r, f_rest);  // N
+  const GluedAheadOf<V> next = glued_ahead(k_c, m, dt_v, -gap, r, u, f_rest);
+  SteadyLawOf<V> out;
+  out.fn = u + zero;  // N, + the push (0 here)
+  out.fd = u - spring;
+  out.dissipated = 0.5 * (h_fd + out.fd) * (h_gap - gap) + (zero + zero);  // + slip, started work
+  // the tangential spring, turned and sticking
+  const V3 vt = v_rel - vn * n;
+  const V ft_max = splat<V>(law.mu) * out.fn;
+  V3 ft = load<V>([&](int l) -> const Vec3& { return last.h[l]->ft; });
+  const V length2 = dot(ft, ft);
+  ft = ft - dot(ft, n) * n;
+  const V in_plane2 = dot(ft, ft);
+  ft = select(in_plane2 > zero, sphere_detail::root(length2 / in_plane2) * ft, ft);
+  out.ft = ft + (-splat<V>(law.kt) * dt_v) * vt;
+  const V trial2 = dot(out.ft, out.ft);
+  // The glued arc not letting go within the step (!(u_next <= 0), as exact_normal_force's test).
+  out.steady = (!(next.u <= zero)) & (gap < zero) & (h_gap < zero) & (u > zero) & (trial2 <= ft_max * ft_max);
+  out.force = out.fn * n + out.ft;
+  return out;
 }
 
 // Pairs ks[0..N) (steady candidates, in list order) side by side, N = 2, or one alone through the same
@@ -47,16 +110,16 @@ template <int N, class Sizes, class Take>
   using V3 = Vec3Of<V>;
   BodyPair p[N];
   ContactHistory* h[N];
-  const LinearStep* step[N];
+  LastSteps<N> last;
   for (int l = 0; l < N; ++l) {
     p[l] = list.pairs[ks[l]];
-    h[l] = &list.slots[list.slot_begin[ks[l]]].history;
-    step[l] = sizes.linear_step(ks[l]);
+    last.h[l] = h[l] = &list.slots[list.slot_begin[ks[l]]].history;
+    last.step[l] = sizes.linear_step(ks[l]);
   }
   const auto each = [&](auto get) { return gather<V>(get); };
   const auto of_i = [&](const Vec3* a) { return load<V>([&](int l) -> const Vec3& { return a[p[l].i]; }); };
   const auto of_j = [&](const Vec3* a) { return load<V>([&](int l) -> const Vec3& { return a[p[l].j]; }); };
-  const V zero = splat<V>(0.0), dt_v = splat<V>(dt);
+  const V zero = splat<V>(0.0);
   // sphere_pair_forces: the geometry and the motions
   const V ri = each([&](int l) { return sizes.radius(p[l].i); }), rj = each([&](int l) { return sizes.radius(p[l].j); });
   const V3 d = of_i(bodies.position) - of_j(bodies.position);
@@ -68,34 +131,9 @@ template <int N, class Sizes, class Take>
   const V gap = c.gap;  // m, < 0 where steady: the overlap is -gap
   const V3 v_end = of_i(bodies.velocity_end) - of_j(bodies.velocity_end);
   const V m = each([&](int l) { return sizes.pair_mass(p[l]); });  // kg
-  // contact_force and exact_normal_force (weight 1: the law's products by it are exact)
-  const V kn = splat<V>(law.kn);
-  const V vn = dot(c.v_rel, n), r = -vn;  // m/s
-  const V h_fd = each([&](int l) { return h[l]->fd; }), h_gap = each([&](int l) { return h[l]->gap; });
-  const V spring = kn * -gap;           // N
-  const V f_last = h_fd + kn * -h_gap;  // N
-  const V f_rest = rest_of_world(f_last, m, dt_v, r, -dot(v_end, n));  // N
-  const LinearStepOf<V> k_c{each([&](int l) { return step[l]->k; }), each([&](int l) { return step[l]->c; }),
-                            each([&](int l) { return step[l]->rest; })};
-  const V u = k_c.force(-gap, r, f_rest);  // N
-  const GluedAheadOf<V> next = glued_ahead(k_c, m, dt_v, -gap, r, u, f_rest);
-  const V fn = u + zero;  // N, + the push (0 here)
-  const V fd = u - spring;
-  const V dissipated = 0.5 * (h_fd + fd) * (h_gap - gap) + (zero + zero);  // + slip, started work
-  // the tangential spring, turned and sticking
-  const V3 vt = c.v_rel - vn * n;
-  const V ft_max = splat<V>(law.mu) * fn;
-  V3 ft = load<V>([&](int l) -> const Vec3& { return h[l]->ft; });
-  const V length2 = dot(ft, ft);
-  ft = ft - dot(ft, n) * n;
-  const V in_plane2 = dot(ft, ft);
-  ft = select(in_plane2 > zero, sphere_detail::root(length2 / in_plane2) * ft, ft);
-  ft = ft + (-splat<V>(law.kt) * dt_v) * vt;
-  const V trial2 = dot(ft, ft);
-  // In reach, the glued arc not letting go within the step (!(u_next <= 0), as exact_normal_force's test).
-  const auto steady = ~((dist2 >= reach * reach) | (dist2 == zero) | (next.u <= zero)) & (gap < zero) &
-                      (h_gap < zero) & (u > zero) & (trial2 <= ft_max * ft_max);
-  const V3 force = fn * n + ft;
+  const SteadyLawOf<V> f = steady_linear_law(law, dt, n, gap, c.v_rel, v_end, m, last);
+  const auto steady = ~((dist2 >= reach * reach) | (dist2 == zero)) & f.steady;
+  const V3& force = f.force;
   const PairTorquesOf<V> torques = sphere_torques(n, force, V3{zero, zero, zero}, c.lever_i, c.lever_j);  // no rolling moment
   for (int l = 0; l < N; ++l) {
     if (!at(steady, l)) {
@@ -103,8 +141,8 @@ template <int N, class Sizes, class Take>
       continue;
     }
     ContactHistory& hl = *h[l];
-    hl.ft = lane(ft, l);
-    hl.fd = at(fd, l);
+    hl.ft = lane(f.ft, l);
+    hl.fd = at(f.fd, l);
     hl.gap = at(gap, l);
     hl.weight = 1.0;
     hl.slipping = false;  // under its cap
@@ -112,7 +150,7 @@ template <int N, class Sizes, class Take>
     t.force_i = lane(force, l);
     t.torque_i = lane(torques.i, l);
     t.torque_j = lane(torques.j, l);
-    t.energy = EnergyParts{at(dissipated, l), 0.0, 0.0, 0.0};
+    t.energy = EnergyParts{at(f.dissipated, l), 0.0, 0.0, 0.0};
     t.contacts = 1;
     take(l, &t);
   }

@@ -18,7 +18,7 @@ struct SphereKernel {
   }
 };
 // The same, and steady pairs two at a time (sphere_lanes.hpp, pair_loop.hpp's paired_pairs), or
-// one alone through the same steady kernel.
+// one alone through the same steady kernel (steady_alone).
 template <class Sizes>
 struct SphereLanesKernel : SphereKernel<SteadyParts, Sizes> {
   static constexpr bool kTwoLanes = true;
@@ -26,17 +26,6 @@ struct SphereLanesKernel : SphereKernel<SteadyParts, Sizes> {
   template <int N, class Take>
   [[gnu::always_inline]] void steady(const std::uint32_t pairs[N], const Take& take) const {
     steady_sphere_pairs<N>(this->law, this->band, this->dt, this->bodies, this->list, pairs, this->sizes, take);
-  }
-  template <class Take>
-  [[gnu::always_inline]] void two(const std::uint32_t pairs[2], const Take& take) const { steady<2>(pairs, take); }
-  // Candidate k without a partner: the steady kernel on one lane, sphere_pair_forces where not steady.
-  [[gnu::always_inline]] PairTotals one(std::uint32_t k, PairScratch& scratch) const {
-    PairTotals totals;
-    bool done = false;
-    steady<1>(&k, [&](int, const PairTotals* t) {
-      if (t) totals = *t, done = true;
-    });
-    return done ? totals : (*this)(k, scratch);
   }
 };
 }  // namespace
