@@ -50,7 +50,14 @@ struct ForceSums {
   const Vec3 *force_i, *torque_i;     // per driver pair
   Vec3* force;
   Vec3* torque;
-  [[gnu::always_inline]] void operator()(std::size_t b) const { add_to(b, force[b], torque[b]); }
+  // kg, per body. Set: the closing first makes force = m gravity and torque = 0, which a pass
+  // of close_and_start_step<true> (nothing but gravity acts) did not keep.
+  const double* gravity_mass = nullptr;
+  Vec3 gravity = Vec3::Zero();  // m/s^2
+  [[gnu::always_inline]] void operator()(std::size_t b) const {
+    if (gravity_mass) force[b] = gravity_mass[b] * gravity, torque[b].setZero();
+    add_to(b, force[b], torque[b]);
+  }
   // Body b's sum (its pairs', then its touching driver pairs') added to f_to and t_to (N, N m).
   [[gnu::always_inline]] void add_to(std::size_t b, Vec3& f_to, Vec3& t_to) const {
     Vec3 f = body[b].force, t = body[b].torque;

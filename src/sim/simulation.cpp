@@ -209,8 +209,10 @@ void Simulation::step(bool leave_kick_open) {
   // Each thread moves the bodies whose pairs it walks (one process: the contact stage's cut).
   const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
   in_team(team, [&] {
-    if (close_last && one_process)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)), cut);
+    if (close_last && one_process && !external_)
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
+    else if (close_last && one_process)
+      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
     else if (close_last)
       ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
     else
@@ -239,7 +241,7 @@ void Simulation::step(bool leave_kick_open) {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       engine_->forces(local, drivers, dt_, !stale, false);
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local), engine_->body_cut());
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut());
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(bodies, 0.5 * dt_);
     } else {
@@ -259,9 +261,17 @@ void Simulation::close_step() {
     if (ranks_)
       ranks_->kick_closing(bodies, 0.5 * dt_);
     else
-      kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies)), engine_->body_cut());
+      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut());
   });
   sums_taken();
+}
+
+// One process: the sums a closing pass adds, from m gravity where nothing else acts (the
+// opening pass may not have kept it: close_and_start_step<true>).
+ForceSums Simulation::closing_sums() {
+  ForceSums sums = engine_->force_sums(all_owned(bodies));
+  if (!external_) sums.gravity_mass = bodies.mass.data(), sums.gravity = gravity_;
+  return sums;
 }
 
 // Every owned body's contact sum was read (by a closing kick): the next pair loop starts from zeros.
