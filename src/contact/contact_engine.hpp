@@ -88,7 +88,13 @@ class ContactEngine {
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
-  void measure_motion(const LocalBodies& bodies);
+  // `watched`: the pass that moved the bodies ran the trigger's test (watch_motion), so only the poses.
+  void measure_motion(const LocalBodies& bodies, bool watched = false);
+  // True, with `watch` set, where the trigger's test of every local body can run in the pass
+  // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
+  bool watch_motion(const LocalBodies& bodies, PointWatch& watch) {
+    return trigger_.watch_points(bodies.position->size(), settings_.skin, watch);
+  }
   // measure_motion's poses and bounds again for the bodies `some` alone, their answer left out:
   // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
   void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);

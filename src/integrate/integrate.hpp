@@ -276,17 +276,22 @@ void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const
 // added in the step), so each body's force and torque are made in registers, m gravity + sum and
 // 0 + sum (the same bits as kept and added to), and its force and torque arrays are neither read
 // nor written (48 + 48 bytes a body-step less memory traffic); `before` is then a ForceSums,
-// whose from_gravity closing sets them at a closed step.
-template <bool kFromGravity = false, class Before>
+// whose gravity_mass closing sets them at a closed step. moved(i, x) sees each body's new
+// position (m) while the pass holds it (the rebuild trigger's test: no pass of its own).
+struct NoWatch {
+  void operator()(std::size_t, const Vec3&) const {}
+};
+template <bool kFromGravity = false, class Before, class Moved = NoWatch>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before, TeamCut cut = {}) {
-  auto one = [h, dt, gravity, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+                          const Before& before, TeamCut cut = {}, Moved moved = {}) {
+  auto one = [h, dt, gravity, before, moved](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     constexpr Rotor kRotor = decltype(rotor)::value;
     if constexpr (kFromGravity) {
       Vec3 f = a.mass[i] * gravity, t = Vec3::Zero();  // N, N m
       before.add_to(i, f, t);
       integrate_detail::kick_body_twice<kRotor>(a, i, h, f, t);  // the closing kick and start_body's
       integrate_detail::drift_body<kRotor>(a, i, dt);
+      moved(i, a.position[i]);
       integrate_detail::predict_spin<kRotor>(a, i, h, t);  // the last step's torque
     } else {
       before(i);

@@ -208,8 +208,15 @@ void Simulation::step(bool leave_kick_open) {
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
   // Each thread moves the bodies whose pairs it walks (one process: the contact stage's cut).
   const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
+  // Nothing but gravity acts: the joined pass makes the forces in registers and, for spheres'
+  // lists, runs the rebuild trigger's test on each position it moves (no pass of its own).
+  const bool from_gravity = close_last && one_process && !external_;
+  PointWatch watch;
+  const bool watched = from_gravity && engine_->watch_motion(all_owned(bodies), watch);
   in_team(team, [&] {
-    if (close_last && one_process && !external_)
+    if (watched)
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch);
+    else if (from_gravity)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
     else if (close_last && one_process)
       close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
@@ -217,7 +224,7 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
-    if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
+    if (contacts && one_process) engine_->measure_motion(all_owned(bodies), watched);
   });
   if (close_last) sums_taken();
   drivers.advance(time(), dt_);
