@@ -184,7 +184,6 @@ template <Rotor kRotor, class Arrays>
   }
 }
 
-// kKicked: velocity_end is set (kick_body_twice).
 // angular_velocity_end of body i from torque t (N m) over h (s).
 template <Rotor kRotor, class Arrays>
 [[gnu::always_inline]] inline void predict_spin(const Arrays& b, std::size_t i, double h, const Vec3& t) {
@@ -195,6 +194,7 @@ template <Rotor kRotor, class Arrays>
     b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
   }
 }
+// kKicked: velocity_end is set (kick_body_twice).
 template <Rotor kRotor, bool kKicked = false, class Arrays>
 [[gnu::always_inline]] inline void predict_body(const Arrays& b, std::size_t i, double h) {
   if constexpr (!kKicked) b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
