@@ -379,14 +379,14 @@ bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& driver
   return stale_after_measure(drivers);
 }
 
-void ContactEngine::measure_motion(const LocalBodies& bodies) {
+void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {
   // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
   if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
     const auto [first, last] = team_share(position.size(), body_cut());
     for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
-  trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, body_cut());
+  if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, body_cut());
 }
 
 void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {

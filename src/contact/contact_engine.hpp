@@ -50,7 +50,14 @@ struct ForceSums {
   const Vec3 *force_i, *torque_i;     // per driver pair
   Vec3* force;
   Vec3* torque;
-  [[gnu::always_inline]] void operator()(std::size_t b) const { add_to(b, force[b], torque[b]); }
+  // kg, per body. Set: the closing first makes force = m gravity and torque = 0, which a pass
+  // of close_and_start_step<true> (nothing but gravity acts) did not keep.
+  const double* gravity_mass = nullptr;
+  Vec3 gravity = Vec3::Zero();  // m/s^2
+  [[gnu::always_inline]] void operator()(std::size_t b) const {
+    if (gravity_mass) force[b] = gravity_mass[b] * gravity, torque[b].setZero();
+    add_to(b, force[b], torque[b]);
+  }
   // Body b's sum (its pairs', then its touching driver pairs') added to f_to and t_to (N, N m).
   [[gnu::always_inline]] void add_to(std::size_t b, Vec3& f_to, Vec3& t_to) const {
     Vec3 f = body[b].force, t = body[b].torque;
@@ -81,7 +88,13 @@ class ContactEngine {
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
-  void measure_motion(const LocalBodies& bodies);
+  // `watched`: the pass that moved the bodies ran the trigger's test (watch_motion), so only the poses.
+  void measure_motion(const LocalBodies& bodies, bool watched = false);
+  // True, with `watch` set, where the trigger's test of every local body can run in the pass
+  // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
+  bool watch_motion(const LocalBodies& bodies, PointWatch& watch) {
+    return trigger_.watch_points(bodies.position->size(), settings_.skin, watch);
+  }
   // measure_motion's poses and bounds again for the bodies `some` alone, their answer left out:
   // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
   void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);

@@ -184,16 +184,21 @@ template <Rotor kRotor, class Arrays>
   }
 }
 
+// angular_velocity_end of body i from torque t (N m) over h (s).
+template <Rotor kRotor, class Arrays>
+[[gnu::always_inline]] inline void predict_spin(const Arrays& b, std::size_t i, double h, const Vec3& t) {
+  if constexpr (kRotor != Rotor::asymmetric) {
+    b.angular_velocity_end[i] = b.angular_velocity[i] + t * (h / b.inertia[i].x());
+  } else {
+    const Vec3 dl = b.orientation[i].conjugate() * (t * h);  // N m s, principal frame
+    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
+  }
+}
 // kKicked: velocity_end is set (kick_body_twice).
 template <Rotor kRotor, bool kKicked = false, class Arrays>
 [[gnu::always_inline]] inline void predict_body(const Arrays& b, std::size_t i, double h) {
   if constexpr (!kKicked) b.velocity_end[i] = b.velocity[i] + b.force[i] * (h / b.mass[i]);
-  if constexpr (kRotor != Rotor::asymmetric) {
-    b.angular_velocity_end[i] = b.angular_velocity[i] + b.torque[i] * (h / b.inertia[i].x());
-  } else {
-    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
-    b.angular_velocity_end[i] = b.angular_velocity[i] + b.orientation[i] * dl.cwiseQuotient(b.inertia[i]);
-  }
+  predict_spin<kRotor>(b, i, h, b.torque[i]);
 }
 
 // A step's opening for body i: kick(h), drift(dt), predict_end_velocities(h) with the last
@@ -208,23 +213,24 @@ template <Rotor kRotor, bool kKicked = false, class Arrays>
   a.force[i] = a.mass[i] * gravity;
   a.torque[i].setZero();
 }
-// The last step's closing kick and this step's opening kick of body i, one after the other: the
-// same force, torque, h and orientation, so each shared term (F h/m, R^T T h, T h/I) is made once
-// and added twice; an asymmetric body's w is made once, from the twice-kicked L. Each kick's bits.
-// velocity_end = v + F h/m (predict_body's) too: the drift leaves v alone.
+// The last step's closing kick and this step's opening kick of body i, one after the other, with
+// force f (N) and torque t (N m): the same h and orientation, so each shared term (F h/m, R^T T h,
+// T h/I) is made once and added twice; an asymmetric body's w is made once, from the twice-kicked
+// L. Each kick's bits. velocity_end = v + F h/m (predict_body's) too: the drift leaves v alone.
 template <Rotor kRotor, class Arrays>
-[[gnu::always_inline]] inline void kick_body_twice(const Arrays& b, std::size_t i, double h) {
-  const Vec3 dv = b.force[i] * (h / b.mass[i]);  // m/s
+[[gnu::always_inline]] inline void kick_body_twice(const Arrays& b, std::size_t i, double h, const Vec3& f,
+                                                   const Vec3& t) {
+  const Vec3 dv = f * (h / b.mass[i]);  // m/s
   b.velocity[i] += dv;
   b.velocity[i] += dv;
   b.velocity_end[i] = b.velocity[i] + dv;
   if constexpr (kRotor == Rotor::asymmetric) {
-    const Vec3 dl = b.orientation[i].conjugate() * (b.torque[i] * h);  // N m s, principal frame
+    const Vec3 dl = b.orientation[i].conjugate() * (t * h);  // N m s, principal frame
     b.angular_momentum[i] += dl;
     b.angular_momentum[i] += dl;
     b.angular_velocity[i] = b.orientation[i] * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
   } else {
-    const Vec3 dl = b.torque[i] * h;  // N m s, world frame
+    const Vec3 dl = t * h;  // N m s, world frame
     const Vec3 dl_body = kRotor == Rotor::sphere ? dl : Vec3(b.orientation[i].conjugate() * dl);
     const Vec3 dw = dl / b.inertia[i].x();  // rad/s
     b.angular_momentum[i] += dl_body;
@@ -272,16 +278,34 @@ struct NoAfter {
 // The last step's closing pass (kick_after(b, h, groups, before)) and start_step in one pass
 // over the bodies, body by body: each body's arithmetic is theirs (the same bits), its arrays
 // read and written once, not twice. Nothing may read the state between the two (Simulation::step).
+// kFromGravity: nothing but gravity and `before`'s sums acts on a body (no drag or fluid force
+// added in the step), so each body's force and torque are made in registers, m gravity + sum and
+// 0 + sum (the same bits as kept and added to), and its force and torque arrays are neither read
+// nor written (48 + 48 bytes a body-step less memory traffic); `before` is then a ForceSums,
+// whose gravity_mass closing sets them at a closed step. moved(i, x) sees each body's new
+// position (m) while the pass holds it (the rebuild trigger's test: no pass of its own).
 // after(arrays, i, rotor) runs on body i once its pass is done (a rank copies the new state to
 // its contact store while it is in registers).
-template <class Before, class After = NoAfter>
+struct NoWatch {
+  void operator()(std::size_t, const Vec3&) const {}
+};
+template <bool kFromGravity = false, class Before, class Moved = NoWatch, class After = NoAfter>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before, TeamCut cut = {}, const After& after = {}) {
-  auto one = [h, dt, gravity, before, after](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
-    before(i);
+                          const Before& before, TeamCut cut = {}, Moved moved = {}, const After& after = {}) {
+  auto one = [h, dt, gravity, before, moved, after](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     constexpr Rotor kRotor = decltype(rotor)::value;
-    integrate_detail::kick_body_twice<kRotor>(a, i, h);  // the closing kick and start_body's
-    integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
+    if constexpr (kFromGravity) {
+      Vec3 f = a.mass[i] * gravity, t = Vec3::Zero();  // N, N m
+      before.add_to(i, f, t);
+      integrate_detail::kick_body_twice<kRotor>(a, i, h, f, t);  // the closing kick and start_body's
+      integrate_detail::drift_body<kRotor>(a, i, dt);
+      moved(i, a.position[i]);
+      integrate_detail::predict_spin<kRotor>(a, i, h, t);  // the last step's torque
+    } else {
+      before(i);
+      integrate_detail::kick_body_twice<kRotor>(a, i, h, a.force[i], a.torque[i]);
+      integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
+    }
     after(a, i, rotor);
   };
   over_rotor_groups(b, groups, one, cut);

@@ -96,6 +96,12 @@ void RebuildTrigger::remeasure(const std::vector<Vec3>& x, const std::vector<Qua
     displacement_[i] = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
 }
 
+bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch) {
+  if (rebuild_count == 0 || x_built.size() != n || !q_built.empty()) return false;  // measure's other paths
+  watch = {x_built.data(), 0.5 * skin, &exceeded_};  // the limit as measure's
+  return true;
+}
+
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }
 
 }  // namespace polydem

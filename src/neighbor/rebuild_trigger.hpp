@@ -18,6 +18,18 @@ namespace polydem {
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius);
 
+// measure's test of points, body by body, for a pass that has just moved them (the joined
+// opening pass, integrate.hpp): |x - x at the build| <= limit, or the answer is set.
+struct PointWatch {
+  const Vec3* x_built;          // m
+  double limit;                 // m, skin/2
+  std::atomic<bool>* exceeded;  // set, never cleared here: any order gives the same
+  [[gnu::always_inline]] void operator()(std::size_t i, const Vec3& x) const {
+    if (!((x - x_built[i]).norm() <= limit) && !exceeded->load(std::memory_order_relaxed))  // NaN too
+      exceeded->store(true, std::memory_order_relaxed);
+  }
+};
+
 class RebuildTrigger {
  public:
   // Remembers the state the lists were built at; counts one rebuild. `points`: every body's
@@ -38,6 +50,9 @@ class RebuildTrigger {
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
                double skin, TeamCut cut = {});
   bool take_exceeded();
+  // measure's test of n points done by the pass that moves them (true: `watch` set), where the
+  // bodies are points and a build was marked for as many; the pass then stands for measure.
+  bool watch_points(std::size_t n, double skin, PointWatch& watch);
   // measure's bounds again for the bodies `some` alone, the answer unchanged (a rank's ghosts:
   // their owners answer for them); nothing for points, which keep no bound.
   void remeasure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,

@@ -170,7 +170,8 @@ void RankContacts::add_sums(Bodies& bodies) {
 void RankContacts::kick_closing(Bodies& bodies, double h) { kick_after(bodies, h, owned_rotors_, owned_sums(bodies)); }
 
 void RankContacts::close_and_start(Bodies& bodies, double h, double dt, const Vec3& gravity) {
-  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies), {}, store_.write_through(local_of_));
+  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies), {}, NoWatch{},
+                       store_.write_through(local_of_));
   store_written_ = true;
 }
 

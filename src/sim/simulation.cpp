@@ -208,14 +208,23 @@ void Simulation::step(bool leave_kick_open) {
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
   // Each thread moves the bodies whose pairs it walks (one process: the contact stage's cut).
   const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
+  // Nothing but gravity acts: the joined pass makes the forces in registers and, for spheres'
+  // lists, runs the rebuild trigger's test on each position it moves (no pass of its own).
+  const bool from_gravity = close_last && one_process && !external_;
+  PointWatch watch;
+  const bool watched = from_gravity && engine_->watch_motion(all_owned(bodies), watch);
   in_team(team, [&] {
-    if (close_last && one_process)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, engine_->force_sums(all_owned(bodies)), cut);
+    if (watched)
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch);
+    else if (from_gravity)
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
+    else if (close_last && one_process)
+      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
     else if (close_last)
       ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
-    if (contacts && one_process) engine_->measure_motion(all_owned(bodies));
+    if (contacts && one_process) engine_->measure_motion(all_owned(bodies), watched);
   });
   if (close_last) sums_taken();
   drivers.advance(time(), dt_);
@@ -239,7 +248,7 @@ void Simulation::step(bool leave_kick_open) {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       engine_->forces(local, drivers, dt_, !stale, false);
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, engine_->force_sums(local), engine_->body_cut());
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut());
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(bodies, 0.5 * dt_);
     } else {
@@ -259,9 +268,17 @@ void Simulation::close_step() {
     if (ranks_)
       ranks_->kick_closing(bodies, 0.5 * dt_);
     else
-      kick_after(bodies, 0.5 * dt_, rotors_, engine_->force_sums(all_owned(bodies)), engine_->body_cut());
+      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut());
   });
   sums_taken();
+}
+
+// One process: the sums a closing pass adds, from m gravity where nothing else acts (the
+// opening pass may not have kept it: close_and_start_step<true>).
+ForceSums Simulation::closing_sums() {
+  ForceSums sums = engine_->force_sums(all_owned(bodies));
+  if (!external_) sums.gravity_mass = bodies.mass.data(), sums.gravity = gravity_;
+  return sums;
 }
 
 // Every owned body's contact sum was read (by a closing kick): the next pair loop starts from zeros.

@@ -134,6 +134,7 @@ class Simulation {
   void driver_work_half();
   void contact_stage();
   void sums_taken();
+  ForceSums closing_sums();  // one process: the sums a closing pass adds (from gravity where nothing else acts)
   StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 
   Scene scene_;
