@@ -274,6 +274,10 @@ struct NoAfter {
   template <class Arrays, class Path>
   void operator()(const Arrays&, std::size_t, Path) const {}
 };
+// No watch of the positions a pass moves.
+struct NoWatch {
+  void operator()(std::size_t, const Vec3&) const {}
+};
 
 // The last step's closing pass (kick_after(b, h, groups, before)) and start_step in one pass
 // over the bodies, body by body: each body's arithmetic is theirs (the same bits), its arrays
@@ -286,9 +290,6 @@ struct NoAfter {
 // position (m) while the pass holds it (the rebuild trigger's test: no pass of its own).
 // after(arrays, i, rotor) runs on body i once its pass is done (a rank copies the new state to
 // its contact store while it is in registers).
-struct NoWatch {
-  void operator()(std::size_t, const Vec3&) const {}
-};
 template <bool kFromGravity = false, class Before, class Moved = NoWatch, class After = NoAfter>
 void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
                           const Before& before, TeamCut cut = {}, Moved moved = {}, const After& after = {}) {

@@ -62,7 +62,7 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
     exceeded_.store(true, std::memory_order_relaxed);
     return;
   }
-  const double limit = 0.5 * skin;  // m, each body may use half the skin
+  const double limit = move_limit(skin);  // m
   bool exceeded = false;            // by this thread's bodies
   if (q_built.empty()) {  // points: radius 0, displacement_bound is |dx|, and no bound is kept
     exceeded = points_exceed(x, limit, cut);
@@ -85,7 +85,7 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   bool exceeded = false;
   const auto [first, last] = team_share(x.size(), cut);
   for (std::size_t i = first; i < last; ++i)
-    if (!((x[i] - x_built[i]).norm() <= limit)) exceeded = true;  // NaN too
+    if (moved_past(x[i], x_built[i], limit)) exceeded = true;
   return exceeded;
 }
 
@@ -98,7 +98,7 @@ void RebuildTrigger::remeasure(const std::vector<Vec3>& x, const std::vector<Qua
 
 bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch) {
   if (rebuild_count == 0 || x_built.size() != n || !q_built.empty()) return false;  // measure's other paths
-  watch = {x_built.data(), 0.5 * skin, &exceeded_};  // the limit as measure's
+  watch = {x_built.data(), move_limit(skin), &exceeded_};
   return true;
 }
 

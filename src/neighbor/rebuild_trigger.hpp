@@ -18,14 +18,22 @@ namespace polydem {
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius);
 
+// m: how far each body may move from where the lists were built (half the skin).
+inline double move_limit(double skin) { return 0.5 * skin; }
+
+// Whether a point moved from x_built by more than limit (m), or to a NaN.
+[[gnu::always_inline]] inline bool moved_past(const Vec3& x, const Vec3& x_built, double limit) {
+  return !((x - x_built).norm() <= limit);
+}
+
 // measure's test of points, body by body, for a pass that has just moved them (the joined
-// opening pass, integrate.hpp): |x - x at the build| <= limit, or the answer is set.
+// opening pass, integrate.hpp): moved_past sets the answer.
 struct PointWatch {
   const Vec3* x_built;          // m
-  double limit;                 // m, skin/2
+  double limit;                 // m, move_limit
   std::atomic<bool>* exceeded;  // set, never cleared here: any order gives the same
   [[gnu::always_inline]] void operator()(std::size_t i, const Vec3& x) const {
-    if (!((x - x_built[i]).norm() <= limit) && !exceeded->load(std::memory_order_relaxed))  // NaN too
+    if (moved_past(x, x_built[i], limit) && !exceeded->load(std::memory_order_relaxed))
       exceeded->store(true, std::memory_order_relaxed);
   }
 };
