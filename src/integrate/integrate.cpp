@@ -112,9 +112,7 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups) {
 }
 
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity, TeamCut cut) {
-  over_rotor_groups(b, groups, [h, dt, gravity](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
-    integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
-  }, cut);
+  start_pass(b, h, dt, groups, gravity, cut);
 }
 
 void update_angular_velocity(Bodies& b) {

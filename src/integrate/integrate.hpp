@@ -131,8 +131,10 @@ void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const
 // state only, so only the last group that has bodies ends at a barrier (a pass over a mixed
 // scene meets once, not once per group). Equal spheres read one mass and inertia. Each thread
 // takes the bodies of its share of `cut` (the contact stage's, or none: static shares).
-template <class Body>
-void over_rotor_groups(Bodies& b, const RotorGroups& groups, const Body& body, TeamCut cut = {}) {
+// B: Bodies (by global id) or a rank's LocalStore (by local index), whatever arrays_of and
+// alike_arrays_of read.
+template <class B, class Body>
+void over_rotor_groups(B& b, const RotorGroups& groups, const Body& body, TeamCut cut = {}) {
   const bool isotropic = !groups.isotropic.empty(), asymmetric = !groups.asymmetric.empty();
   const bool sphere_wait = !isotropic && !asymmetric;
   if (groups.spheres_alike && groups.spheres_in_order)
@@ -243,8 +245,8 @@ template <Rotor kRotor, class Arrays>
 
 // kick(b, h, groups) with before(i) run on each body just before its kick (a step's closing
 // kick: the contact forces summed into force[i]): one pass and one barrier for both.
-template <class Before>
-void kick_after(Bodies& b, double h, const RotorGroups& groups, const Before& before, TeamCut cut = {}) {
+template <class B, class Before>
+void kick_after(B& b, double h, const RotorGroups& groups, const Before& before, TeamCut cut = {}) {
   auto one = [h, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
@@ -268,12 +270,14 @@ void predict_end_velocities(Bodies& b, double h, const RotorGroups& groups);
 // then force = m gravity and torque = 0 (the new step's forces start from gravity, m/s^2).
 // Each body's arithmetic is that of the separate calls: the same bits, one loop instead of four.
 void start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity, TeamCut cut = {});
+// start_step's pass over any B (over_rotor_groups): a rank's local arrays.
+template <class B>
+void start_pass(B& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity, TeamCut cut = {}) {
+  over_rotor_groups(b, groups, [h, dt, gravity](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+    integrate_detail::start_body<decltype(rotor)::value>(a, i, h, dt, gravity);
+  }, cut);
+}
 
-// No hook after a body's pass.
-struct NoAfter {
-  template <class Arrays, class Path>
-  void operator()(const Arrays&, std::size_t, Path) const {}
-};
 // No watch of the positions a pass moves.
 struct NoWatch {
   void operator()(std::size_t, const Vec3&) const {}
@@ -288,12 +292,10 @@ struct NoWatch {
 // nor written (48 + 48 bytes a body-step less memory traffic); `before` is then a ForceSums,
 // whose gravity_mass closing sets them at a closed step. moved(i, x) sees each body's new
 // position (m) while the pass holds it (the rebuild trigger's test: no pass of its own).
-// after(arrays, i, rotor) runs on body i once its pass is done (a rank copies the new state to
-// its contact store while it is in registers).
-template <bool kFromGravity = false, class Before, class Moved = NoWatch, class After = NoAfter>
-void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before, TeamCut cut = {}, Moved moved = {}, const After& after = {}) {
-  auto one = [h, dt, gravity, before, moved, after](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+template <bool kFromGravity = false, class B, class Before, class Moved = NoWatch>
+void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
+                          const Before& before, TeamCut cut = {}, Moved moved = {}) {
+  auto one = [h, dt, gravity, before, moved](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     constexpr Rotor kRotor = decltype(rotor)::value;
     if constexpr (kFromGravity) {
       Vec3 f = a.mass[i] * gravity, t = Vec3::Zero();  // N, N m
@@ -307,7 +309,6 @@ void close_and_start_step(Bodies& b, double h, double dt, const RotorGroups& gro
       integrate_detail::kick_body_twice<kRotor>(a, i, h, a.force[i], a.torque[i]);
       integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
     }
-    after(a, i, rotor);
   };
   over_rotor_groups(b, groups, one, cut);
 }

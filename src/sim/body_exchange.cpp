@@ -73,28 +73,22 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
 
 std::size_t motion_bytes(bool turning) { return (turning ? 16 : 12) * sizeof(double); }  // 4 vectors (1 quaternion)
 
-void pack_motion(const Bodies& bodies, const std::vector<std::uint32_t>& ids, bool turning, char* into) {
+void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, bool turning, char* into) {
   Writer w{into};
-  for (std::uint32_t b : ids) {
-    if (turning) w.field(bodies.orientation[b]);
-    velocity_fields(w, bodies, b);
+  for (std::uint32_t k : local) {
+    if (turning) w.field(store.orientation[k]);
+    velocity_fields(w, store, k);
   }
 }
 
-void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, Bodies& bodies,
-                   LocalStore& store) {
+void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, LocalStore& store) {
   Reader r{bytes};
-  for (std::size_t k = 0; k < to.ids.size(); ++k) {
-    const std::uint32_t b = to.ids[k], l = to.local[k];
-    if (turning) r.field(bodies.orientation[b]);
-    velocity_fields(r, bodies, b);
-    to.drifted[k] += bodies.velocity[b] * dt;  // the owner's drift (integrate.hpp drift_body): its bits
-    bodies.position[b] = store.position[l] = to.drifted[k];
-    if (turning) store.orientation[l] = bodies.orientation[b];
-    store.velocity[l] = bodies.velocity[b];
-    store.angular_velocity[l] = bodies.angular_velocity[b];
-    store.velocity_end[l] = bodies.velocity_end[b];
-    store.angular_velocity_end[l] = bodies.angular_velocity_end[b];
+  for (std::size_t k = 0; k < to.local.size(); ++k) {
+    const std::uint32_t l = to.local[k];
+    if (turning) r.field(store.orientation[l]);
+    velocity_fields(r, store, l);
+    to.drifted[k] += store.velocity[l] * dt;  // the owner's drift (integrate.hpp drift_body): its bits
+    store.position[l] = to.drifted[k];
   }
 }
 

@@ -27,16 +27,15 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
 // identity), not the position: the receiver drifts its copy as the owner did, x += v dt, the
 // same bits (the only write of a position between rebuilds). Spheres 96 bytes a body, else 128.
 std::size_t motion_bytes(bool turning);
-void pack_motion(const Bodies& bodies, const std::vector<std::uint32_t>& ids, bool turning, char* into);
-// Writes a pack_motion parcel of bodies `ids` into them and into the store at their local
-// indices `local`, each position `drifted[k]` (the k-th body's at the last step) moved by v dt first.
+// The motion of a rank's bodies at local indices `local` of its store (its owned bodies).
+void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, bool turning, char* into);
+// Writes a pack_motion parcel into the store's ghosts at local indices `local`, each position
+// `drifted[k]` (the k-th body's at the last step) moved by v dt first.
 struct MotionTarget {
-  const std::vector<std::uint32_t>& ids;
   const std::vector<std::uint32_t>& local;
   Vec3* drifted;  // m
 };
-void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, Bodies& bodies,
-                   LocalStore& store);
+void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, LocalStore& store);
 
 // The integration state of bodies `ids` with their ids.
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);

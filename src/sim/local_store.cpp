@@ -2,6 +2,30 @@
 
 namespace polydem {
 
+namespace {
+
+// What integration changes of a body, copied between two sets of arrays (Bodies or LocalStore).
+// What contacts read of a body (a ghost's state).
+template <class To, class From>
+void copy_pose(To& to, std::size_t t, const From& from, std::size_t f) {
+  to.position[t] = from.position[f];
+  to.orientation[t] = from.orientation[f];
+  to.velocity[t] = from.velocity[f];
+  to.angular_velocity[t] = from.angular_velocity[f];
+  to.velocity_end[t] = from.velocity_end[f];
+  to.angular_velocity_end[t] = from.angular_velocity_end[f];
+}
+
+template <class To, class From>
+void copy_motion(To& to, std::size_t t, const From& from, std::size_t f) {
+  copy_pose(to, t, from, f);
+  to.angular_momentum[t] = from.angular_momentum[f];
+  to.force[t] = from.force[f];
+  to.torque[t] = from.torque[f];
+}
+
+}  // namespace
+
 void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost) {
   global_id = std::move(ids);
   ghost = std::move(is_ghost);
@@ -9,42 +33,30 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
   shape.resize(n);
   scale.resize(n);
   mass.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    shape[k] = all.shape[global_id[k]];
-    scale[k] = all.scale[global_id[k]];
-    mass[k] = all.mass[global_id[k]];
-  }
-  for (auto* v : {&position, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end}) v->resize(n);
+  inertia.resize(n);
+  for (auto* v : {&position, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end, &angular_momentum,
+                  &force, &torque})
+    v->resize(n);
   orientation.resize(n);
-  refresh(all);
-  clear_forces();
-}
-
-void LocalStore::refresh(const Bodies& all, bool turning) {
-  // The arrays' addresses held in locals: read through the vectors, each copy reloaded them
-  // (Eigen's stores may alias anything).
-  const Vec3 *x = all.position.data(), *v = all.velocity.data(), *w = all.angular_velocity.data();
-  const Vec3 *ve = all.velocity_end.data(), *we = all.angular_velocity_end.data();
-  const Quat* q = all.orientation.data();
-  const std::uint32_t* id = global_id.data();
-  Vec3 *to_x = position.data(), *to_v = velocity.data(), *to_w = angular_velocity.data();
-  Vec3 *to_ve = velocity_end.data(), *to_we = angular_velocity_end.data();
-  Quat* to_q = orientation.data();
-  const std::size_t n = global_id.size();
   for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t g = id[k];
-    to_x[k] = x[g];
-    to_v[k] = v[g];
-    to_w[k] = w[g];
-    to_ve[k] = ve[g];
-    to_we[k] = we[g];
-    if (turning) to_q[k] = q[g];
+    const std::uint32_t g = global_id[k];
+    shape[k] = all.shape[g];
+    scale[k] = all.scale[g];
+    mass[k] = all.mass[g];
+    inertia[k] = all.inertia[g];
+    copy_motion(*this, k, all, g);
   }
 }
 
-void LocalStore::clear_forces() {
-  force.assign(global_id.size(), Vec3::Zero());
-  torque.assign(global_id.size(), Vec3::Zero());
+void LocalStore::publish(Bodies& all, bool with_ghosts) const {
+  for (std::size_t k = 0; k < global_id.size(); ++k)
+    if (!ghost[k]) copy_motion(all, global_id[k], *this, k);
+    else if (with_ghosts) copy_pose(all, global_id[k], *this, k);
+}
+
+void LocalStore::pull(const Bodies& all) {
+  for (std::size_t k = 0; k < global_id.size(); ++k)
+    if (!ghost[k]) copy_motion(*this, k, all, global_id[k]);
 }
 
 }  // namespace polydem

@@ -1,10 +1,11 @@
 #pragma once
-// One process's share of the bodies as the contact stage reads them: the bodies it owns and
-// ghosts of bodies owned elsewhere, in increasing global id (contact/local_bodies.hpp: why the
-// order gives the bits of one process). A ghost carries only what contacts read: pose,
-// velocities, shape, scale, mass and its global id. The set changes only at list rebuilds;
-// the owned bodies' state is written by the step's opening pass (write_through) or refreshed
-// from the global arrays, the ghosts' where their owners' parcels land (sim/ghost_plan.hpp).
+// One process's share of the bodies: the bodies it owns and ghosts of bodies owned elsewhere, in
+// increasing global id (contact/local_bodies.hpp: why the order gives the bits of one process).
+// A rank's one copy of its bodies' state between gathers: its passes integrate the owned bodies
+// here (arrays_of), by local index, and its contact stage reads them here; a ghost carries only
+// what contacts read (pose, velocities, shape, scale, mass, global id), written where its
+// owner's parcel lands (sim/ghost_plan.hpp). The set changes only at list rebuilds. The global
+// Bodies arrays get the owned bodies' state only where a gather or a writer reads it (publish).
 #include <cstdint>
 #include <vector>
 
@@ -20,48 +21,39 @@ struct LocalStore {
   std::vector<Vec3> position, velocity, angular_velocity;  // m, m/s, rad/s
   std::vector<Vec3> velocity_end, angular_velocity_end;   // m/s, rad/s, predicted for the step's end
   std::vector<Quat> orientation;
+  std::vector<Vec3> angular_momentum;  // kg m^2/s, principal frame (owned bodies)
   std::vector<int> shape;
   std::vector<double> scale, mass;  // -, kg
-  std::vector<Vec3> force, torque;  // N, N m: the contact sums of the owned bodies, when summed here
+  std::vector<Vec3> inertia;        // kg m^2, principal moments
+  // N, N m: the owned bodies' forces as integration keeps them (m gravity, drag, then the
+  // closing kick's contact sums added); a ghost's unused.
+  std::vector<Vec3> force, torque;
 
   // Holds the bodies `ids` of `all` (increasing), ghosts where `is_ghost` is 1, their state
-  // copied and their forces zero.
+  // (forces included) copied.
   void select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost);
-  // Copies what changes every step (pose and velocities) from the global arrays; `turning`
-  // false: no held body ever turns (spheres keep the identity), the orientations select()
-  // copied stand.
-  void refresh(const Bodies& all, bool turning = true);
-  void clear_forces();  // zeroes force and torque (before the engine sums into them)
-  // A step's opening pass hook (integrate.hpp's close_and_start_step `after`): writes owned body
-  // i's new pose and velocities at its local index while they are in registers, so the step's
-  // refresh (a second pass reading the global arrays back) is not needed.
-  struct Write;
-  Write write_through(const std::vector<std::int32_t>& local_of);
+  // The owned bodies' integration state into `all` at their global ids (before a gather,
+  // output or a rebuild reads the global arrays), and the ghosts' pose and velocities
+  // `with_ghosts` (a rebuild's migration reads a pair's other body); or back from it (pull:
+  // after something wrote them).
+  void publish(Bodies& all, bool with_ghosts = false) const;
+  void pull(const Bodies& all);
   LocalBodies view() {
     return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
             &shape,    &scale,       &mass,     &ghost,            &force,        &torque};
   }
 };
 
-struct LocalStore::Write {
-  const std::int32_t* local_of;  // global id -> local index
-  Vec3 *position, *velocity, *angular_velocity, *velocity_end, *angular_velocity_end;
-  Quat* orientation;
-  template <class Arrays, class Path>
-  [[gnu::always_inline]] void operator()(const Arrays& a, std::size_t i, Path) const {
-    const std::size_t l = std::size_t(local_of[i]);
-    position[l] = a.position[i];
-    velocity[l] = a.velocity[i];
-    angular_velocity[l] = a.angular_velocity[i];
-    velocity_end[l] = a.velocity_end[i];
-    angular_velocity_end[l] = a.angular_velocity_end[i];
-    if constexpr (Path::value != Rotor::sphere) orientation[l] = a.orientation[i];  // a sphere's never turns
-  }
-};
-
-inline LocalStore::Write LocalStore::write_through(const std::vector<std::int32_t>& local_of) {
-  return {local_of.data(),     position.data(),    velocity.data(), angular_velocity.data(),
-          velocity_end.data(), angular_velocity_end.data(), orientation.data()};
+// The integration passes' arrays (integrate.hpp's over_rotor_groups), by local index.
+inline BodyArrays arrays_of(LocalStore& s) {
+  return {s.position.data(),     s.orientation.data(),          s.velocity.data(),         s.angular_velocity.data(),
+          s.velocity_end.data(), s.angular_velocity_end.data(), s.angular_momentum.data(), s.force.data(),
+          s.torque.data(),       s.mass.data(),                 s.inertia.data()};
+}
+inline AlikeArrays alike_arrays_of(LocalStore& s, std::size_t like) {
+  const BodyArrays a = arrays_of(s);
+  return {a.position, a.orientation,      a.velocity, a.angular_velocity,        a.velocity_end,
+          a.angular_velocity_end, a.angular_momentum, a.force, a.torque, {s.mass[like]}, {s.inertia[like]}};
 }
 
 }  // namespace polydem

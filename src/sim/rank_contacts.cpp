@@ -82,6 +82,7 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
 // the movers and their histories go to their new owners, then the ghosts to their holders,
 // point to point (sim/rank_migration.hpp).
 void RankContacts::migrate_bodies(Bodies& bodies) {
+  publish(bodies);  // what moves, and the ghosts' centres: a pair's slots go to both owners
   long bad = -1;
   for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
     if (!bodies.position[b].allFinite()) {
@@ -106,9 +107,9 @@ void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const
     local_of_[plan_.local[k]] = std::int32_t(k);
     if (plan_.ghost[k]) ghost_local_.push_back(std::uint32_t(k));
   }
-  owned_rotors_ = group_rotors(bodies, plan_.owned, shapes_);
-  size_parcels(bodies);
   store_.select(bodies, plan_.local, plan_.ghost);
+  owned_rotors_ = local_rotors(group_rotors(bodies, plan_.owned, shapes_));
+  size_parcels();
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(body_table, local_of_, false);
   engine_->driver_pairs() = localise(driver_table, local_of_, true);
@@ -133,10 +134,8 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
   const bool exchange = !forced_ && engine_;
-  // The opening pass wrote the owned bodies into the store, the ghosts hold the last parcels': no refresh.
-  refresh_ = !std::exchange(store_written_, false);
-  if (exchange && !fold_) exchange_ghosts(bodies, dt);
-  const bool stale = exchange && fold_ ? exchange_deciding(bodies, drivers, dt) : lists_stale(drivers);
+  if (exchange && !fold_) exchange_ghosts(dt);
+  const bool stale = exchange && fold_ ? exchange_deciding(drivers, dt) : lists_stale(drivers);
   if (stale) {
     // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
     if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
@@ -161,18 +160,32 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   share_results(drivers, stale);
 }
 
-void RankContacts::add_sums(Bodies& bodies) {
-  const OwnedSums sums = owned_sums(bodies);
-  for (std::uint32_t b : plan_.owned) sums(b);
+void RankContacts::add_sums() {
+  const ForceSums sums = engine_->force_sums(store_.view());
+  for (std::size_t k = 0; k < store_.ghost.size(); ++k)
+    if (!store_.ghost[k]) sums(k);
   sums_taken();
 }
 
-void RankContacts::kick_closing(Bodies& bodies, double h) { kick_after(bodies, h, owned_rotors_, owned_sums(bodies)); }
+void RankContacts::start(const Bodies& bodies, double h, double dt, const Vec3& gravity) {
+  if (std::exchange(pull_, false)) store_.pull(bodies);
+  start_pass(store_, h, dt, owned_rotors_, gravity);
+}
 
-void RankContacts::close_and_start(Bodies& bodies, double h, double dt, const Vec3& gravity) {
-  close_and_start_step(bodies, h, dt, owned_rotors_, gravity, owned_sums(bodies), {}, NoWatch{},
-                       store_.write_through(local_of_));
-  store_written_ = true;
+void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_, engine_->force_sums(store_.view())); }
+
+void RankContacts::close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity) {
+  if (std::exchange(pull_, false)) store_.pull(bodies);
+  close_and_start_step(store_, h, dt, owned_rotors_, gravity, engine_->force_sums(store_.view()));
+}
+
+// The owned bodies' groups by local index (group_rotors gave global ids: the same order).
+RotorGroups RankContacts::local_rotors(RotorGroups g) const {
+  for (auto* ids : {&g.spheres, &g.isotropic, &g.asymmetric})
+    for (std::size_t& i : *ids) i = std::size_t(local_of_[i]);
+  g.spheres_in_order = true;
+  for (std::size_t k = 0; k < g.spheres.size(); ++k) g.spheres_in_order = g.spheres_in_order && g.spheres[k] == k;
+  return g;
 }
 
 void RankContacts::sums_taken() {
@@ -182,39 +195,35 @@ void RankContacts::sums_taken() {
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its
-// owner. The store is refreshed while the ghosts travel (theirs then a step old) unless the
-// opening pass wrote it, and each ghost written into it too when it lands.
-void RankContacts::exchange_ghosts(Bodies& bodies, double dt) {
+// owner, written into the store when it lands.
+void RankContacts::exchange_ghosts(double dt) {
   const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
-  for (Parcel& p : out_) pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());
-  link_.begin_exchange(out_, in_);
-  if (refresh_) store_.refresh(bodies, turning);
-  link_.end_exchange();
-  unpack_parcels(bodies, dt);
+  for (std::size_t k = 0; k < out_.size(); ++k) pack_motion(store_, send_local_[k], turning, out_[k].bytes.data());
+  link_.exchange(out_, in_);
+  unpack_parcels(dt);
 }
 
-// Each landed motion parcel into the ghosts of `bodies` and of the store, drifted by dt (s).
-void RankContacts::unpack_parcels(Bodies& bodies, double dt) {
+// Each landed motion parcel into the store's ghosts, drifted by dt (s).
+void RankContacts::unpack_parcels(double dt) {
   const bool turning = !settings_.spheres_only;
   for (std::size_t k = 0; k < in_.size(); ++k)
-    unpack_motion(in_[k].bytes.data(), {plan_.receive[in_[k].rank], receive_local_[k], drifted_[k].data()}, turning,
-                  dt, bodies, store_);
+    unpack_motion(in_[k].bytes.data(), {receive_local_[k], drifted_[k].data()}, turning, dt, store_);
 }
 
 // The ghost exchange carrying the step's decision (fold_: every rank a neighbour of every
-// other), so a step meets the other ranks once. The store is refreshed and measured first, its
+// other), so a step meets the other ranks once. The store is measured first, its
 // ghosts a step old (they cannot exceed: their owners' measures answered for them then), each
 // parcel ends with its sender's requests, and the ghosts are measured again once landed.
-bool RankContacts::exchange_deciding(Bodies& bodies, const Drivers& drivers, double dt) {
+bool RankContacts::exchange_deciding(const Drivers& drivers, double dt) {
   const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
-  if (refresh_) store_.refresh(bodies, turning);
   Requests any = requests_here(drivers);
-  for (Parcel& p : out_) {
-    pack_motion(bodies, plan_.send[p.rank], turning, p.bytes.data());
+  for (std::size_t k = 0; k < out_.size(); ++k) {
+    Parcel& p = out_[k];
+    pack_motion(store_, send_local_[k], turning, p.bytes.data());
     std::memcpy(p.bytes.data() + p.bytes.size() - sizeof any, &any, sizeof any);
   }
   link_.exchange(out_, in_);
-  unpack_parcels(bodies, dt);
+  unpack_parcels(dt);
   for (std::size_t k = 0; k < in_.size(); ++k) {
     Requests theirs = 0;
     std::memcpy(&theirs, in_[k].bytes.data() + in_[k].bytes.size() - sizeof theirs, sizeof theirs);
@@ -226,12 +235,13 @@ bool RankContacts::exchange_deciding(Bodies& bodies, const Drivers& drivers, dou
 }
 
 // The ghost exchange's parcels, sized once per plan (no allocation a step), the local indices
-// of each received parcel's bodies (after local_of_) and their positions now (`bodies`: the
-// ghosts current, as after a rebuild), which the next steps drift. The parcels carry the step's
+// of each parcel's bodies (after local_of_) and the received ones' positions now (the store
+// just selected), which the next steps drift. The parcels carry the step's
 // requests when every rank sends to and receives from every other (a collective: all agree).
-void RankContacts::size_parcels(const Bodies& bodies) {
+void RankContacts::size_parcels() {
   out_.clear();
   in_.clear();
+  send_local_.clear();
   receive_local_.clear();
   drifted_.clear();
   std::uint64_t links = 0;  // other ranks this one sends to and receives from
@@ -240,19 +250,24 @@ void RankContacts::size_parcels(const Bodies& bodies) {
   const std::size_t word = fold_ ? sizeof(Requests) : 0;  // bytes after the ghosts
   const std::size_t body = motion_bytes(!settings_.spheres_only);
   for (int q = 0; q < link_.ranks(); ++q) {
-    if (!plan_.send[q].empty()) out_.push_back({q, std::vector<char>(plan_.send[q].size() * body + word)});
+    if (!plan_.send[q].empty()) {
+      out_.push_back({q, std::vector<char>(plan_.send[q].size() * body + word)});
+      std::vector<std::uint32_t>& local = send_local_.emplace_back();
+      for (std::uint32_t b : plan_.send[q]) local.push_back(std::uint32_t(local_of_[b]));
+    }
     if (plan_.receive[q].empty()) continue;
     in_.push_back({q, std::vector<char>(plan_.receive[q].size() * body + word)});
     std::vector<std::uint32_t>& local = receive_local_.emplace_back();
     std::vector<Vec3>& x = drifted_.emplace_back();
     for (std::uint32_t b : plan_.receive[q]) {
       local.push_back(std::uint32_t(local_of_[b]));
-      x.push_back(bodies.position[b]);
+      x.push_back(store_.position[local.back()]);
     }
   }
 }
 
 void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
+  store_.publish(bodies);
   const std::vector<char> mine = pack_owned(bodies, plan_.owned);
   const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);
   for (int r = 0; r < int(all.size()); ++r)

@@ -10,8 +10,9 @@
 // sums are reduced only at output rows and when the ledger closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
-// reads the loads summed over the ranks and a sample of the centres. Every rank keeps arrays
-// for all bodies: only its owned bodies and ghosts are current between gathers.
+// reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
+// bodies in its LocalStore (one copy of their state); it keeps arrays for all bodies, which get
+// its owned bodies' state only where they are read (publish: gathers, output, rebuilds).
 #include <memory>
 #include <vector>
 
@@ -36,18 +37,6 @@ struct ReactionShare {
 // Sets each driver's reaction from every rank's touching driver pairs, in one-process order.
 void add_reactions(std::vector<ReactionShare> all, Drivers& drivers);
 
-// The closing kick's hook (integrate.hpp's kick_after): owned body i's contact sum of the
-// step, read at its local index, added to its force and torque (ForceSums::add_to).
-struct OwnedSums {
-  ForceSums local;               // its force and torque unused: local indices
-  const std::int32_t* local_of;  // global id -> local index
-  Vec3* force;                   // N, per global id
-  Vec3* torque;                  // N m
-  [[gnu::always_inline]] void operator()(std::size_t i) const {
-    local.add_to(std::size_t(local_of[i]), force[i], torque[i]);
-  }
-};
-
 class RankContacts {
  public:
   RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies, ContactSettings settings);
@@ -57,15 +46,24 @@ class RankContacts {
   // whose lists hold the table of histories (read at a forced rebuild, written by
   // gather_table).
   void compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole);
-  // The step's closing kick of the owned bodies with their contact sums (after compute), alone
-  // (kick_closing) or joined to the next step's opening pass (close_and_start, integrate.hpp);
-  // called by every thread of a team; then sums_taken(), which clears the ghosts' sums too, so
-  // the next pair loop starts from zeros. Here, not in Simulation's unit: beside one process's
-  // passes there, GCC outlined an Eigen += of the cubes' opening pass (+0.6% a step).
-  void kick_closing(Bodies& bodies, double h);
-  void close_and_start(Bodies& bodies, double h, double dt, const Vec3& gravity);
+  // The passes over the owned bodies, in the store (its one copy of their state): a step's
+  // opening (start: integrate.hpp's start_step), its closing kick with their contact sums
+  // (after compute), alone (kick_closing) or joined to the next step's opening pass
+  // (close_and_start); called by every thread of a team; then sums_taken(), which clears the
+  // ghosts' sums too, so the next pair loop starts from zeros. Here, not in Simulation's unit:
+  // beside one process's passes there, GCC outlined an Eigen += of the cubes' opening pass
+  // (+0.6% a step). An opening after force_rebuild first takes the owned state from `bodies`.
+  void start(const Bodies& bodies, double h, double dt, const Vec3& gravity);
+  void kick_closing(double h);
+  void close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity);
   void sums_taken();
-  void add_sums(Bodies& bodies);  // the same with no kick: each owned body's sum added to its force
+  void add_sums();  // the same with no kick: each owned body's sum added to its force
+  // The owned bodies' state and the ghosts' poses into `bodies` (the steps keep them in the
+  // store): before anything but this class reads `bodies` (output, checkpoints, checks, a
+  // contact piece's points), and store_from_bodies after something else wrote them (drag and
+  // fluid forces).
+  void publish(Bodies& bodies) const { store_.publish(bodies, true); }
+  void store_from_bodies(const Bodies& bodies) { store_.pull(bodies); }
   // Whether the next steps share the drivers' reactions (the servo and the driver work of a
   // moving driver read them each step, output only at its rows); when not, only the contact
   // count, and the drivers keep their last reactions.
@@ -74,8 +72,9 @@ class RankContacts {
   // decision; a step that sees one keeps the records and reactions a checkpoint reads.
   void ask_stop(bool asked) { stop_asked_ = asked; }
   bool stop_seen() const { return stop_seen_; }  // some rank asked before this step's collective
-  // Rebuilds at the next step from `whole`'s lists (a checkpoint read: the table on every rank).
-  void force_rebuild() { forced_ = true; }
+  // Rebuilds at the next step from `whole`'s lists and `bodies` (a checkpoint read: the table
+  // and the state on every rank).
+  void force_rebuild() { forced_ = pull_ = true; }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
   // (a checkpoint written: the table went to rank 0 only).
   void rebuild_next_step() { rebuild_asked_ = true; }
@@ -84,7 +83,7 @@ class RankContacts {
   void gather_table(ContactEngine& whole, bool to_root = false) const;
 
   // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
-  // bodies, gathered (a collective: output, drag and fluid forces; never a rebuild).
+  // bodies, published and gathered (a collective: output, drag and fluid forces; never a rebuild).
   void sync_bodies(Bodies& bodies, bool to_root = false) const;
   // What this rank writes of the state (VTK pieces, checkpoint pieces): the bodies it owns in
   // increasing id and the active slots it answers for (its body pairs whose lower body it owns,
@@ -101,8 +100,6 @@ class RankContacts {
   // This rank's lists (null before its first step) and their bodies (local ids).
   const ContactEngine* lists() const { return engine_.get(); }
   const LocalStore& store() const { return store_; }
-  // The bodies this rank integrates, by rotation path (empty before the first compute).
-  const RotorGroups& owned_rotors() const { return owned_rotors_; }
   std::size_t owned() const { return plan_.owned.size(); }
   std::size_t ghosts() const { return plan_.local.size() - plan_.owned.size(); }
 
@@ -135,7 +132,7 @@ class RankContacts {
   using Requests = std::uint64_t;  // bit 0: rebuild, bit 1: stop
   Requests requests_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
-  bool exchange_deciding(Bodies& bodies, const Drivers& drivers, double dt);
+  bool exchange_deciding(const Drivers& drivers, double dt);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
   void migrate_bodies(Bodies& bodies);
   void adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table);
@@ -144,12 +141,10 @@ class RankContacts {
   void recut_if_unbalanced(const Bodies& bodies);
   std::vector<char> cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void exchange_ghosts(Bodies& bodies, double dt);
-  void unpack_parcels(Bodies& bodies, double dt);
-  OwnedSums owned_sums(Bodies& bodies) {
-    return {engine_->force_sums(store_.view()), local_of_.data(), bodies.force.data(), bodies.torque.data()};
-  }
-  void size_parcels(const Bodies& bodies);
+  void exchange_ghosts(double dt);
+  void unpack_parcels(double dt);
+  RotorGroups local_rotors(RotorGroups global) const;
+  void size_parcels();
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
 
@@ -163,16 +158,15 @@ class RankContacts {
   double load_share_ = 0.0;
   GhostPlan plan_;
   std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)
-  RotorGroups owned_rotors_;
+  RotorGroups owned_rotors_;  // the owned bodies by rotation path, local indices
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
-  std::vector<std::vector<std::uint32_t>> receive_local_;  // per parcel of in_: its bodies' local indices
+  std::vector<std::vector<std::uint32_t>> send_local_, receive_local_;  // per parcel of out_, in_: its bodies' local indices
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
-  bool store_written_ = false;  // the opening pass wrote the owned bodies' new state into store_
-  bool refresh_ = true;         // this step's ghost exchange refreshes store_ from the global arrays
+  bool pull_ = false;  // the next opening pass first takes the owned bodies' state from the global arrays
   bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
   bool rebuild_asked_ = false;

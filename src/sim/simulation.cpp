@@ -129,7 +129,8 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
 void Simulation::contact_stage() {
   if (ranks_) {
     ranks_->compute(bodies, drivers, dt_, *engine_);
-    ranks_->add_sums(bodies);
+    ranks_->add_sums();
+    ranks_->publish(bodies);
   } else {
     engine_->compute(all_owned(bodies), drivers, dt_);
   }
@@ -204,7 +205,8 @@ void Simulation::step(bool leave_kick_open) {
   // The bodies this rank moves (all without a contact stage: nothing to cut); a rebuild in
   // the contact stage hands some to other ranks before the closing kick (a reference: it
   // reads the new owners).
-  const RotorGroups& moved = one_process || !contacts ? rotors_ : ranks_->owned_rotors();
+  const RotorGroups& moved = rotors_;  // a rank's own passes move its owned bodies, in its store
+  const bool rank_passes = !one_process && contacts;
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
   // Each thread moves the bodies whose pairs it walks (one process: the contact stage's cut).
   const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
@@ -221,7 +223,9 @@ void Simulation::step(bool leave_kick_open) {
     else if (close_last && one_process)
       close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
     else if (close_last)
-      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);  // its owned bodies: `moved`
+      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);
+    else if (rank_passes)
+      ranks_->start(bodies, 0.5 * dt_, dt_, gravity_);
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
     if (contacts && one_process) engine_->measure_motion(all_owned(bodies), watched);
@@ -232,6 +236,7 @@ void Simulation::step(bool leave_kick_open) {
   if (external_ && !one_process) ranks_->sync_bodies(bodies);
   // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
   if (external_) ledger.external_work += external_->add(bodies) * dt_;
+  if (external_ && rank_passes) ranks_->store_from_bodies(bodies);  // the owned bodies' forces
   bool stale = false;
   if (contacts) {
     // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half
@@ -250,12 +255,13 @@ void Simulation::step(bool leave_kick_open) {
       engine_->forces(local, drivers, dt_, !stale, false);
       if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut());
     } else if (contacts) {
-      if (!leave_kick_open) ranks_->kick_closing(bodies, 0.5 * dt_);
+      if (!leave_kick_open) ranks_->kick_closing(0.5 * dt_);
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
   if (contacts && !leave_kick_open) sums_taken();
+  if (rank_passes && !leave_kick_open) ranks_->publish(bodies);  // a closed step's state is read
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
   ++step_;
@@ -266,11 +272,12 @@ void Simulation::close_step() {
   if (!std::exchange(kick_open_, false)) return;
   in_team(bodies.size() >= kParallelMinItems, [&] {
     if (ranks_)
-      ranks_->kick_closing(bodies, 0.5 * dt_);
+      ranks_->kick_closing(0.5 * dt_);
     else
       kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut());
   });
   sums_taken();
+  if (ranks_) ranks_->publish(bodies);
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the

@@ -76,8 +76,7 @@ SplitRun run_split(int parts, int steps, double margin, bool ghosts = true) {
     const bool stale = whole.lists_stale(all_owned(bodies), drivers);
     bool any_stale = false;  // the global decision: every part measures its bodies
     for (Part& part : split) {
-      part.store.refresh(bodies);
-      part.store.clear_forces();
+      part.store.select(bodies, part.store.global_id, part.store.ghost);  // the state now, forces zero
       any_stale = part.engine->lists_stale(part.store.view(), part.drivers) || any_stale;
     }
     REQUIRE(any_stale == stale);
