@@ -26,15 +26,12 @@ namespace pair_loop_detail {
 }
 
 // Chunk t's home bodies' sums started from their pairs in earlier chunks (all foreign, computed).
-inline void start_home_sums(DirectSums& direct, int t) {
+// `zero`: every sum is +0 already (DirectSums::zero at the loop's start), so only the bodies with
+// such pairs are written (the bed's second chunk wrote 1,741 sums a step where ~300 need one).
+inline void start_home_sums(DirectSums& direct, int t, bool zero) {
   const PairSplit& split = direct.split;
   BodySum* const sums = direct.sums.data();
-  if (t == 0) {  // no earlier chunk
-    if (std::exchange(direct.zero, false)) return;
-    for (std::uint32_t h = split.home_begin[0]; h < split.home_begin[1]; ++h) sums[split.homes[h]] = BodySum{};
-    return;
-  }
-  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) {
+  auto start = [&](std::uint32_t h) __attribute__((always_inline)) {
     BodySum s;
     for (std::uint32_t e = split.early_begin[h]; e < split.early_begin[h + 1]; ++e) {
       const ForeignResult& r = direct.foreign[split.early[e] >> 1];
@@ -44,24 +41,12 @@ inline void start_home_sums(DirectSums& direct, int t) {
         add_as_i(s, r.force_i, r.torque_i);
     }
     sums[split.homes[h]] = s;
+  };
+  if (zero) {
+    for (std::uint32_t e = split.early_homes_begin[t]; e < split.early_homes_begin[t + 1]; ++e) start(split.early_homes[e]);
+    return;
   }
-}
-
-// The foreign pairs, shared by the team in fixed shares (each pair's slot stays in one core's cache
-// from step to step); ends at a barrier (the chunks' walks read them).
-template <class Kernel>
-void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
-  const PairSplit& split = direct.split;
-  const std::size_t n_foreign = split.foreign_side.size();
-#pragma omp for schedule(static)
-  for (std::size_t f = 0; f < n_foreign; ++f) {
-    const std::uint32_t k = split.foreign[f];
-    const PairTotals t = kernel(k, scratch);
-    const bool ended = list.touching[k] != 0 && t.contacts == 0;  // touching at the last step, not now
-    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, ended};
-    list.touching[k] = std::uint16_t(t.contacts);
-    list.pending[k] += t.energy;
-  }
+  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) start(h);
 }
 
 // A pair's terms in its bodies' sums.
@@ -217,6 +202,45 @@ template <class Kernel>
   if (waiting != kNone) keep_results(list, waiting, steady_alone(kernel, waiting, scratch), contacts, ended);
 }
 
+// The foreign pairs, shared by the team in fixed shares (each pair's slot stays in one core's cache
+// from step to step), steady ones two at a time as in the walk (each result is its own: any order
+// gives the same bits); ends at a barrier (the chunks' walks read them).
+template <class Kernel>
+void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
+  const PairSplit& split = direct.split;
+  const auto [first, last] = team_share(split.foreign_side.size(), TeamCut{});
+  const auto keep = [&](std::size_t f, const PairTotals& t) __attribute__((always_inline)) {
+    const std::uint32_t k = split.foreign[f];
+    const bool ended = list.touching[k] != 0 && t.contacts == 0;  // touching at the last step, not now
+    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, ended};
+    list.touching[k] = std::uint16_t(t.contacts);
+    list.pending[k] += t.energy;
+  };
+  if constexpr (requires { Kernel::kTwoLanes; }) {
+    constexpr std::size_t kNone = ~std::size_t(0);
+    std::size_t waiting = kNone;
+    const auto alone = [&](std::size_t f) __attribute__((noinline)) { keep(f, kernel(split.foreign[f], scratch)); };
+    for (std::size_t f = first; f < last; ++f) {
+      if (!kernel.candidate(split.foreign[f])) {
+        keep(f, kernel(split.foreign[f], scratch));
+      } else if (waiting == kNone) {
+        waiting = f;
+      } else {
+        const std::size_t ordinal[2] = {std::exchange(waiting, kNone), f};
+        const std::uint32_t two[2] = {split.foreign[ordinal[0]], split.foreign[f]};
+        kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
+          if (!t) return alone(ordinal[l]);
+          keep(ordinal[l], *t);
+        });
+      }
+    }
+    if (waiting != kNone) keep(waiting, steady_alone(kernel, split.foreign[waiting], scratch));
+  } else {
+    for (std::size_t f = first; f < last; ++f) keep(f, kernel(split.foreign[f], scratch));
+  }
+#pragma omp barrier
+}
+
 // Block b's pairs: each one's forces kept in the list, its energy added to its pending sum in
 // step order, the block's contacts counted and its ended contacts flagged.
 template <class Kernel>
@@ -248,9 +272,14 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
       direct.foreign.resize(direct.split.foreign_side.size());
     }
   }
-  if (!direct.foreign.empty()) pair_loop_detail::foreign_pair_forces(list, kernel, direct, scratch);
   const int t = omp_get_thread_num();
-  pair_loop_detail::start_home_sums(direct, t);
+  const bool foreign = !direct.foreign.empty();
+  // Every thread reads the flag before the foreign pairs' barrier, thread 0 clears it after (without
+  // foreign pairs the others do not read it: they start their sums from nothing).
+  const bool zero = (foreign || t == 0) && direct.zero;
+  if (foreign) pair_loop_detail::foreign_pair_forces(list, kernel, direct, scratch);
+  if (t == 0) direct.zero = false;
+  pair_loop_detail::start_home_sums(direct, t, zero);
   pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t);
   if constexpr (!kNoWait) {
 #pragma omp barrier

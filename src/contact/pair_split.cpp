@@ -140,6 +140,14 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
   split.early.resize(split.early_begin.back());
   fill.assign(split.early_begin.begin(), split.early_begin.end() - 1);
   for_each_early([&](std::uint32_t h, std::uint32_t entry) { split.early[fill[h]++] = entry; });
+  // The home bodies with early pairs, by chunk: a chunk whose sums start at +0 starts these alone.
+  split.early_homes_begin.assign(threads + 1, 0);
+  split.early_homes.clear();
+  for (int t = 0; t < threads; ++t) {
+    for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h)
+      if (split.early_begin[h] < split.early_begin[h + 1]) split.early_homes.push_back(h);
+    split.early_homes_begin[t + 1] = std::uint32_t(split.early_homes.size());
+  }
 }
 
 }  // namespace polydem

@@ -35,6 +35,8 @@ struct PairSplit {
   std::vector<std::uint32_t> homes;          // the bodies with pairs, by home chunk
   std::vector<std::uint32_t> early_begin;    // per entry of `homes` + 1: its pairs in earlier chunks
   std::vector<std::uint32_t> early;          // foreign ordinal << 1 | (1 when the body is j), increasing
+  std::vector<std::uint32_t> early_homes_begin;  // per chunk + 1: its entries of `homes` with early pairs
+  std::vector<std::uint32_t> early_homes;        // those entries (indices of `homes`), by chunk
 };
 
 // Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the work
@@ -54,7 +56,8 @@ struct DirectSums {
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`
   // Every sum is +0 (reset, or each taken and cleared by ForceSums since the loop): the first
   // chunk's walk then starts from them as they are, no pass to clear its home bodies' sums.
-  // Read and cleared in the loop by the first chunk's thread alone.
+  // Read by every thread at the loop's start (then only the sums with early pairs are started),
+  // cleared by the first chunk's thread after the foreign pairs' barrier.
   bool zero = false;
   void reset(std::size_t n_bodies) {  // at each rebuild: the split is cut again in the loop
     sums.assign(n_bodies, BodySum{});

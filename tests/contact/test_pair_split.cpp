@@ -123,6 +123,10 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
     CHECK(wrong_blocks == 0);
     CHECK((step % 2 ? ends == 0 : ends > 0));  // contacts end at the parting steps only
     CHECK(direct.split.threads == threads);
+    if (step % 2) {  // the sums taken and cleared, as a closing pass does (ForceSums): the next loop starts from them
+      std::fill(direct.sums.begin(), direct.sums.end(), BodySum{});
+      direct.zero = true;
+    }
   }
 }
 
@@ -175,6 +179,14 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
     int wrong_home = 0;
     for (std::uint32_t b = 0; b < n_bodies; ++b) wrong_home += home[b] != last[b];
     CHECK(wrong_home == 0);
+    // The homes with pairs in earlier chunks, listed by chunk (none in the first).
+    CHECK(split.early_homes_begin[1] == 0);
+    for (int t = 0; t < threads; ++t) {
+      std::uint32_t with_early = 0;
+      for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h)
+        with_early += split.early_begin[h] < split.early_begin[h + 1];
+      CHECK(split.early_homes_begin[t + 1] - split.early_homes_begin[t] == with_early);
+    }
     // Ids that follow space: only a boundary layer of pairs is foreign.
     CHECK(split.foreign_side.size() <= std::size_t(threads - 1) * pairs.size() / 10);
   }
