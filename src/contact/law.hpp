@@ -199,6 +199,16 @@ template <class Normal, bool kLone>
   return h.fd + Normal::spring(law, k.r_star, weight_last, std::max(-h.gap, 0.0));
 }
 
+// s, how long the tangential spring has been on over this step where it was zero at n (`on`,
+// s: the time since the touch; share_opened_time): the margin the dashpot left under the cap at
+// n (its force at the velocity at n, 2 vt - vt_end; fp_last, N, the normal force then) and now
+// (cap, N, mu fp; nu_t_w, N s/m, the dashpot now; nu_t_last, then).
+[[gnu::noinline]] inline double spring_free_time(const Vec3& vt, const Vec3& vt_end, double nu_t_w, double nu_t_last,
+                                                 double cap, double cap_last, double on, double dt) {
+  if (on != dt) return on;  // it started this step: from the touch
+  return share_opened_time(cap_last - nu_t_last * (2.0 * vt - vt_end).norm(), cap - nu_t_w * vt_end.norm(), dt);
+}
+
 // The end-of-step dashpot (second_order.hpp) with the onset and release pushes.
 template <class Normal, bool kLone>
 [[gnu::always_inline]] inline NormalForce dashpot_normal_force(const LawParams& law, const ContactKinematics& k,
@@ -346,7 +356,10 @@ template <class Parts, bool kLone = false, Stored kStored = Stored::kFill>
     const auto vt_end = [&] { return Vec3(k.v_end - k.v_end.dot(k.normal) * k.normal); };  // m/s, what the dashpot reads
     if (tangential_damping) damper = tangential_dashpot(vt_end(), vt, w * nu_t(), ft_max, out.dissipated, dt);
     // The linear spring is on within reach, Hertz's (kt ~ x^1/2) within the overlap.
-    const double dt_on = law_detail::springs_on_time(normal, Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
+    double dt_on = law_detail::springs_on_time(normal, Normal::kCurved ? 0.0 : reach, h.gap, k.dn, vn, dt);  // s
+    if (tangential_damping && h.ft == Vec3::Zero()) [[unlikely]]  // held at zero by the dashpot, or new
+      dt_on = law_detail::spring_free_time(vt, vt_end(), w * nu_t(), h.weight * nu_t(), law.mu * fp,
+                                           law.mu * law_detail::last_normal_force<Normal, kLone>(law, k, h), dt_on, dt);
     // Where the exact normal step is taken (spheres, the same bits on the sphere and general
     // paths): on polyhedra an undamped cube heap stopped ringing with them (test_rest), not understood.
     const bool kink_pushes = law.exact_step && (kLone || k.exact_step);
