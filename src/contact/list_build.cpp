@@ -22,8 +22,15 @@ float gap_below(double core_distance2, double radii) {
 
 void sorted_by_key(const std::vector<FeaturePair>& candidates, std::vector<std::uint32_t>& order) {
   order.clear();
+  std::uint64_t last = 0;  // each key made once (std::is_sorted made both of every neighbour pair)
+  bool in_order = true;
+  for (const FeaturePair& f : candidates) {
+    const std::uint64_t key = feature_key(f);
+    if (key < last) { in_order = false; break; }
+    last = key;
+  }
+  if (in_order) return;
   const auto by_key = [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); };
-  if (std::is_sorted(candidates.begin(), candidates.end(), by_key)) return;
   order.resize(candidates.size());
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return by_key(candidates[x], candidates[y]); });
