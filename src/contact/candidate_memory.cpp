@@ -73,8 +73,10 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
     std::vector<FeaturePair> wide, found;
     std::vector<double> wide2, found2;  // m^2
     std::vector<std::uint32_t> order;
+    CandidateBlock block;  // grown once per thread; each block is copied out at its exact size
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t blk = 0; blk < n_blocks; ++blk) {
+      block.clear();
       for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k) {
         const BodyPair p = near[k];
         const PosedBody& a = posed[p.i];
@@ -107,8 +109,9 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
           made[blk].add(p, now, wide, wide2);
           for (std::size_t c = 0; c < wide.size(); ++c) keep(wide[c], wide2[c]);
         }
-        blocks[blk].add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
+        block.add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
       }
+      blocks[blk] = block;
     }
   });
   join_blocks(blocks, list);

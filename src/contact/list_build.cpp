@@ -1,5 +1,6 @@
 #include "contact/list_build.hpp"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -11,15 +12,28 @@ namespace polydem {
 float gap_below(double core_distance2, double radii) {
   const double gap = std::sqrt(core_distance2) - radii;
   const float f = static_cast<float>(gap);
-  return static_cast<double>(f) > gap ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  if (!(static_cast<double>(f) > gap)) return f;
+  // The float below f, as std::nextafter(f, -inf) gives it, without its libm call (~80
+  // instructions a candidate): a step of the magnitude's bits, down above 0 and up below it.
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  return std::bit_cast<float>(f > 0.0f ? bits - 1u : bits + 1u);
 }
 
 void sorted_by_key(const std::vector<FeaturePair>& candidates, std::vector<std::uint32_t>& order) {
+  order.clear();
+  std::uint64_t last = 0;  // each key made once (std::is_sorted made both of every neighbour pair)
+  bool in_order = true;
+  for (const FeaturePair& f : candidates) {
+    const std::uint64_t key = feature_key(f);
+    if (key < last) { in_order = false; break; }
+    last = key;
+  }
+  if (in_order) return;
+  const auto by_key = [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); };
   order.resize(candidates.size());
   std::iota(order.begin(), order.end(), 0u);
-  const auto by_key = [](FeaturePair x, FeaturePair y) { return feature_key(x) < feature_key(y); };
-  if (!std::is_sorted(candidates.begin(), candidates.end(), by_key))
-    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return by_key(candidates[x], candidates[y]); });
+  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return by_key(candidates[x], candidates[y]); });
 }
 
 void CandidateBlock::add(BodyPair p, const PosedBody& a, const PosedBody& b, double range,
@@ -31,6 +45,14 @@ void CandidateBlock::add(BodyPair p, const PosedBody& a, const PosedBody& b, dou
   add_found(p, smallest, a.radius + b.radius, found, distances2, order);
 }
 
+void CandidateBlock::clear() {
+  pairs.clear();
+  pair_gap.clear();
+  count.clear();
+  features.clear();
+  gaps.clear();
+}
+
 void CandidateBlock::add_found(BodyPair p, double smallest, double radii, const std::vector<FeaturePair>& found,
                                const std::vector<double>& distances2, std::vector<std::uint32_t>& order) {
   if (found.empty()) return;
@@ -38,7 +60,9 @@ void CandidateBlock::add_found(BodyPair p, double smallest, double radii, const 
   pair_gap.push_back(smallest);
   count.push_back(std::uint32_t(found.size()));
   sorted_by_key(found, order);
-  for (std::uint32_t c : order) {
+  const std::size_t n = found.size();
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::size_t c = order.empty() ? r : order[r];
     features.push_back(found[c]);
     gaps.push_back(gap_below(distances2[c], radii));
   }
@@ -108,7 +132,8 @@ void fill_driver_slots(const std::vector<std::vector<FeaturePair>>& per_pair, Pa
   parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
     thread_local std::vector<std::uint32_t> order;
     sorted_by_key(per_pair[k], order);
-    for (std::size_t r = 0; r < order.size(); ++r) list.features[list.slot_begin[k] + r] = per_pair[k][order[r]];
+    for (std::size_t r = 0; r < per_pair[k].size(); ++r)
+      list.features[list.slot_begin[k] + r] = per_pair[k][order.empty() ? r : order[r]];
   });
 }
 

@@ -15,7 +15,8 @@ namespace polydem {
 // m, the gap rounded towards -inf to a float: stays a lower bound for the skip test.
 float gap_below(double core_distance2, double radii);
 
-// The order of a pair's candidates by key (candidate_features gives body pairs sorted: kept as they are).
+// The order of a pair's candidates by key; `order` left empty when they are in it already
+// (candidate_features gives body pairs sorted: then no index list is made and read).
 void sorted_by_key(const std::vector<FeaturePair>& candidates, std::vector<std::uint32_t>& order);
 
 // The candidates of kCandidateBlock near pairs: the pairs with some candidate, each one's
@@ -34,6 +35,7 @@ struct CandidateBlock {
   // pair's (m), distances2 their core distances^2 (m^2).
   void add_found(BodyPair p, double smallest, double radii, const std::vector<FeaturePair>& found,
                  const std::vector<double>& distances2, std::vector<std::uint32_t>& order);
+  void clear();
 };
 
 // Lays the blocks out as `list`'s pairs, slot_begin, features, slot_gap and gap_at_build, in
@@ -51,10 +53,14 @@ void body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, d
     std::vector<FeaturePair> found;
     std::vector<double> distances2;  // m^2
     std::vector<std::uint32_t> order;
+    CandidateBlock scratch;  // grown once per thread; each block is copied out at its exact size
 #pragma omp for schedule(dynamic, 1)
-    for (std::size_t blk = 0; blk < blocks.size(); ++blk)
+    for (std::size_t blk = 0; blk < blocks.size(); ++blk) {
+      scratch.clear();
       for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k)
-        blocks[blk].add(near[k], pose_of(near[k].i), pose_of(near[k].j), range, found, distances2, order);
+        scratch.add(near[k], pose_of(near[k].i), pose_of(near[k].j), range, found, distances2, order);
+      blocks[blk] = scratch;
+    }
   });
   join_blocks(blocks, list);
 }

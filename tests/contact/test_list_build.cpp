@@ -5,7 +5,12 @@
 // the contact counts it carried.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
+#include <numeric>
+#include <utility>
 #include <omp.h>
 
 #include "../geometry/test_shapes.hpp"
@@ -36,8 +41,10 @@ PairList reference(const std::vector<BodyPair>& near, const std::vector<PosedBod
     std::vector<double> d2;  // m^2
     const double smallest = candidate_features(posed[p.i], posed[p.j], range, found, &d2);
     if (found.empty()) continue;
-    std::vector<std::uint32_t> order;
-    sorted_by_key(found, order);
+    std::vector<std::uint32_t> order(found.size());  // by key, sorted here (not by sorted_by_key)
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t x, std::uint32_t y) { return feature_key(found[x]) < feature_key(found[y]); });
     for (std::uint32_t c : order) {
       list.features.push_back(found[c]);
       list.slot_gap.push_back(gap_below(d2[c], posed[p.i].radius + posed[p.j].radius));
@@ -153,6 +160,25 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
     CHECK(searched_again > 0);  // and made anew
   }
   omp_set_num_threads(threads_before);
+}
+
+TEST_CASE("a gap rounded to a float is the float std::nextafter gives below it, on both sides of 0") {
+  // gap_below steps the float's bits itself: it must be the nearest float <= the gap, as before.
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<std::pair<double, double>> cases{// m^2 core distance^2, m radii
+                                               {0.0, 1e-46}, {0.0, 0.0}, {1e-90, 0.0}, {1e-6, 1e-3}, {1e-8, 1e-3},
+                                               {1.0 / 3.0, 0.5}, {0.01, 0.2}, {2.0, 0.0}};
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 2e-3);
+  for (int k = 0; k < 1000; ++k) cases.emplace_back(u(rng) * u(rng), u(rng));
+  for (const auto& [d2, radii] : cases) {
+    const double exact = std::sqrt(d2) - radii;  // m, the gap as gap_below makes it
+    const float f = static_cast<float>(exact);
+    const float want = static_cast<double>(f) > exact ? std::nextafter(f, -inf) : f;
+    const float got = gap_below(d2, radii);
+    CHECK(std::memcmp(&got, &want, sizeof got) == 0);
+    CHECK(static_cast<double>(got) <= exact);
+  }
 }
 
 TEST_CASE("a list's results sized after carry_history keep the contact counts it carried") {
