@@ -60,10 +60,6 @@ class MpiLink final : public RankLink {
     return collect(mine, root);
   }
   void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
-    begin_exchange(out, in);
-    end_exchange();
-  }
-  void begin_exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
     pending_.resize(out.size() + in.size());
     for (std::size_t k = 0; k < in.size(); ++k)
       MPI_Irecv(in[k].bytes.data(), int(in[k].bytes.size()), MPI_CHAR, in[k].rank, kGhostTag, MPI_COMM_WORLD,
@@ -74,8 +70,6 @@ class MpiLink final : public RankLink {
       ++counts_.parcels;
       counts_.parcel_bytes += out[k].bytes.size();
     }
-  }
-  void end_exchange() const override {
     const TimedCall timed = timer(LinkTimes::kExchange);
     MPI_Waitall(int(pending_.size()), pending_.data(), MPI_STATUSES_IGNORE);
     pending_.clear();
@@ -136,7 +130,7 @@ class MpiLink final : public RankLink {
   bool timed_;
   mutable LinkCounts counts_;
   mutable LinkTimes times_;
-  mutable std::vector<MPI_Request> pending_;  // the exchange begun, until end_exchange
+  mutable std::vector<MPI_Request> pending_;  // an exchange's requests (kept: no allocation a step)
 };
 #endif
 

@@ -51,11 +51,6 @@ class RankLink {
   // Sends each parcel of `out` to its rank and fills each parcel of `in` (its bytes sized by
   // the caller) from its rank. Every rank calls it; the pattern is symmetric between ranks.
   virtual void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;
-  // The exchange in two halves, so a rank works while the parcels travel: begin_exchange
-  // sends `out` and posts `in` (both left alone until end_exchange), end_exchange waits for
-  // them. By default the whole exchange in the first half.
-  virtual void begin_exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const { exchange(out, in); }
-  virtual void end_exchange() const {}
   virtual LinkCounts counts() const { return {}; }
   virtual LinkTimes times() const { return {}; }
   // Element [q] of rank q's `to_each`, for every q, in rank order (a collective, ranks values

@@ -34,30 +34,19 @@ class ThreadLink final : public RankLink {
     return copy;
   }
   void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
-    begin_exchange(out, in);
-    end_exchange();
-  }
-  // Halves as MPI's: `in` is filled only at the end, so a caller reading it early reads stale bytes.
-  void begin_exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
     for (const Parcel& p : out) all_.box[rank_][p.rank] = p.bytes;
-    out_ = &out;
-    in_ = &in;
     all_.sync.arrive_and_wait();
-  }
-  void end_exchange() const override {
-    for (Parcel& p : *in_) {
+    for (Parcel& p : in) {
       if (all_.box[p.rank][rank_].size() != p.bytes.size()) all_.mismatch = true;  // the sizes both plans give
       p.bytes = all_.box[p.rank][rank_];
     }
     all_.sync.arrive_and_wait();
-    for (const Parcel& p : *out_) all_.box[rank_][p.rank].clear();
+    for (const Parcel& p : out) all_.box[rank_][p.rank].clear();
   }
 
  private:
   ThreadRanks& all_;
   int rank_;
-  mutable const std::vector<Parcel>* out_ = nullptr;  // the exchange begun, until end_exchange
-  mutable std::vector<Parcel>* in_ = nullptr;
 };
 
 // Runs `rank(link)` on `n` threads, one rank each, and waits for them all.
