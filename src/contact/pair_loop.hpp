@@ -175,31 +175,45 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
   keep_pair(list, k, t, contacts, ended);
 }
 
-// Block b's pairs [k, end) through a kernel that steps two steady pairs side by side: a candidate
-// waits for the next one (each pair's results are its own, so any order gives the same bits).
+// Entries [a, end) of a pair sequence (entry e is pair pair_of(e)) through a kernel that steps two
+// steady pairs side by side: a candidate waits for the next one (each pair's results are its own,
+// so any order gives the same bits); keep(e, totals) takes each entry's results.
+template <class Kernel, class PairOf, class Keep>
+[[gnu::always_inline]] inline void in_two_lanes(const Kernel& kernel, PairScratch& scratch, std::uint32_t a,
+                                                std::uint32_t end, const PairOf& pair_of, const Keep& keep) {
+  constexpr std::uint32_t kNone = ~0u;
+  std::uint32_t waiting = kNone;
+  const auto alone = [&](std::uint32_t e) __attribute__((noinline)) {  // a lane not steady: the scalar kernel
+    keep(e, kernel(pair_of(e), scratch));
+  };
+  for (; a < end; ++a) {
+    const std::uint32_t k = pair_of(a);
+    if (!kernel.candidate(k)) {
+      keep(a, kernel(k, scratch));
+    } else if (waiting == kNone) {
+      waiting = a;
+    } else {
+      const std::uint32_t entry[2] = {std::exchange(waiting, kNone), a};
+      const std::uint32_t two[2] = {pair_of(entry[0]), k};
+      kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
+        if (!t) return alone(entry[l]);
+        keep(entry[l], *t);
+      });
+    }
+  }
+  if (waiting != kNone) keep(waiting, steady_alone(kernel, pair_of(waiting), scratch));
+}
+
+// Block b's pairs [k, end) in two lanes (in_two_lanes).
 template <class Kernel>
 [[gnu::always_inline]] inline void paired_block(PairList& list, const Kernel& kernel, PairScratch& scratch,
                                                 std::uint32_t k, std::uint32_t end, std::uint32_t& contacts,
                                                 bool& ended) {
-  constexpr std::uint32_t kNone = ~0u;
-  std::uint32_t waiting = kNone;
-  const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {  // a lane not steady: the scalar kernel
-    keep_results(list, a, kernel(a, scratch), contacts, ended);
-  };
-  for (; k < end; ++k) {
-    if (!kernel.candidate(k)) {
-      keep_results(list, k, kernel(k, scratch), contacts, ended);
-    } else if (waiting == kNone) {
-      waiting = k;
-    } else {
-      const std::uint32_t two[2] = {std::exchange(waiting, kNone), k};
-      kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
-        if (!t) return alone(two[l]);
-        keep_results(list, two[l], *t, contacts, ended);
+  in_two_lanes(
+      kernel, scratch, k, end, [](std::uint32_t e) { return e; },
+      [&](std::uint32_t e, const PairTotals& t) __attribute__((always_inline)) {
+        keep_results(list, e, t, contacts, ended);
       });
-    }
-  }
-  if (waiting != kNone) keep_results(list, waiting, steady_alone(kernel, waiting, scratch), contacts, ended);
 }
 
 // The foreign pairs, shared by the team in fixed shares (each pair's slot stays in one core's cache
@@ -216,28 +230,11 @@ void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direc
     list.touching[k] = std::uint16_t(t.contacts);
     list.pending[k] += t.energy;
   };
-  if constexpr (requires { Kernel::kTwoLanes; }) {
-    constexpr std::size_t kNone = ~std::size_t(0);
-    std::size_t waiting = kNone;
-    const auto alone = [&](std::size_t f) __attribute__((noinline)) { keep(f, kernel(split.foreign[f], scratch)); };
-    for (std::size_t f = first; f < last; ++f) {
-      if (!kernel.candidate(split.foreign[f])) {
-        keep(f, kernel(split.foreign[f], scratch));
-      } else if (waiting == kNone) {
-        waiting = f;
-      } else {
-        const std::size_t ordinal[2] = {std::exchange(waiting, kNone), f};
-        const std::uint32_t two[2] = {split.foreign[ordinal[0]], split.foreign[f]};
-        kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
-          if (!t) return alone(ordinal[l]);
-          keep(ordinal[l], *t);
-        });
-      }
-    }
-    if (waiting != kNone) keep(waiting, steady_alone(kernel, split.foreign[waiting], scratch));
-  } else {
-    for (std::size_t f = first; f < last; ++f) keep(f, kernel(split.foreign[f], scratch));
-  }
+  const auto foreign_pair = [&](std::uint32_t f) { return split.foreign[f]; };
+  if constexpr (requires { Kernel::kTwoLanes; })
+    in_two_lanes(kernel, scratch, std::uint32_t(first), std::uint32_t(last), foreign_pair, keep);
+  else
+    for (std::size_t f = first; f < last; ++f) keep(f, kernel(foreign_pair(f), scratch));
 #pragma omp barrier
 }
 

@@ -96,8 +96,10 @@ inline BodyArrays arrays_of(Bodies& b) {
           b.force.data(),            b.torque.data(),           b.mass.data(),     b.inertia.data()};
 }
 
-// Body `like`'s mass and inertia for all (RotorGroups::spheres_alike).
-inline AlikeArrays alike_arrays_of(Bodies& b, std::size_t like) {
+// Body `like`'s mass and inertia for all (RotorGroups::spheres_alike); B: Bodies or a rank's
+// LocalStore, whatever arrays_of reads.
+template <class B>
+AlikeArrays alike_arrays_of(B& b, std::size_t like) {
   const BodyArrays a = arrays_of(b);
   return {a.position, a.orientation,      a.velocity, a.angular_velocity,        a.velocity_end,
           a.angular_velocity_end, a.angular_momentum, a.force, a.torque, {b.mass[like]}, {b.inertia[like]}};

@@ -4,8 +4,8 @@ namespace polydem {
 
 namespace {
 
-// What integration changes of a body, copied between two sets of arrays (Bodies or LocalStore).
-// What contacts read of a body (a ghost's state).
+// What contacts read of a body (a ghost's state), copied between two sets of arrays (Bodies or
+// LocalStore).
 template <class To, class From>
 void copy_pose(To& to, std::size_t t, const From& from, std::size_t f) {
   to.position[t] = from.position[f];
@@ -16,6 +16,7 @@ void copy_pose(To& to, std::size_t t, const From& from, std::size_t f) {
   to.angular_velocity_end[t] = from.angular_velocity_end[f];
 }
 
+// What integration changes of a body.
 template <class To, class From>
 void copy_motion(To& to, std::size_t t, const From& from, std::size_t f) {
   copy_pose(to, t, from, f);

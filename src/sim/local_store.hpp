@@ -50,10 +50,5 @@ inline BodyArrays arrays_of(LocalStore& s) {
           s.velocity_end.data(), s.angular_velocity_end.data(), s.angular_momentum.data(), s.force.data(),
           s.torque.data(),       s.mass.data(),                 s.inertia.data()};
 }
-inline AlikeArrays alike_arrays_of(LocalStore& s, std::size_t like) {
-  const BodyArrays a = arrays_of(s);
-  return {a.position, a.orientation,      a.velocity, a.angular_velocity,        a.velocity_end,
-          a.angular_velocity_end, a.angular_momentum, a.force, a.torque, {s.mass[like]}, {s.inertia[like]}};
-}
 
 }  // namespace polydem
