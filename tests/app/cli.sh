@@ -20,13 +20,13 @@ expect_exit 1 "seed" "$polydem" check "$tmp/bad.yaml"
 expect_exit 0 "critical time step" "$polydem" check "$here/drop.yaml"
 # dt: auto is 0.1 x critical for polyhedra; polydem check prints the largest error measured
 # there of the cases that bound the scene's impacts (sim/step_accuracy.cpp): the cube landings
-# and, with friction, the oblique impact, 2.8e-3; accuracy: 1e-3 inverts that model: 0.0486 x
+# and, with friction, the oblique impact, 2.2e-3; accuracy: 1e-3 inverts that model: 0.0654 x
 # critical (not the spheres' exact step's 0.181).
-grep -q "expected restitution error of an impact at this step: 2.8e-03 (0.1 x critical; cube landings, oblique impact)" "$tmp/out" \
+grep -q "expected restitution error of an impact at this step: 2.2e-03 (0.1 x critical; cube landings, oblique impact)" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: no expected error at dt: auto"; }
 sed "s|^  dt: auto|  dt: auto\n  accuracy: 1e-3|; s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/accuracy.yaml"
-expect_exit 0 "(0.0486 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
-grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0486 x critical" "$tmp/out" \
+expect_exit 0 "(0.0654 x critical) \[auto, accuracy\]" "$polydem" check "$tmp/accuracy.yaml"
+grep -q "expected restitution error of an impact at this step: 1.0e-03 (0.0654 x critical" "$tmp/out" \
   || { cat "$tmp/out"; fail "check: accuracy 1e-3 not met"; }
 
 # Spheres under the linear law take its exact step: dt: auto is that model's step for 1e-3 of
@@ -37,7 +37,7 @@ grep -q "expected restitution error of an impact at this step: 3.8e-03 (0.181 x 
 
 # A full run, then the same run in two halves through a checkpoint.
 "$polydem" run "$here/drop.yaml" --out "$tmp/full" --threads 2 2> "$tmp/full.log" || { cat "$tmp/full.log"; fail "run"; }
-grep -q "dt = .* s (expected restitution error of an impact at this step: 2.8e-03 (0.1 x critical; cube landings, oblique impact))" "$tmp/full.log" \
+grep -q "dt = .* s (expected restitution error of an impact at this step: 2.2e-03 (0.1 x critical; cube landings, oblique impact))" "$tmp/full.log" \
   || { cat "$tmp/full.log"; fail "run: no expected error on the start-up line"; }
 "$polydem" run "$here/drop.yaml" --out "$tmp/half" --threads 1 --until 0.02 2> /dev/null
 "$polydem" run "$here/drop.yaml" --out "$tmp/half" --threads 2 --resume "$(ls "$tmp"/half/checkpoint_*.bin | sort | tail -1)" 2> /dev/null
