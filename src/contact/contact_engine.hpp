@@ -115,6 +115,13 @@ class ContactEngine {
   // The bodies' cut of the body pairs' loop (pair_split.hpp), for the step's passes over bodies:
   // each thread then moves the bodies whose sums it made. None before the loop first ran.
   TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
+  // The body pairs' loop cut from the next step on with these shares of its work (per thread,
+  // summing to 1), kept instead of following the threads' pace: no result may change (tests).
+  void fix_shares(std::vector<double> shares) {
+    direct_.shares = std::move(shares);
+    direct_.follow_pace = false;
+    direct_.split.threads = 0;
+  }
   // Drops the lists so the next compute() rebuilds them (checkpoints rebuild at the same step
   // in an uninterrupted and in a resumed run).
   void force_rebuild() { must_rebuild_ = true; }

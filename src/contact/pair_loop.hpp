@@ -265,8 +265,12 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
 #pragma omp barrier
 #pragma omp single
     {  // every thread has read the old count (the barrier) before this one changes it
-      split_pairs(list.pairs, list.touching, direct.body_weight, direct.sums.size(), threads, direct.split);
+      if (direct.follow_pace) direct.shares = paced_shares(direct.split, direct.pace, direct.shares);
+      if (direct.shares.size() != std::size_t(threads)) direct.shares.clear();  // another team: even shares
+      split_pairs(list.pairs, list.touching, direct.body_weight, direct.sums.size(), threads, direct.split,
+                  direct.shares);
       direct.foreign.resize(direct.split.foreign_side.size());
+      direct.pace.assign(threads > 1 ? threads : 0, ThreadPace{});
     }
   }
   const int t = omp_get_thread_num();
@@ -277,7 +281,9 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
   if (foreign) pair_loop_detail::foreign_pair_forces(list, kernel, direct, scratch);
   if (t == 0) direct.zero = false;
   pair_loop_detail::start_home_sums(direct, t, zero);
+  const double start = threads > 1 ? omp_get_wtime() : 0.0;  // s; two clock reads a thread-step (~50 ns of ~100 us)
   pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t);
+  if (threads > 1) direct.pace[t].took(omp_get_wtime() - start);
   if constexpr (!kNoWait) {
 #pragma omp barrier
   }

@@ -16,16 +16,18 @@ double pair_weight(const std::vector<std::uint16_t>& touching, std::uint32_t k) 
   return 1.0 + (touching.empty() ? 0.0 : kContactWeight * touching[k]);
 }
 
-// Cuts at block boundaries so that each chunk's blocks weigh about the same.
-void cut_by_weight(const std::vector<double>& block_weight, int threads, std::size_t n, std::vector<std::uint32_t>& cut) {
+// Cuts at block boundaries so that chunk t's blocks weigh about shares[t] of all (empty: the same).
+void cut_by_weight(const std::vector<double>& block_weight, const std::vector<double>& shares, int threads,
+                   std::size_t n, std::vector<std::uint32_t>& cut) {
   double total = 0.0;
   for (double w : block_weight) total += w;
   cut.assign(threads + 1, std::uint32_t(n));
   cut[0] = 0;
-  double reached = 0.0;
+  double reached = 0.0, before = 0.0;  // the shares of the chunks before t
   std::size_t b = 0;
   for (int t = 1; t < threads; ++t) {
-    const double target = total * t / threads;
+    before += shares.size() == std::size_t(threads) ? shares[t - 1] : 1.0 / threads;
+    const double target = total * before;
     while (b < block_weight.size() && reached + 0.5 * block_weight[b] < target) reached += block_weight[b++];
     cut[t] = std::uint32_t(std::min(n, b * kPairBlock));
   }
@@ -84,7 +86,8 @@ std::vector<double> walk_weights(const std::vector<BodyPair>& pairs, const std::
 }  // namespace
 
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
-                 const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split) {
+                 const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
+                 const std::vector<double>& shares) {
   const std::size_t n = pairs.size();
   split.threads = threads;
   const std::vector<double> bodies = body_weights(pairs, body_weight);
@@ -93,11 +96,15 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
   std::vector<int> home;
   const std::vector<std::uint32_t> last = threads == 1 ? std::vector<std::uint32_t>{} : last_pairs(pairs, n_bodies);
   for (int round = 0; round < 3; ++round) {  // the foreign pairs move with the cut: a few rounds settle it
-    cut_by_weight(weight, threads, n, split.cut);
+    cut_by_weight(weight, shares, threads, n, split.cut);
     home = home_chunks(pairs, n_bodies, split.cut);
     if (threads == 1) break;
     weight = walk_weights(pairs, touching, split.cut, home, last, bodies);
   }
+  split.walk_weight.assign(threads, 0.0);
+  for (int t = 0; t < threads; ++t)
+    for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b)
+      split.walk_weight[t] += weight[b] - bodies[b];
   split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
     split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
@@ -148,6 +155,31 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
       if (split.early_begin[h] < split.early_begin[h + 1]) split.early_homes.push_back(h);
     split.early_homes_begin[t + 1] = std::uint32_t(split.early_homes.size());
   }
+}
+
+std::vector<double> paced_shares(const PairSplit& split, const std::vector<ThreadPace>& pace,
+                                 const std::vector<double>& shares) {
+  constexpr std::uint32_t kFewest = 32;  // steps timed: fewer say nothing past one step's noise
+  const std::size_t threads = pace.size();
+  if (threads < 2 || split.walk_weight.size() != threads) return shares;
+  std::vector<double> speed(threads);
+  double all = 0.0;
+  for (std::size_t t = 0; t < threads; ++t) {
+    const std::uint32_t steps = std::min(pace[t].steps, ThreadPace::kSteps);
+    if (steps < kFewest || split.walk_weight[t] <= 0.0) return shares;
+    std::array<float, ThreadPace::kSteps> s = pace[t].seconds;
+    std::nth_element(s.begin(), s.begin() + steps / 2, s.begin() + steps);
+    if (!(s[steps / 2] > 0.0f)) return shares;
+    all += speed[t] = split.walk_weight[t] / s[steps / 2];
+  }
+  std::vector<double> next(threads);
+  double sum = 0.0;
+  for (std::size_t t = 0; t < threads; ++t) {
+    const double even = 1.0 / threads, last = shares.size() == threads ? shares[t] : even;
+    sum += next[t] = std::clamp(0.5 * (last + speed[t] / all), 0.5 * even, 1.5 * even);
+  }
+  for (double& s : next) s /= sum;
+  return next;
 }
 
 }  // namespace polydem

@@ -134,19 +134,20 @@ void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const
 // scene meets once, not once per group). Equal spheres read one mass and inertia. Each thread
 // takes the bodies of its share of `cut` (the contact stage's, or none: static shares).
 // B: Bodies (by global id) or a rank's LocalStore (by local index), whatever arrays_of and
-// alike_arrays_of read.
+// alike_arrays_of read. `wait` false: no barrier at all (the caller reads only its own share of
+// `cut` before the region's end).
 template <class B, class Body>
-void over_rotor_groups(B& b, const RotorGroups& groups, const Body& body, TeamCut cut = {}) {
+void over_rotor_groups(B& b, const RotorGroups& groups, const Body& body, TeamCut cut = {}, bool wait = true) {
   const bool isotropic = !groups.isotropic.empty(), asymmetric = !groups.asymmetric.empty();
-  const bool sphere_wait = !isotropic && !asymmetric;
+  const bool sphere_wait = wait && !isotropic && !asymmetric;
   if (groups.spheres_alike && groups.spheres_in_order)
     over_group<Rotor::sphere, true>(alike_arrays_of(b, 0), groups.spheres, body, sphere_wait, cut);
   else if (groups.spheres_alike)  // a rank's owned spheres
     over_group<Rotor::sphere, false>(alike_arrays_of(b, groups.spheres[0]), groups.spheres, body, sphere_wait, cut);
   else
     over_group<Rotor::sphere, false>(arrays_of(b), groups.spheres, body, sphere_wait, cut);
-  over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body, !asymmetric, cut);
-  over_group<Rotor::asymmetric, false>(arrays_of(b), groups.asymmetric, body, true, cut);
+  over_group<Rotor::isotropic, false>(arrays_of(b), groups.isotropic, body, wait && !asymmetric, cut);
+  over_group<Rotor::asymmetric, false>(arrays_of(b), groups.asymmetric, body, wait, cut);
 }
 
 namespace integrate_detail {
@@ -294,9 +295,10 @@ struct NoWatch {
 // nor written (48 + 48 bytes a body-step less memory traffic); `before` is then a ForceSums,
 // whose gravity_mass closing sets them at a closed step. moved(i, x) sees each body's new
 // position (m) while the pass holds it (the rebuild trigger's test: no pass of its own).
+// `wait` false: no barrier at the pass's end (over_rotor_groups).
 template <bool kFromGravity = false, class B, class Before, class Moved = NoWatch>
 void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before, TeamCut cut = {}, Moved moved = {}) {
+                          const Before& before, TeamCut cut = {}, Moved moved = {}, bool wait = true) {
   auto one = [h, dt, gravity, before, moved](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     constexpr Rotor kRotor = decltype(rotor)::value;
     if constexpr (kFromGravity) {
@@ -312,7 +314,7 @@ void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, 
       integrate_detail::start_body<kRotor, true>(a, i, h, dt, gravity);
     }
   };
-  over_rotor_groups(b, groups, one, cut);
+  over_rotor_groups(b, groups, one, cut, wait);
 }
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).

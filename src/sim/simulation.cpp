@@ -216,12 +216,15 @@ void Simulation::step(bool leave_kick_open) {
   PointWatch watch;
   const bool watched = from_gravity && engine_->watch_motion(all_owned(bodies), watch);
   in_team(team, [&] {
+    // The rebuild check reads the bodies of this thread's share of the cut, which its pass moved:
+    // no barrier between them when the cut is this team's (the region's end is the one needed).
+    const bool wait = cut.threads != omp_get_num_threads();
     if (watched)
-      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch);
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
     else if (from_gravity)
-      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (close_last && one_process)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut);
+      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (close_last)
       ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);
     else if (rank_passes)

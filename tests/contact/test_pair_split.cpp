@@ -87,7 +87,19 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
   DirectSums direct;
   direct.reset(n_bodies);
   int step = 0;
-  for (int threads : {1, 2, 3, 4, 2}) {  // the team size changes between steps: cut again (a team of 5 leaks in libomp under ASan)
+  struct Team {
+    int threads;
+    std::vector<double> shares;  // forced (a cut that followed the threads' pace), or empty: as the loop cuts
+  };
+  // The team size changes between steps: cut again (a team of 5 leaks in libomp under ASan); then
+  // cuts forced far from the even one, as a cut following a slow thread moves.
+  const Team teams[] = {{1, {}}, {2, {}}, {3, {}}, {4, {}}, {2, {}}, {2, {0.25, 0.75}}, {2, {0.75, 0.25}}, {3, {0.2, 0.5, 0.3}}};
+  for (const auto& [threads, shares] : teams) {
+    if (!shares.empty()) {
+      direct.shares = shares;
+      direct.follow_pace = false;
+      direct.split.threads = 0;
+    }
     const std::vector<PairTotals>& terms = step++ % 2 ? parting : touching;
     std::vector<BodySum> plain(n_bodies);  // one thread's pair-order sum
     std::vector<std::uint32_t> contacts(blocks, 0);
@@ -123,6 +135,8 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
     CHECK(wrong_blocks == 0);
     CHECK((step % 2 ? ends == 0 : ends > 0));  // contacts end at the parting steps only
     CHECK(direct.split.threads == threads);
+    if (!shares.empty() && reach < 100 && list.size() > 8 * kPairBlock)  // the forced cut taken (ids that follow space: pairs weigh alike)
+      CHECK(std::abs(double(direct.split.cut[1]) / double(list.size()) - shares[0]) < 0.1);
     if (step % 2) {  // the sums taken and cleared, as a closing pass does (ForceSums): the next loop starts from them
       std::fill(direct.sums.begin(), direct.sums.end(), BodySum{});
       direct.zero = true;
@@ -280,4 +294,39 @@ TEST_CASE("a team's shares of the bodies take each body once, by the cut made fo
       for (int t = 0; t < 4; ++t)
         for (std::uint32_t b = at[t]; b < at[t + 1]; ++b) CHECK(owner[b] == t);
   }
+}
+
+// Walk times (s) of two threads, `steps` each; `outliers` of thread 1's steps 100 times as long.
+std::vector<ThreadPace> paces(double t0, double t1, std::uint32_t steps, std::uint32_t outliers = 0) {
+  std::vector<ThreadPace> pace(2);
+  for (std::uint32_t s = 0; s < steps; ++s) {
+    pace[0].took(t0);
+    pace[1].took(s < outliers ? 100.0 * t1 : t1);
+  }
+  return pace;
+}
+
+TEST_CASE("a cut follows the threads' pace: the slower thread gets less, half-way, within bounds", "[pair_split]") {
+  PairSplit split;
+  split.walk_weight = {1000.0, 1000.0};  // an even cut
+  // Thread 1 walks its chunk in twice thread 0's time: speeds 2:1, shares 2/3 and 1/3, half-way from even.
+  std::vector<double> shares = paced_shares(split, paces(1e-4, 2e-4, 350), {});
+  REQUIRE(shares.size() == 2);
+  CHECK(shares[0] == Approx(0.5 * (0.5 + 2.0 / 3.0)));
+  CHECK(shares[0] + shares[1] == Approx(1.0));
+  // The next interval under that cut (weights 7:5; thread 1 still half as fast): on towards 2/3.
+  split.walk_weight = {1166.7, 833.3};
+  CHECK(paced_shares(split, paces(1e-4, 1.4286e-4, 350), shares)[0] == Approx(0.5 * (shares[0] + 2.0 / 3.0)).epsilon(1e-3));
+  // At 2/3 the two walks take the same time: the shares stay.
+  split.walk_weight = {1333.3, 666.7};
+  CHECK(paced_shares(split, paces(1e-4, 1e-4, 350), {2.0 / 3.0, 1.0 / 3.0})[0] == Approx(2.0 / 3.0).epsilon(1e-3));
+  // A thread that lost its core for a tenth of the steps is not slow (the median).
+  split.walk_weight = {1000.0, 1000.0};
+  CHECK(paced_shares(split, paces(1e-4, 1e-4, 350, 35), {})[0] == Approx(0.5));
+  // Too few steps timed: the shares as they were.
+  CHECK(paced_shares(split, paces(1e-4, 2e-4, 10), {}).empty());
+  // A thread ten times as slow, again and again: no share below half an even one.
+  shares.clear();
+  for (int rebuild = 0; rebuild < 10; ++rebuild) shares = paced_shares(split, paces(1e-4, 1e-3, 350), shares);
+  CHECK(shares[1] == Approx(0.25));
 }

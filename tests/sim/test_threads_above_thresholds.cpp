@@ -73,9 +73,13 @@ struct Outcome {
 
 // threads 0: the count changes every 7 steps (3, 1, 2, 3, ...), as the thread governor may
 // change it between any two steps of a run.
-Outcome run(int threads, const Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs, int steps) {
+// `shares`: the body pairs' loop cut with these shares of the work (ContactEngine::fix_shares), or
+// empty: its cut follows the threads' pace.
+Outcome run(int threads, const Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs, int steps,
+            std::vector<double> shares = {}) {
   omp_set_num_threads(threads > 0 ? threads : 2);
   Simulation sim(scene, lib, specs);
+  if (!shares.empty()) sim.engine().fix_shares(std::move(shares));
   ContactStats most;  // the largest lists seen: the thresholds must be passed while stepping
   for (int s = 0; s < steps; ++s) {
     if (threads == 0 && s % 7 == 0) omp_set_num_threads(1 + (s / 7 + 2) % 3);
@@ -96,6 +100,8 @@ void check_same_bits_for_1_2_3_threads(const Scene& scene, const ShapeLibrary& l
   CHECK(one.stats.driver_pairs > 2 * kPairBlock);
   CHECK(one.stats.rebuilds >= 2);  // the rebuild runs in parallel too, not only the first
   CHECK(run(2, scene, lib, specs, steps).hash == one.hash);
+  CHECK(run(2, scene, lib, specs, steps, {0.25, 0.75}).hash == one.hash);  // cuts far from the even one
+  CHECK(run(2, scene, lib, specs, steps, {0.75, 0.25}).hash == one.hash);
   CHECK(run(3, scene, lib, specs, steps).hash == one.hash);
   CHECK(run(0, scene, lib, specs, steps).hash == one.hash);  // switching between steps
 }
