@@ -199,13 +199,12 @@ ForceSums RankContacts::closing_sums() {
   return sums;
 }
 
-// The owned bodies' groups by local index (group_rotors gave global ids: the same order).
+// The owned bodies' groups by local index (group_rotors gave global ids: the same order), walked
+// by their runs between the ghosts (no id read a body: +20% of the opening pass's instructions).
 RotorGroups RankContacts::local_rotors(RotorGroups g) const {
   for (auto* ids : {&g.spheres, &g.isotropic, &g.asymmetric})
     for (std::size_t& i : *ids) i = std::size_t(local_of_[i]);
-  g.spheres_in_order = true;
-  for (std::size_t k = 0; k < g.spheres.size(); ++k) g.spheres_in_order = g.spheres_in_order && g.spheres[k] == k;
-  return g;
+  return with_runs(std::move(g));
 }
 
 void RankContacts::sums_taken() {
