@@ -371,9 +371,9 @@ bool ContactEngine::drivers_moved(const Drivers& drivers) const {
   return false;
 }
 
-bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers) {
+bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
   in_team(bodies.size() >= kParallelMinItems, [&] {
-    measure_motion(bodies);
+    measure_motion(bodies, watched);
 #pragma omp barrier
   });  // the barrier: for a caller inside a team already
   return stale_after_measure(drivers);

@@ -83,8 +83,8 @@ class ContactEngine {
   void compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool rebuild);
   // True when some local body may have moved half the skin since the lists were built, a
   // driver moved as far, or a rebuild was forced. Once per step: it measures each body's
-  // displacement, which the pair loop's skip test reads.
-  bool lists_stale(const LocalBodies& bodies, const Drivers& drivers);
+  // displacement, which the pair loop's skip test reads (`watched`: measure_motion's).
+  bool lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched = false);
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.

@@ -66,6 +66,22 @@ RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids,
   return groups;
 }
 
+IdRuns runs_of(const std::vector<std::size_t>& ids) {
+  IdRuns runs;
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    if (k == 0 || ids[k] != ids[k - 1] + 1) runs.first.push_back(ids[k]), runs.at.push_back(k);
+  runs.at.push_back(ids.size());
+  return runs;
+}
+
+RotorGroups with_runs(RotorGroups groups) {
+  groups.sphere_runs = runs_of(groups.spheres);
+  groups.isotropic_runs = runs_of(groups.isotropic);
+  groups.asymmetric_runs = runs_of(groups.asymmetric);
+  groups.in_runs = true;
+  return groups;
+}
+
 void drop_sphere_orientations(Bodies& b, const RotorGroups& groups) {
   for (std::size_t i : groups.spheres) {
     if (b.orientation[i].coeffs() == Quat::Identity().coeffs()) continue;  // exact: -0 stays -0 in L

@@ -55,7 +55,16 @@ class RankContacts {
   // (+0.6% a step). An opening after force_rebuild first takes the owned state from `bodies`.
   void start(const Bodies& bodies, double h, double dt, const Vec3& gravity);
   void kick_closing(double h);
-  void close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity);
+  // `watch`: from watch_motion, the pass runs the rebuild trigger's test on each owned body it
+  // moves (the step's measure then only poses).
+  void close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity,
+                       const PointWatch* watch = nullptr);
+  // Nothing but m gravity (m/s^2) and the contacts acts (no drag or fluid force): the joined
+  // pass makes each owned body's force in registers (close_and_start_step<true>), as one process's.
+  void only_gravity(const Vec3& gravity) { gravity_only_ = true, gravity_ = gravity; }
+  // True, with `watch` set, where this step's joined pass can run the trigger's test on the
+  // owned bodies (points: spheres' lists; a ghost's owner answers for it). Outside any team.
+  bool watch_motion(PointWatch& watch);
   void sums_taken();
   void add_sums();  // the same with no kick: each owned body's sum added to its force
   // The owned bodies' state and the ghosts' poses into `bodies` (the steps keep them in the
@@ -144,6 +153,7 @@ class RankContacts {
   void exchange_ghosts(double dt);
   void unpack_parcels(double dt);
   RotorGroups local_rotors(RotorGroups global) const;
+  ForceSums closing_sums();
   void size_parcels();
   void share_results(Drivers& drivers, bool rebuilt);
   std::vector<ReactionShare> reaction_shares() const;
@@ -167,6 +177,9 @@ class RankContacts {
   std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
   bool pull_ = false;  // the next opening pass first takes the owned bodies' state from the global arrays
+  bool gravity_only_ = false;  // only_gravity
+  Vec3 gravity_ = Vec3::Zero();  // m/s^2
+  bool watched_ = false;  // this step's opening pass ran the trigger's test (watch_motion)
   bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
   bool rebuild_asked_ = false;

@@ -114,6 +114,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   ledger.initial_mass_moment = start.mass_moment();
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
+  if (ranks_ && !external_) ranks_->only_gravity(gravity_);
   external_forces();
   ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
   predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0
@@ -212,21 +213,23 @@ void Simulation::step(bool leave_kick_open) {
   const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
   // Nothing but gravity acts: the joined pass makes the forces in registers and, for spheres'
   // lists, runs the rebuild trigger's test on each position it moves (no pass of its own).
-  const bool from_gravity = close_last && one_process && !external_;
+  // A rank's pass the same on its owned bodies (only_gravity).
+  const bool from_gravity = close_last && !external_;
   PointWatch watch;
-  const bool watched = from_gravity && engine_->watch_motion(all_owned(bodies), watch);
+  const bool watched =
+      from_gravity && (one_process ? engine_->watch_motion(all_owned(bodies), watch) : ranks_->watch_motion(watch));
   in_team(team, [&] {
     // The rebuild check reads the bodies of this thread's share of the cut, which its pass moved:
     // no barrier between them when the cut is this team's (the region's end is the one needed).
     const bool wait = cut.threads != omp_get_num_threads();
-    if (watched)
+    if (close_last && !one_process)
+      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
+    else if (watched)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
     else if (from_gravity)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
-    else if (close_last && one_process)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (close_last)
-      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_);
+      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (rank_passes)
       ranks_->start(bodies, 0.5 * dt_, dt_, gravity_);
     else

@@ -55,13 +55,18 @@ void loads(Bodies& b, int step) {
   }
 }
 
-void run(Bodies& b, const RotorGroups& groups, int steps) {
+// A rank's store as the passes see it: not Bodies, so they walk its groups by runs.
+struct Store : Bodies {};
+
+// Steps with loads: start_step and kick over B (Bodies walks the groups' ids, Store their runs).
+template <class B>
+void run(B& b, const RotorGroups& groups, int steps) {
   const double dt = 1e-4, h = 0.5 * dt;  // s
   const Vec3 gravity(0.0, 0.0, -9.807);  // m/s^2
   for (int s = 0; s < steps; ++s) {
-    in_team(true, [&] { start_step(b, h, dt, groups, gravity); });
+    in_team(true, [&] { start_pass(b, h, dt, groups, gravity); });
     loads(b, s);
-    in_team(true, [&] { kick(b, h, groups); });
+    in_team(true, [&] { kick_after(b, h, groups, [](std::size_t) {}); });
   }
 }
 
@@ -171,4 +176,40 @@ TEST_CASE("equal spheres take one mass and inertia: the per-body arrays' bits, i
   heavier.mass[n - 1] = 1.6;  // kg: one differs
   CHECK_FALSE(group_rotors(heavier, shapes()).spheres_alike);
   CHECK_FALSE(group_rotors(heavier, share, shapes()).spheres_alike);
+}
+
+TEST_CASE("a rank's groups walked by their runs between its ghosts: the ids' bits, at 1 and 2 threads", "[integrate]") {
+  const std::size_t n = 8 * kParallelMinItems;  // enough for a team in each group's share
+  Bodies start = mixed_bodies(n);
+  for (std::size_t i = 0; i < n; ++i) {  // mixed_bodies' three kinds in blocks of 7 (runs within a group)
+    const std::size_t kind = i / 7 % 3;
+    start.shape[i] = kind == 1 ? 1 : 0;
+    start.inertia[i] = kind == 2 ? Vec3(1e-3, 2e-3, 3e-3) : Vec3::Constant(2e-3);  // kg m^2
+    set_angular_velocity(start, i, start.angular_velocity[i]);
+  }
+  std::vector<std::uint32_t> share;  // a rank's owned bodies: runs of 1 to 4, then 1 or 2 ghosts
+  for (std::uint32_t i = 0, len = 1; i < n; i += len + 1 + len % 2, len = len % 4 + 1)
+    for (std::uint32_t k = i; k < i + len && k < n; ++k) share.push_back(k);
+  const RotorGroups ids = group_rotors(start, share, shapes());
+  const RotorGroups runs = with_runs(ids);
+  for (const auto& [group, of] : {std::pair{&ids.spheres, &runs.sphere_runs}, {&ids.isotropic, &runs.isotropic_runs},
+                                  {&ids.asymmetric, &runs.asymmetric_runs}}) {
+    REQUIRE(of->at.size() == of->first.size() + 1);
+    CHECK(of->at.back() == group->size());
+    std::vector<std::size_t> walked;  // the runs' indices again
+    for (std::size_t r = 0; r < of->first.size(); ++r)
+      for (std::size_t k = of->at[r]; k < of->at[r + 1]; ++k) walked.push_back(of->first[r] + (k - of->at[r]));
+    CHECK(walked == *group);
+    CHECK(of->first.size() < group->size());  // some runs hold more than one body
+  }
+  Bodies reference = start;
+  run(reference, ids, 20);
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    Store b{start};
+    run(b, runs, 20);
+    check_same_motion(b, reference);
+    CHECK(same_bits(b.angular_momentum, reference.angular_momentum));
+  }
+  omp_set_num_threads(1);
 }
