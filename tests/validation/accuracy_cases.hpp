@@ -302,7 +302,7 @@ inline double cube_corner_error(double fraction, bool contact_mass, bool rk4 = f
   Scene scene = base_scene(law(kKn, kEn), true);
   scene.forces.contact.config_driver.damping_contact_mass = contact_mass;
   const double m = 2700.0 * cube.volume, inertia = m * cube.inertia_per_mass.x();
-  const double m_star = 1.0 / (1.0 / m + r.cross(Vec3::UnitZ()).squaredNorm() / inertia);
+  const double m_star = vertex_mass(m, inertia, r);  // kg
   const double alpha = prepare_law(scene.forces.contact.config).alpha_n;
   double e_star = contact_mass ? kEn : ClampedImpact{alpha * std::sqrt(m / m_star), 1.0, 1.0, 1.0}.restitution();
   static std::optional<double> rk4_rebound[2];  // -, once per dashpot mass: 30,000 RK4 steps, not the engine's run time

@@ -34,8 +34,7 @@ struct CornerLanding {
   // N s/m, the dashpot with the lever r (m) from the centre to the vertex now.
   double dashpot(const Vec3& r) const {
     if (alpha_contact <= 0.0) return nu;
-    const double m_star = 1.0 / (1.0 / m + r.cross(Vec3::UnitZ()).squaredNorm() / inertia);  // kg
-    return 2.0 * alpha_contact * std::sqrt(kn * m_star);
+    return 2.0 * alpha_contact * std::sqrt(kn * vertex_mass(m, inertia, r));
   }
   struct Rate {
     double z, vz;

@@ -56,7 +56,7 @@ TEST_CASE("cube landing flat, on an edge and on a corner", "[validation][impact]
     const Vec3 r = contact_lever(cube, c.q, lowest);
     const double m = 2700.0 * cube.volume, inertia = m * cube.inertia_per_mass.x();  // isotropic cube
     const Vec3 rn = r.cross(Vec3::UnitZ());
-    const double m_star = 1.0 / (1.0 / m + rn.squaredNorm() / inertia);
+    const double m_star = vertex_mass(m, inertia, r);
     const ClampedImpact contact{alpha * std::sqrt(m / m_star), std::sqrt(kKn / m_star), kSpeed, m_star};
     const double e_star = contact.restitution(), impulse = (1.0 + e_star) * m_star * kSpeed;
     const double vz_expected = -kSpeed + impulse / m;

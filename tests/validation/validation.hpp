@@ -62,6 +62,12 @@ struct ClampedImpact {
   }
 };
 
+// kg, the effective mass of a body (mass m, isotropic inertia) at a point r (m) from its centre
+// along the floor's normal z: 1 / (1/m + |r x z|^2 / I).
+inline double vertex_mass(double m, double inertia, const Vec3& r) {
+  return 1.0 / (1.0 / m + r.cross(Vec3::UnitZ()).squaredNorm() / inertia);
+}
+
 // What a run of the engine measured over one impact.
 struct MeasuredImpact {
   double restitution = 0, duration = 0, max_overlap = 0, max_force = 0;  // -, s, m, N
