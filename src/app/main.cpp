@@ -12,6 +12,7 @@
 #include "app/cmd_shape.hpp"
 #include "app/cmd_view.hpp"
 #include "app/mpi_session.hpp"
+#include "app/short_spin.hpp"
 #include "polydem/error.hpp"
 
 namespace {
@@ -43,6 +44,7 @@ void map_large_blocks_apart() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && !std::strcmp(argv[1], "run")) polydem::run_again_with_short_spin(argv);  // before MPI starts
   map_large_blocks_apart();
   const polydem::MpiSession mpi(argc, argv);
   // Many ranks share `run` alone; the rest, or a build without MPI, stop at once, every rank

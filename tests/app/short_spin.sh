@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# `polydem run` starts again with GOMP_SPINCOUNT=1000 when the environment chooses no OpenMP wait
+# (libgomp reads it once, at load), and keeps a wait the user chose. The second image keeps the
+# arguments, the exit code and the process id (a signal to the first pid stops the run).
+# usage: short_spin.sh PATH/TO/polydem
+set -euo pipefail
+source "$(dirname "$0")/script_lib.bash" "$1"
+sed -e "s|\.\./\.\./shapes|$here/../../shapes|" "$here/drop.yaml" > "$tmp/drop.yaml"
+first_line() { head -1 "$tmp/err"; }
+bare() { env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT "$@"; }  # [NAME=VALUE] COMMAND: ctest sets a passive wait
+
+bare "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until 2e-3 --threads 2 2> "$tmp/err"
+first_line | grep -q "2 threads, GOMP_SPINCOUNT=1000, output" || fail "no short spin: $(first_line)"
+bare OMP_WAIT_POLICY=passive "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until 2e-3 --threads 2 2> "$tmp/err"
+first_line | grep -q "2 threads, OMP_WAIT_POLICY=passive, output" || fail "the user's wait lost: $(first_line)"
+bare GOMP_SPINCOUNT=20000 "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until 2e-3 --threads 2 2> "$tmp/err"
+first_line | grep -q "2 threads, GOMP_SPINCOUNT=20000, output" || fail "the user's spin lost: $(first_line)"
+
+# Arguments and exit code through the second image.
+expect_exit 1 "--until: expected a time" bare "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until nan
+
+# SIGTERM to the pid the shell started: exit 3 and a checkpoint, as without the second image.
+sed "s/duration: \"40 ms\"/duration: \"400 ms\"/" "$tmp/drop.yaml" > "$tmp/long.yaml"
+env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT "$polydem" run "$tmp/long.yaml" --out "$tmp/term" --threads 2 \
+  2> "$tmp/term.log" &  # not through `bare`: its subshell would take the signal
+pid=$!
+rows() { if [ -f "$tmp/term/energy.csv" ]; then wc -l < "$tmp/term/energy.csv"; else echo 0; fi; }
+until [ "$(rows)" -gt 3 ] || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
+kill -TERM "$pid" 2> /dev/null || fail "the run ended before it could be stopped"
+set +e; wait "$pid"; code=$?; set -e
+[ "$code" -eq 3 ] || { cat "$tmp/term.log"; fail "SIGTERM: exit code $code, expected 3"; }
+grep -q -- "--resume .*checkpoint_" "$tmp/term.log" || { cat "$tmp/term.log"; fail "no checkpoint after SIGTERM"; }
+echo "short_spin: ok"
