@@ -55,11 +55,22 @@ bool is_order_of(const std::vector<std::uint32_t>& order, std::size_t n) {
   return true;
 }
 
+// In place, cycle by cycle: the set-up holds one list of specs, not two (~210 bytes a body of
+// the scene at its peak, on every rank).
 std::vector<BodySpec> in_order(std::vector<BodySpec> specs, const std::vector<std::uint32_t>& order) {
-  std::vector<BodySpec> out;
-  out.reserve(specs.size());
-  for (std::uint32_t id : order) out.push_back(std::move(specs[id]));
-  return out;
+  std::vector<std::uint8_t> placed(specs.size(), 0);
+  for (std::size_t start = 0; start < specs.size(); ++start) {
+    if (placed[start]) continue;
+    BodySpec first = std::move(specs[start]);
+    std::size_t k = start;
+    for (; order[k] != start; k = order[k]) {  // k takes what order[k] held, still unmoved
+      specs[k] = std::move(specs[order[k]]);
+      placed[k] = 1;
+    }
+    specs[k] = std::move(first);
+    placed[k] = 1;
+  }
+  return specs;
 }
 
 std::vector<std::uint32_t> by_user_id(const Bodies& bodies, std::vector<std::uint32_t> of) {

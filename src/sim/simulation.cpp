@@ -90,8 +90,12 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   drop_sphere_orientations();  // before anything copies the bodies (a rank's store)
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
-  engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(bodies), cs);
-  if (link && link->ranks() > 1) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
+  const bool many = link && link->ranks() > 1;
+  // A rank's engine() only holds the table of histories (gathers, checkpoints): no body's
+  // geometry (28 bytes a sphere, ~300 a cube, for every body of the scene on every rank).
+  Bodies none;
+  engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(many ? none : bodies), cs);
+  if (many) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
     const MotionSettings& m = drivers.motion(j);
     drivers_move_ |= m.rotates || m.velocity != Vec3::Zero() || m.force || m.pressure;

@@ -63,6 +63,21 @@ TEST_CASE("the space order sorts the bodies by cell (z, y, x) of the largest dia
   CHECK(spatial_order(p.specs, p.lib) == order);  // no state: the same order each time
 }
 
+TEST_CASE("in_order puts specs[order[k]] at k, in place, over cycles of any length and fixed points", "[order]") {
+  const std::vector<std::uint32_t> order{3, 1, 0, 5, 2, 4, 6, 9, 7, 8};  // cycles (0 3 5 4 2), (7 9 8); 1, 6 stay
+  std::vector<BodySpec> specs;
+  for (int k = 0; k < 10; ++k) {
+    specs.push_back(body("s", Vec3(k, 0, 0)));
+    specs.back().shape = "a shape name past the short-string buffer " + std::to_string(k);  // moved, not copied
+  }
+  const std::vector<BodySpec> sorted = in_order(specs, order);
+  REQUIRE(sorted.size() == order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    CHECK(sorted[k].shape == specs[order[k]].shape);
+    CHECK(sorted[k].position.x() == double(order[k]));
+  }
+}
+
 TEST_CASE("a run in space order holds the input run's bodies under their ids, and resumes in its order", "[order]") {
   Pour p;
   Pour in_input;
