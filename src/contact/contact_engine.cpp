@@ -357,18 +357,19 @@ void ContactEngine::weigh_bodies() {
                                            : float(kPolyhedronPassWeight);
 }
 
-// A moving driver can reach bodies the lists did not pair it with: rebuild once its surface
-// may have moved half the skin where bodies are (translation, plus turning times the lever).
-bool ContactEngine::drivers_moved(const Drivers& drivers) const {
+// A moving driver can reach bodies the lists did not pair it with: how far its surface may have
+// moved where bodies are (translation, plus turning times the lever), the largest of the drivers.
+double ContactEngine::driver_shift(const Drivers& drivers) const {
+  double largest = 0.0;  // m
   for (std::size_t j = 0; j < drivers_at_build_.size(); ++j) {
     const DriverState& now = drivers[j];
     const Placement& then = drivers_at_build_[j].placement;
     if (now.active != drivers_at_build_[j].active) continue;  // a removed driver only loses contacts
     const double shift = (now.point - then.point).norm() + (now.center - then.center).norm() +
                          driver_lever_ * ((now.normal - then.normal).norm() + (now.axis - then.axis).norm());
-    if (shift > 0.5 * settings_.skin) return true;
+    largest = std::max(largest, shift);
   }
-  return false;
+  return largest;
 }
 
 bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
@@ -376,7 +377,7 @@ bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& driver
     measure_motion(bodies, watched);
 #pragma omp barrier
   });  // the barrier: for a caller inside a team already
-  return stale_after_measure(drivers);
+  return stale_after_measure(bodies, drivers);
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {
@@ -396,9 +397,12 @@ void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::
   trigger_.remeasure(position, *bodies.orientation, core_reach_, some);
 }
 
-bool ContactEngine::stale_after_measure(const Drivers& drivers) {
-  const bool moved = trigger_.take_exceeded();  // taken every step: the next step measures afresh
-  return must_rebuild_ || moved || drivers_moved(drivers);
+bool ContactEngine::stale_after_measure(const LocalBodies& bodies, const Drivers& drivers) {
+  const bool past_half = trigger_.take_exceeded();  // taken every step: the next step measures afresh
+  if (must_rebuild_) return true;
+  const double shift = driver_shift(drivers);  // m
+  if (!past_half && !(shift > 0.5 * settings_.skin)) return false;  // every body and driver within skin/2
+  return !settings_.pair_trigger || trigger_.pair_exceeded(*bodies.position, settings_.skin, shift);
 }
 
 void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool stale) {

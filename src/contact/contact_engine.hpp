@@ -1,6 +1,6 @@
 #pragma once
-// The contact stage of a step: poses the bodies, keeps the Verlet lists (rebuilt when a body
-// may have moved half the skin), evaluates every pair in parallel and sums the forces on
+// The contact stage of a step: poses the bodies, keeps the Verlet lists (rebuilt when two bodies
+// may have closed the skin between them), evaluates every pair in parallel and sums the forces on
 // each body in a fixed order, so results do not depend on the thread count.
 #include <optional>
 #include <vector>
@@ -25,6 +25,10 @@ struct ContactSettings {
   // chosen for the whole scene (1 or 0; -1: for the bodies given).
   int spheres_only = -1;
   bool equal_spheres = true;  // false: each sphere's radius and mass read even when all are alike (tests)
+  // Rebuild when the two largest motions since the build could close the skin between two bodies
+  // (RebuildTrigger::pair_exceeded), not as soon as one body moved skin/2. false: skin/2 each (a
+  // rank's lists: its ghost halo and the ranks' OR of the answer assume it).
+  bool pair_trigger = true;
 };
 
 // Over this process's lists: a pair across a cut between processes is listed by both.
@@ -81,8 +85,8 @@ class ContactEngine {
   void compute(const LocalBodies& bodies, Drivers& drivers, double dt) { compute(bodies, drivers, dt, lists_stale(bodies, drivers)); }
   // The same with the rebuild decided by the caller (many processes: any process's `lists_stale`).
   void compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool rebuild);
-  // True when some local body may have moved half the skin since the lists were built, a
-  // driver moved as far, or a rebuild was forced. Once per step: it measures each body's
+  // True when two local bodies (or a body and a driver) may have closed the skin between them
+  // since the lists were built (skin/2 a body for a rank's lists), or a rebuild was forced. Once per step: it measures each body's
   // displacement, which the pair loop's skip test reads (`watched`: measure_motion's).
   bool lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched = false);
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
@@ -98,7 +102,7 @@ class ContactEngine {
   // measure_motion's poses and bounds again for the bodies `some` alone, their answer left out:
   // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
   void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);
-  bool stale_after_measure(const Drivers& drivers);
+  bool stale_after_measure(const LocalBodies& bodies, const Drivers& drivers);
   void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
   // The pairs' forces added to the bodies (team stage: ends at a barrier), the drivers'
   // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
@@ -136,6 +140,7 @@ class ContactEngine {
   bool records_contacts() const { return record_contacts_; }
 
   const ContactStats& stats() const { return stats_; }
+  double skin() const { return settings_.skin; }  // m
   // The energy ledger's share of the contacts (J, by mechanism): each pair sums its own in
   // PairList::pending, in step order, carried through rebuilds with its history; when its
   // contact ends (the step's flagged blocks) it enters an exact sum (contact/exact_sum.hpp),
@@ -179,7 +184,7 @@ class ContactEngine {
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
   void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
   void weigh_bodies();  // direct_.body_weight, at a rebuild
-  bool drivers_moved(const Drivers& drivers) const;
+  double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
 
   const std::vector<Shape>& shapes_;
   ContactSettings settings_;

@@ -1,5 +1,6 @@
 #include "neighbor/rebuild_trigger.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -100,6 +101,23 @@ bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch)
   if (rebuild_count == 0 || x_built.size() != n || !q_built.empty()) return false;  // measure's other paths
   watch = {x_built.data(), move_limit(skin), &exceeded_};
   return true;
+}
+
+bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const {
+  const std::size_t n = x.size();
+  if (rebuild_count == 0 || x_built.size() != n) return true;
+  double d1 = 0.0, d2 = 0.0;  // m, the two largest bounds, d1 >= d2
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = q_built.empty() ? (x[i] - x_built[i]).norm() : displacement_[i];
+    if (!(d <= skin)) return true;  // alone past the skin, or NaN
+    if (d > d1) {
+      d2 = d1;
+      d1 = d;
+    } else if (d > d2) {
+      d2 = d;
+    }
+  }
+  return !(d1 + std::max(d2, driver_shift) <= skin);
 }
 
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }

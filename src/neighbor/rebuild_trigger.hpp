@@ -1,6 +1,7 @@
 #pragma once
-// Decides when the Verlet lists must be rebuilt: as soon as some core point may have moved
-// more than skin/2 since the last build, not on a fixed period.
+// Decides when the Verlet lists must be rebuilt, not on a fixed period: when two bodies (or a
+// body and a driver) may have closed the skin between them since the last build (pair_exceeded,
+// asked once some core point moved more than skin/2).
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -58,6 +59,14 @@ class RebuildTrigger {
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
                double skin, TeamCut cut = {});
   bool take_exceeded();
+  // The sharper test once some body moved past skin/2 or a driver as far (m, `driver_shift`: the
+  // largest driver surface motion since the build): true when the two largest bounds d1 >= d2
+  // could bring two bodies, or d1 and the driver shift a body and a driver, within the skin:
+  // !(d1 + max(d2, driver_shift) <= skin). A pair's relative motion is at most the sum of its
+  // two bounds, so the lists hold while this is false, whatever one body alone moved (up to
+  // the skin). Serial: called only on the steps after a body passed skin/2, before the rebuild.
+  // Needs this step's measure (or watch) of every body; points read x.
+  bool pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const;
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
   // bodies are points and a build was marked for as many; the pass then stands for measure.
   bool watch_points(std::size_t n, double skin, PointWatch& watch);

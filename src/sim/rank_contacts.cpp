@@ -46,6 +46,7 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
     : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()) {
   const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
   halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), settings_.skin + band);
+  settings_.pair_trigger = false;  // the halo allows skin/2 a body (ghost_halo)
   settings_.spheres_only = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) {
     return shapes[s].is_sphere();
   });

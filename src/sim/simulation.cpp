@@ -255,7 +255,7 @@ void Simulation::step(bool leave_kick_open) {
     if (!one_process) {
       ranks_->compute(bodies, drivers, dt_, *engine_);
     } else {
-      stale = engine_->stale_after_measure(drivers);
+      stale = engine_->stale_after_measure(all_owned(bodies), drivers);
       if (stale) engine_->rebuild(all_owned(bodies), drivers);
     }
   }

@@ -171,5 +171,43 @@ TEST_CASE("no contact escapes the Verlet list between rebuilds", "[rebuild][safe
   REQUIRE(checked > 1000);
 }
 
+TEST_CASE("the pair test: one body may move up to the skin while the others stay near", "[rebuild]") {
+  const double skin = 0.1;  // m
+  const std::vector<Vec3> x0{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};
+  const std::vector<Quat> q0(3, Quat::Identity());
+  const std::vector<double> radius{0.3, 0.3, 0.3};  // m, core reach
+  for (bool points : {false, true}) {
+    RebuildTrigger trigger;
+    trigger.mark_built(x0, q0, points);
+    std::vector<Vec3> x = x0;
+    x[0].x() += 0.8 * skin;   // past skin/2: the half test asks
+    x[2].y() += 0.15 * skin;  // d1 + d2 = 0.95 skin: no two bodies can have closed the skin
+    REQUIRE(trigger.needs_rebuild(x, q0, radius, skin));
+    CHECK_FALSE(trigger.pair_exceeded(x, skin, 0.0));
+    CHECK(trigger.pair_exceeded(x, skin, 0.25 * skin));  // a driver moved 0.25 skin: d1 + shift > skin
+    x[2].y() += 0.1 * skin;  // d2 = 0.25 skin: d1 + d2 > skin
+    REQUIRE(trigger.needs_rebuild(x, q0, radius, skin));
+    CHECK(trigger.pair_exceeded(x, skin, 0.0));
+    x = x0;
+    x[1].z() += 1.01 * skin;  // one body alone past the skin
+    REQUIRE(trigger.needs_rebuild(x, q0, radius, skin));
+    CHECK(trigger.pair_exceeded(x, skin, 0.0));
+    x[1].z() = std::nan("");
+    REQUIRE(trigger.needs_rebuild(x, q0, radius, skin));
+    CHECK(trigger.pair_exceeded(x, skin, 0.0));
+  }
+  RebuildTrigger turned;  // a turn counts as its chord at the core reach
+  turned.mark_built(x0, q0);
+  std::vector<Quat> q = q0;
+  q[0] = rotation(2.0 * std::asin(0.8 * skin / (2.0 * radius[0])), Vec3(0, 0, 1));  // chord 0.8 skin
+  std::vector<Vec3> x = x0;
+  x[1].x() += 0.25 * skin;
+  REQUIRE(turned.needs_rebuild(x, q, radius, skin));
+  CHECK(turned.pair_exceeded(x, skin, 0.0));
+  x[1].x() = x0[1].x() + 0.15 * skin;
+  REQUIRE(turned.needs_rebuild(x, q, radius, skin));
+  CHECK_FALSE(turned.pair_exceeded(x, skin, 0.0));
+}
+
 }  // namespace
 }  // namespace polydem
