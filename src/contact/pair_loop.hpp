@@ -25,28 +25,11 @@ namespace pair_loop_detail {
   s.torque += torque_j;
 }
 
-// Chunk t's home bodies' sums started from their pairs in earlier chunks (all foreign, computed).
-// `zero`: every sum is +0 already (DirectSums::zero at the loop's start), so only the bodies with
-// such pairs are written (the bed's second chunk wrote 1,741 sums a step where ~300 need one).
-inline void start_home_sums(DirectSums& direct, int t, bool zero) {
+// Chunk t's home bodies' sums cleared, unless every sum is +0 already (SumsZero): a body's
+// first term is then added to +0, as in one thread's pair-order sum.
+inline void clear_home_sums(DirectSums& direct, int t) {
   const PairSplit& split = direct.split;
-  BodySum* const sums = direct.sums.data();
-  auto start = [&](std::uint32_t h) __attribute__((always_inline)) {
-    BodySum s;
-    for (std::uint32_t e = split.early_begin[h]; e < split.early_begin[h + 1]; ++e) {
-      const ForeignResult& r = direct.foreign[split.early[e] >> 1];
-      if (split.early[e] & 1u)
-        add_as_j(s, r.force_i, r.torque_j);
-      else
-        add_as_i(s, r.force_i, r.torque_i);
-    }
-    sums[split.homes[h]] = s;
-  };
-  if (zero) {
-    for (std::uint32_t e = split.early_homes_begin[t]; e < split.early_homes_begin[t + 1]; ++e) start(split.early_homes[e]);
-    return;
-  }
-  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) start(h);
+  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) direct.sums[split.homes[h]] = BodySum{};
 }
 
 // A pair's terms in its bodies' sums.
@@ -135,9 +118,19 @@ template <class Kernel>
   }
 }
 
-// Chunk t's pairs in order: each internal pair computed and added to both bodies' sums, each
-// foreign pair's result added to the side homed here; the blocks' contacts and ended flags. The
-// runs of internal pairs between two foreign ones are plain loops (one thread: the whole list).
+// A pair computed on its own: the steady code on one lane for a two-lane kernel's candidate (the
+// bits it has in a lane of two), else the scalar code.
+template <class Kernel>
+[[gnu::always_inline]] inline PairTotals one_pair(const Kernel& kernel, std::uint32_t k, PairScratch& scratch) {
+  if constexpr (requires { Kernel::kTwoLanes; })
+    if (kernel.candidate(k)) return steady_alone(kernel, k, scratch);
+  return kernel(k, scratch);
+}
+
+// Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
+// foreign pair's other side kept as a late term (DirectSums::foreign); the blocks' contacts and
+// ended flags. The runs of internal pairs between two foreign ones are plain loops (one thread:
+// the whole list).
 template <class Kernel>
 void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t) {
   const PairSplit& split = direct.split;
@@ -154,11 +147,11 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
       internal_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
       if ((k = stop) == end) break;
       const BodyPair p = list.pairs[k];  // k == next: a foreign pair
-      const ForeignResult& r = direct.foreign[f];
-      if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], r.force_i, r.torque_i);
-      if (split.foreign_side[f] & 2u) add_as_j(sums[p.j], r.force_i, r.torque_j);
-      ended |= r.ended;
-      contacts += list.touching[k];
+      const PairTotals pt = one_pair(kernel, k, scratch);
+      keep_pair(list, k, pt, contacts, ended);
+      if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], pt.force_i, pt.torque_i);
+      if (split.foreign_side[f] & 2u) add_as_j(sums[p.j], pt.force_i, pt.torque_j);
+      direct.foreign[f] = {pt.force_i, pt.torque_i, pt.torque_j};
       next = split.foreign[++f];
     }
     list.block_contacts[b] = contacts;
@@ -216,28 +209,6 @@ template <class Kernel>
       });
 }
 
-// The foreign pairs, shared by the team in fixed shares (each pair's slot stays in one core's cache
-// from step to step), steady ones two at a time as in the walk (each result is its own: any order
-// gives the same bits); ends at a barrier (the chunks' walks read them).
-template <class Kernel>
-void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
-  const PairSplit& split = direct.split;
-  const auto [first, last] = team_share(split.foreign_side.size(), TeamCut{});
-  const auto keep = [&](std::size_t f, const PairTotals& t) __attribute__((always_inline)) {
-    const std::uint32_t k = split.foreign[f];
-    const bool ended = list.touching[k] != 0 && t.contacts == 0;  // touching at the last step, not now
-    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, ended};
-    list.touching[k] = std::uint16_t(t.contacts);
-    list.pending[k] += t.energy;
-  };
-  const auto foreign_pair = [&](std::uint32_t f) { return split.foreign[f]; };
-  if constexpr (requires { Kernel::kTwoLanes; })
-    in_two_lanes(kernel, scratch, std::uint32_t(first), std::uint32_t(last), foreign_pair, keep);
-  else
-    for (std::size_t f = first; f < last; ++f) keep(f, kernel(foreign_pair(f), scratch));
-#pragma omp barrier
-}
-
 // Block b's pairs: each one's forces kept in the list, its energy added to its pending sum in
 // step order, the block's contacts counted and its ended contacts flagged.
 template <class Kernel>
@@ -271,16 +242,12 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
                   direct.shares);
       direct.foreign.resize(direct.split.foreign_side.size());
       direct.pace.assign(threads > 1 ? threads : 0, ThreadPace{});
+      const bool zero = !direct.zero.empty() && direct.zero[0].on;  // the flags agree between loops
+      direct.zero.assign(threads, SumsZero{zero});
     }
   }
   const int t = omp_get_thread_num();
-  const bool foreign = !direct.foreign.empty();
-  // Every thread reads the flag before the foreign pairs' barrier, thread 0 clears it after (without
-  // foreign pairs the others do not read it: they start their sums from nothing).
-  const bool zero = (foreign || t == 0) && direct.zero;
-  if (foreign) pair_loop_detail::foreign_pair_forces(list, kernel, direct, scratch);
-  if (t == 0) direct.zero = false;
-  pair_loop_detail::start_home_sums(direct, t, zero);
+  if (!std::exchange(direct.zero[t].on, false)) pair_loop_detail::clear_home_sums(direct, t);
   const double start = threads > 1 ? omp_get_wtime() : 0.0;  // s; two clock reads a thread-step (~50 ns of ~100 us)
   pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t);
   if (threads > 1) direct.pace[t].took(omp_get_wtime() - start);
