@@ -115,7 +115,7 @@ class ContactEngine {
   // Every body's sum was taken by force_sums (each cleared): the next loop starts from them.
   void sums_taken() { direct_.taken(); }
   // The bodies' cut of the body pairs' loop (pair_split.hpp), for the step's passes over bodies:
-  // each thread then moves the bodies whose sums it made. None before the loop first ran.
+  // each thread then moves the bodies of its chunk's pairs as i. None before the loop first ran.
   TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
   // The body pairs' loop cut from the next step on with these shares of its work (per thread,
   // summing to 1), kept instead of following the threads' pace: no result may change (tests).

@@ -58,24 +58,51 @@ template <class Kernel>
   return done ? totals : kernel(k, scratch);
 }
 
-// Internal pairs [k, stop) through a kernel that steps two steady pairs side by side
-// (sphere_lanes.hpp): a candidate waits for the next; a pair between them that adds to a sum sends
-// it alone first (kernel.one), so each sum takes its terms in list order (a pair out of reach adds
-// +0, which changes no sum's bits: a sum is never -0).
-template <class Kernel>
-[[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
+// An internal pair's terms added to both its bodies' sums; one out of reach adds +0 (nothing).
+struct InternalAdd {
+  BodySum* sums;
+  const BodyPair* pairs;
+  [[gnu::always_inline]] void operator()(std::uint32_t k, const PairTotals& pt) const { add_pair(sums, pairs[k], pt); }
+  [[gnu::always_inline]] void out_of_reach(std::uint32_t, const PairTotals&) const {}
+};
+
+// A run of foreign pairs from pair k0 (ordinal f0): each one's side homed in this chunk added to
+// its sum, its result kept for the other side (a late term, ForceSums adds it), +0 when out of reach.
+struct ForeignAdd {
+  BodySum* sums;
+  const BodyPair* pairs;
+  const std::uint8_t* side;
+  ForeignResult* late;
+  std::uint32_t k0, f0;
+  [[gnu::always_inline]] void operator()(std::uint32_t k, const PairTotals& pt) const {
+    const std::uint32_t f = f0 + (k - k0);
+    if (side[f] & 1u) add_as_i(sums[pairs[k].i], pt.force_i, pt.torque_i);
+    if (side[f] & 2u) add_as_j(sums[pairs[k].j], pt.force_i, pt.torque_j);
+    late[f] = {pt.force_i, pt.torque_i, pt.torque_j};
+  }
+  [[gnu::always_inline]] void out_of_reach(std::uint32_t k, const PairTotals& pt) const {
+    late[f0 + (k - k0)] = {pt.force_i, pt.torque_i, pt.torque_j};
+  }
+};
+
+// Pairs [k, stop) through a kernel that steps two steady pairs side by side (sphere_lanes.hpp),
+// each one's terms given to `add`: a candidate waits for the next; a pair between them that adds
+// to a sum sends it alone first (kernel.one), so each sum takes its terms in list order (a pair
+// out of reach adds +0, which changes no sum's bits: a sum is never -0).
+template <class Kernel, class Add>
+[[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, const Add& add,
                                                 PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
                                                 std::uint32_t& contacts, bool& ended) {
   constexpr std::uint32_t kNone = ~0u;
   std::uint32_t waiting = kNone;
   const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {  // not steady: the scalar kernel
     const PairTotals pt = kernel(a, scratch);
-    add_pair(sums, list.pairs[a], pt);
+    add(a, pt);
     keep_pair(list, a, pt, contacts, ended);
   };
   const auto lone = [&](std::uint32_t a) __attribute__((noinline)) {  // a candidate without a partner
     const PairTotals pt = steady_alone(kernel, a, scratch);
-    add_pair(sums, list.pairs[a], pt);
+    add(a, pt);
     keep_pair(list, a, pt, contacts, ended);
   };
   for (; k < stop; ++k) {
@@ -87,7 +114,7 @@ template <class Kernel>
       const std::uint32_t two[2] = {waiting, k};
       kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
         if (!t) return alone(two[l]);
-        add_pair(sums, list.pairs[two[l]], *t);
+        add(two[l], *t);
         keep_pair(list, two[l], *t, contacts, ended);
       });
       waiting = kNone;
@@ -95,36 +122,45 @@ template <class Kernel>
     }
     const PairTotals pt = kernel(k, scratch);
     keep_pair(list, k, pt, contacts, ended);
-    if (pt.contacts == 0) continue;  // out of reach: its terms are +0
+    if (pt.contacts == 0) {  // out of reach: its terms are +0
+      add.out_of_reach(k, pt);
+      continue;
+    }
     if (waiting != kNone) lone(std::exchange(waiting, kNone));
-    add_pair(sums, list.pairs[k], pt);
+    add(k, pt);
   }
   if (waiting != kNone) lone(waiting);
 }
 
-// Internal pairs [k, stop) of a chunk in order, each computed and added to both bodies' sums.
-template <class Kernel>
-[[gnu::always_inline]] inline void internal_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
-                                                  PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
-                                                  std::uint32_t& contacts, bool& ended) {
+// Pairs [k, stop) of a chunk in order, each computed and its terms given to `add`.
+template <class Kernel, class Add>
+[[gnu::always_inline]] inline void chunk_pairs(PairList& list, const Kernel& kernel, const Add& add,
+                                               PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
+                                               std::uint32_t& contacts, bool& ended) {
   if constexpr (requires { Kernel::kTwoLanes; }) {
-    paired_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
+    paired_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
   } else {
     for (; k < stop; ++k) {
       const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
-      add_pair(sums, list.pairs[k], pt);
+      add(k, pt);
       keep_pair(list, k, pt, contacts, ended);
     }
   }
 }
 
-// A pair computed on its own: the steady code on one lane for a two-lane kernel's candidate (the
-// bits it has in a lane of two), else the scalar code.
+// The run of foreign pairs from pair k (ordinal f) to the next internal one or `end`, computed
+// as the internal ones are (two lanes). Out of line: the walk's loop over internal pairs stays as
+// it was. Returns the pair after the run.
 template <class Kernel>
-[[gnu::always_inline]] inline PairTotals one_pair(const Kernel& kernel, std::uint32_t k, PairScratch& scratch) {
-  if constexpr (requires { Kernel::kTwoLanes; })
-    if (kernel.candidate(k)) return steady_alone(kernel, k, scratch);
-  return kernel(k, scratch);
+[[gnu::noinline]] std::uint32_t foreign_run(PairList& list, const Kernel& kernel, DirectSums& direct,
+                                            PairScratch& scratch, std::uint32_t k, std::uint32_t f, std::uint32_t end,
+                                            std::uint32_t& contacts, bool& ended) {
+  const PairSplit& split = direct.split;
+  std::uint32_t stop = k + 1;
+  while (stop < end && split.foreign[f + (stop - k)] == stop) ++stop;
+  const ForeignAdd add{direct.sums.data(), list.pairs.data(), split.foreign_side.data(), direct.foreign.data(), k, f};
+  chunk_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
+  return stop;
 }
 
 // Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
@@ -135,7 +171,7 @@ template <class Kernel>
 void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t) {
   const PairSplit& split = direct.split;
   if (split.cut[t] == split.cut[t + 1]) return;
-  BodySum* const sums = direct.sums.data();
+  const InternalAdd internal{direct.sums.data(), list.pairs.data()};
   const std::size_t n = list.size();
   std::uint32_t f = split.foreign_begin[t], next = split.foreign[f];  // the last is the list size
   for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b) {
@@ -144,15 +180,12 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
     const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * kPairBlock));
     for (std::uint32_t k = std::uint32_t(b * kPairBlock); k < end; ++k) {
       const std::uint32_t stop = std::min(end, next);
-      internal_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
+      chunk_pairs(list, kernel, internal, scratch, k, stop, contacts, ended);
       if ((k = stop) == end) break;
-      const BodyPair p = list.pairs[k];  // k == next: a foreign pair
-      const PairTotals pt = one_pair(kernel, k, scratch);
-      keep_pair(list, k, pt, contacts, ended);
-      if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], pt.force_i, pt.torque_i);
-      if (split.foreign_side[f] & 2u) add_as_j(sums[p.j], pt.force_i, pt.torque_j);
-      direct.foreign[f] = {pt.force_i, pt.torque_i, pt.torque_j};
-      next = split.foreign[++f];
+      const std::uint32_t after = foreign_run(list, kernel, direct, scratch, k, f, end, contacts, ended);  // k == next
+      f += after - k;
+      next = split.foreign[f];
+      k = after - 1;
     }
     list.block_contacts[b] = contacts;
     list.block_ended[b] = ended;
