@@ -43,12 +43,13 @@ struct ContactStats {
 };
 
 // Adds the pairs' forces and torques on a body to its force and torque (N, N m): its body
-// pairs' sum made in their loop (pair order, DirectSums), then its driver pairs in list order
+// pairs' sum made in their loop and its late terms after (pair order, DirectSums), then its driver pairs in list order
 // (the same bits for any thread count). Called per body from the closing
 // kick's pass (Simulation::step), which copies it into each thread's loop: the lists'
 // addresses then stay in registers.
 struct ForceSums {
   BodySum* body;                      // per body, cleared once read (DirectSums::zero)
+  LateTerms late;                     // per body, its pairs after its sum's chunk
   const std::uint32_t* driver_begin;  // per body, its driver pairs [driver_begin[b], driver_begin[b + 1])
   const std::uint16_t* touching;      // per driver pair
   const Vec3 *force_i, *torque_i;     // per driver pair
@@ -66,6 +67,7 @@ struct ForceSums {
   [[gnu::always_inline]] void add_to(std::size_t b, Vec3& f_to, Vec3& t_to) const {
     Vec3 f = body[b].force, t = body[b].torque;
     body[b] = BodySum{};
+    late.add_to(b, f, t);
     for (std::uint32_t k = driver_begin[b]; k < driver_begin[b + 1]; ++k) {
       if (!touching[k]) continue;
       f += force_i[k];
@@ -115,9 +117,9 @@ class ContactEngine {
   // addresses, for a loop over the bodies that keeps them in registers (integrate.hpp's kick_after).
   ForceSums force_sums(const LocalBodies& bodies);
   // Every body's sum was taken by force_sums (each cleared): the next loop starts from them.
-  void sums_taken() { direct_.zero = true; }
+  void sums_taken() { direct_.taken(); }
   // The bodies' cut of the body pairs' loop (pair_split.hpp), for the step's passes over bodies:
-  // each thread then moves the bodies whose sums it made. None before the loop first ran.
+  // each thread then moves the bodies of its chunk's pairs as i. None before the loop first ran.
   TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
   // The body pairs' loop cut from the next step on with these shares of its work (per thread,
   // summing to 1), kept instead of following the threads' pace: no result may change (tests).
@@ -227,7 +229,7 @@ class ContactEngine {
 };
 
 inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) {
-  return {direct_.sums.data(),          driver_begin_.data(),        driver_list_.touching.data(),
+  return {direct_.sums.data(),          direct_.late_terms(),        driver_begin_.data(),        driver_list_.touching.data(),
           driver_list_.force_i.data(), driver_list_.torque_i.data(), bodies.force->data(),
           bodies.torque->data()};
 }

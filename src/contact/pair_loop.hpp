@@ -25,28 +25,11 @@ namespace pair_loop_detail {
   s.torque += torque_j;
 }
 
-// Chunk t's home bodies' sums started from their pairs in earlier chunks (all foreign, computed).
-// `zero`: every sum is +0 already (DirectSums::zero at the loop's start), so only the bodies with
-// such pairs are written (the bed's second chunk wrote 1,741 sums a step where ~300 need one).
-inline void start_home_sums(DirectSums& direct, int t, bool zero) {
+// Chunk t's home bodies' sums cleared, unless every sum is +0 already (SumsZero): a body's
+// first term is then added to +0, as in one thread's pair-order sum.
+inline void clear_home_sums(DirectSums& direct, int t) {
   const PairSplit& split = direct.split;
-  BodySum* const sums = direct.sums.data();
-  auto start = [&](std::uint32_t h) __attribute__((always_inline)) {
-    BodySum s;
-    for (std::uint32_t e = split.early_begin[h]; e < split.early_begin[h + 1]; ++e) {
-      const ForeignResult& r = direct.foreign[split.early[e] >> 1];
-      if (split.early[e] & 1u)
-        add_as_j(s, r.force_i, r.torque_j);
-      else
-        add_as_i(s, r.force_i, r.torque_i);
-    }
-    sums[split.homes[h]] = s;
-  };
-  if (zero) {
-    for (std::uint32_t e = split.early_homes_begin[t]; e < split.early_homes_begin[t + 1]; ++e) start(split.early_homes[e]);
-    return;
-  }
-  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) start(h);
+  for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h) direct.sums[split.homes[h]] = BodySum{};
 }
 
 // A pair's terms in its bodies' sums.
@@ -75,24 +58,51 @@ template <class Kernel>
   return done ? totals : kernel(k, scratch);
 }
 
-// Internal pairs [k, stop) through a kernel that steps two steady pairs side by side
-// (sphere_lanes.hpp): a candidate waits for the next; a pair between them that adds to a sum sends
-// it alone first (kernel.one), so each sum takes its terms in list order (a pair out of reach adds
-// +0, which changes no sum's bits: a sum is never -0).
-template <class Kernel>
-[[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
+// An internal pair's terms added to both its bodies' sums; one out of reach adds +0 (nothing).
+struct InternalAdd {
+  BodySum* sums;
+  const BodyPair* pairs;
+  [[gnu::always_inline]] void operator()(std::uint32_t k, const PairTotals& pt) const { add_pair(sums, pairs[k], pt); }
+  [[gnu::always_inline]] void out_of_reach(std::uint32_t, const PairTotals&) const {}
+};
+
+// A run of foreign pairs from pair k0 (ordinal f0): each one's side homed in this chunk added to
+// its sum, its result kept for the other side (a late term, ForceSums adds it), +0 when out of reach.
+struct ForeignAdd {
+  BodySum* sums;
+  const BodyPair* pairs;
+  const std::uint8_t* side;
+  ForeignResult* late;
+  std::uint32_t k0, f0;
+  [[gnu::always_inline]] void operator()(std::uint32_t k, const PairTotals& pt) const {
+    const std::uint32_t f = f0 + (k - k0);
+    if (side[f] & 1u) add_as_i(sums[pairs[k].i], pt.force_i, pt.torque_i);
+    if (side[f] & 2u) add_as_j(sums[pairs[k].j], pt.force_i, pt.torque_j);
+    late[f] = {pt.force_i, pt.torque_i, pt.torque_j};
+  }
+  [[gnu::always_inline]] void out_of_reach(std::uint32_t k, const PairTotals& pt) const {
+    late[f0 + (k - k0)] = {pt.force_i, pt.torque_i, pt.torque_j};
+  }
+};
+
+// Pairs [k, stop) through a kernel that steps two steady pairs side by side (sphere_lanes.hpp),
+// each one's terms given to `add`: a candidate waits for the next; a pair between them that adds
+// to a sum sends it alone first (kernel.one), so each sum takes its terms in list order (a pair
+// out of reach adds +0, which changes no sum's bits: a sum is never -0).
+template <class Kernel, class Add>
+[[gnu::always_inline]] inline void paired_pairs(PairList& list, const Kernel& kernel, const Add& add,
                                                 PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
                                                 std::uint32_t& contacts, bool& ended) {
   constexpr std::uint32_t kNone = ~0u;
   std::uint32_t waiting = kNone;
   const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {  // not steady: the scalar kernel
     const PairTotals pt = kernel(a, scratch);
-    add_pair(sums, list.pairs[a], pt);
+    add(a, pt);
     keep_pair(list, a, pt, contacts, ended);
   };
   const auto lone = [&](std::uint32_t a) __attribute__((noinline)) {  // a candidate without a partner
     const PairTotals pt = steady_alone(kernel, a, scratch);
-    add_pair(sums, list.pairs[a], pt);
+    add(a, pt);
     keep_pair(list, a, pt, contacts, ended);
   };
   for (; k < stop; ++k) {
@@ -104,7 +114,7 @@ template <class Kernel>
       const std::uint32_t two[2] = {waiting, k};
       kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
         if (!t) return alone(two[l]);
-        add_pair(sums, list.pairs[two[l]], *t);
+        add(two[l], *t);
         keep_pair(list, two[l], *t, contacts, ended);
       });
       waiting = kNone;
@@ -112,37 +122,56 @@ template <class Kernel>
     }
     const PairTotals pt = kernel(k, scratch);
     keep_pair(list, k, pt, contacts, ended);
-    if (pt.contacts == 0) continue;  // out of reach: its terms are +0
+    if (pt.contacts == 0) {  // out of reach: its terms are +0
+      add.out_of_reach(k, pt);
+      continue;
+    }
     if (waiting != kNone) lone(std::exchange(waiting, kNone));
-    add_pair(sums, list.pairs[k], pt);
+    add(k, pt);
   }
   if (waiting != kNone) lone(waiting);
 }
 
-// Internal pairs [k, stop) of a chunk in order, each computed and added to both bodies' sums.
-template <class Kernel>
-[[gnu::always_inline]] inline void internal_pairs(PairList& list, const Kernel& kernel, BodySum* sums,
-                                                  PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
-                                                  std::uint32_t& contacts, bool& ended) {
+// Pairs [k, stop) of a chunk in order, each computed and its terms given to `add`.
+template <class Kernel, class Add>
+[[gnu::always_inline]] inline void chunk_pairs(PairList& list, const Kernel& kernel, const Add& add,
+                                               PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
+                                               std::uint32_t& contacts, bool& ended) {
   if constexpr (requires { Kernel::kTwoLanes; }) {
-    paired_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
+    paired_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
   } else {
     for (; k < stop; ++k) {
       const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
-      add_pair(sums, list.pairs[k], pt);
+      add(k, pt);
       keep_pair(list, k, pt, contacts, ended);
     }
   }
 }
 
-// Chunk t's pairs in order: each internal pair computed and added to both bodies' sums, each
-// foreign pair's result added to the side homed here; the blocks' contacts and ended flags. The
-// runs of internal pairs between two foreign ones are plain loops (one thread: the whole list).
+// The run of foreign pairs from pair k (ordinal f) to the next internal one or `end`, computed
+// as the internal ones are (two lanes). Out of line: the walk's loop over internal pairs stays as
+// it was. Returns the pair after the run.
+template <class Kernel>
+[[gnu::noinline]] std::uint32_t foreign_run(PairList& list, const Kernel& kernel, DirectSums& direct,
+                                            PairScratch& scratch, std::uint32_t k, std::uint32_t f, std::uint32_t end,
+                                            std::uint32_t& contacts, bool& ended) {
+  const PairSplit& split = direct.split;
+  std::uint32_t stop = k + 1;
+  while (stop < end && split.foreign[f + (stop - k)] == stop) ++stop;
+  const ForeignAdd add{direct.sums.data(), list.pairs.data(), split.foreign_side.data(), direct.foreign.data(), k, f};
+  chunk_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
+  return stop;
+}
+
+// Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
+// foreign pair's other side kept as a late term (DirectSums::foreign); the blocks' contacts and
+// ended flags. The runs of internal pairs between two foreign ones are plain loops (one thread:
+// the whole list).
 template <class Kernel>
 void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t) {
   const PairSplit& split = direct.split;
   if (split.cut[t] == split.cut[t + 1]) return;
-  BodySum* const sums = direct.sums.data();
+  const InternalAdd internal{direct.sums.data(), list.pairs.data()};
   const std::size_t n = list.size();
   std::uint32_t f = split.foreign_begin[t], next = split.foreign[f];  // the last is the list size
   for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b) {
@@ -151,15 +180,12 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
     const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * kPairBlock));
     for (std::uint32_t k = std::uint32_t(b * kPairBlock); k < end; ++k) {
       const std::uint32_t stop = std::min(end, next);
-      internal_pairs(list, kernel, sums, scratch, k, stop, contacts, ended);
+      chunk_pairs(list, kernel, internal, scratch, k, stop, contacts, ended);
       if ((k = stop) == end) break;
-      const BodyPair p = list.pairs[k];  // k == next: a foreign pair
-      const ForeignResult& r = direct.foreign[f];
-      if (split.foreign_side[f] & 1u) add_as_i(sums[p.i], r.force_i, r.torque_i);
-      if (split.foreign_side[f] & 2u) add_as_j(sums[p.j], r.force_i, r.torque_j);
-      ended |= r.ended;
-      contacts += list.touching[k];
-      next = split.foreign[++f];
+      const std::uint32_t after = foreign_run(list, kernel, direct, scratch, k, f, end, contacts, ended);  // k == next
+      f += after - k;
+      next = split.foreign[f];
+      k = after - 1;
     }
     list.block_contacts[b] = contacts;
     list.block_ended[b] = ended;
@@ -216,28 +242,6 @@ template <class Kernel>
       });
 }
 
-// The foreign pairs, shared by the team in fixed shares (each pair's slot stays in one core's cache
-// from step to step), steady ones two at a time as in the walk (each result is its own: any order
-// gives the same bits); ends at a barrier (the chunks' walks read them).
-template <class Kernel>
-void foreign_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
-  const PairSplit& split = direct.split;
-  const auto [first, last] = team_share(split.foreign_side.size(), TeamCut{});
-  const auto keep = [&](std::size_t f, const PairTotals& t) __attribute__((always_inline)) {
-    const std::uint32_t k = split.foreign[f];
-    const bool ended = list.touching[k] != 0 && t.contacts == 0;  // touching at the last step, not now
-    direct.foreign[f] = {t.force_i, t.torque_i, t.torque_j, ended};
-    list.touching[k] = std::uint16_t(t.contacts);
-    list.pending[k] += t.energy;
-  };
-  const auto foreign_pair = [&](std::uint32_t f) { return split.foreign[f]; };
-  if constexpr (requires { Kernel::kTwoLanes; })
-    in_two_lanes(kernel, scratch, std::uint32_t(first), std::uint32_t(last), foreign_pair, keep);
-  else
-    for (std::size_t f = first; f < last; ++f) keep(f, kernel(foreign_pair(f), scratch));
-#pragma omp barrier
-}
-
 // Block b's pairs: each one's forces kept in the list, its energy added to its pending sum in
 // step order, the block's contacts counted and its ended contacts flagged.
 template <class Kernel>
@@ -271,16 +275,12 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
                   direct.shares);
       direct.foreign.resize(direct.split.foreign_side.size());
       direct.pace.assign(threads > 1 ? threads : 0, ThreadPace{});
+      const bool zero = !direct.zero.empty() && direct.zero[0].on;  // the flags agree between loops
+      direct.zero.assign(threads, SumsZero{zero});
     }
   }
   const int t = omp_get_thread_num();
-  const bool foreign = !direct.foreign.empty();
-  // Every thread reads the flag before the foreign pairs' barrier, thread 0 clears it after (without
-  // foreign pairs the others do not read it: they start their sums from nothing).
-  const bool zero = (foreign || t == 0) && direct.zero;
-  if (foreign) pair_loop_detail::foreign_pair_forces(list, kernel, direct, scratch);
-  if (t == 0) direct.zero = false;
-  pair_loop_detail::start_home_sums(direct, t, zero);
+  if (!std::exchange(direct.zero[t].on, false)) pair_loop_detail::clear_home_sums(direct, t);
   const double start = threads > 1 ? omp_get_wtime() : 0.0;  // s; two clock reads a thread-step (~50 ns of ~100 us)
   pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t);
   if (threads > 1) direct.pace[t].took(omp_get_wtime() - start);

@@ -6,8 +6,6 @@ namespace polydem {
 
 namespace {
 
-// A foreign pair's share of its chunk's walk (its result added, not computed), in pairs apart.
-constexpr double kForeignWeight = 0.25;
 // A contact's cost in pairs apart (the law and the contact search on top of the distance test):
 // a pour's few contacts sit in its pile, so pairs counted alike left one thread twice the work.
 constexpr double kContactWeight = 3.0;
@@ -33,22 +31,16 @@ void cut_by_weight(const std::vector<double>& block_weight, const std::vector<do
   }
 }
 
-// Per body, the chunk of its last pair (-1: no pair).
+// Per body, the chunk of its first pair (-1: no pair): its home, where its sum begins.
 std::vector<int> home_chunks(const std::vector<BodyPair>& pairs, std::size_t n_bodies, const std::vector<std::uint32_t>& cut) {
   std::vector<int> home(n_bodies, -1);
   int c = 0;
   for (std::uint32_t k = 0; k < pairs.size(); ++k) {
     while (k >= cut[c + 1]) ++c;
-    home[pairs[k].i] = home[pairs[k].j] = c;
+    for (std::uint32_t b : {pairs[k].i, pairs[k].j})
+      if (home[b] < 0) home[b] = c;
   }
   return home;
-}
-
-// Per body, its last pair (the chunk holding it makes the body's sum), or 0: no pair.
-std::vector<std::uint32_t> last_pairs(const std::vector<BodyPair>& pairs, std::size_t n_bodies) {
-  std::vector<std::uint32_t> last(n_bodies, 0);
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) last[pairs[k].i] = last[pairs[k].j] = k;
-  return last;
 }
 
 // Per block, the bodies' other work (`body_weight`), each body's in the block of its first pair
@@ -64,25 +56,6 @@ std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::
   return weight;
 }
 
-// Per block, the pairs its chunk computes in its walk and the foreign results its chunk adds, weighed,
-// on top of `weight` (the bodies'): a side homed in the pair's chunk is added in the walk (the
-// pair's block), the other at the start of its body's home chunk (the block of its last pair).
-std::vector<double> walk_weights(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
-                                 const std::vector<std::uint32_t>& cut, const std::vector<int>& home,
-                                 const std::vector<std::uint32_t>& last, std::vector<double> weight) {
-  int c = 0;
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) {
-    while (k >= cut[c + 1]) ++c;
-    const BodyPair p = pairs[k];
-    if (home[p.i] == c && home[p.j] == c) {
-      weight[k / kPairBlock] += pair_weight(touching, k);
-      continue;
-    }
-    for (std::uint32_t b : {p.i, p.j}) weight[(home[b] == c ? k : last[b]) / kPairBlock] += kForeignWeight;
-  }
-  return weight;
-}
-
 }  // namespace
 
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
@@ -91,16 +64,10 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
   const std::size_t n = pairs.size();
   split.threads = threads;
   const std::vector<double> bodies = body_weights(pairs, body_weight);
-  std::vector<double> weight = bodies;
+  std::vector<double> weight = bodies;  // each pair computed by its chunk's thread
   for (std::uint32_t k = 0; k < n; ++k) weight[k / kPairBlock] += pair_weight(touching, k);
-  std::vector<int> home;
-  const std::vector<std::uint32_t> last = threads == 1 ? std::vector<std::uint32_t>{} : last_pairs(pairs, n_bodies);
-  for (int round = 0; round < 3; ++round) {  // the foreign pairs move with the cut: a few rounds settle it
-    cut_by_weight(weight, shares, threads, n, split.cut);
-    home = home_chunks(pairs, n_bodies, split.cut);
-    if (threads == 1) break;
-    weight = walk_weights(pairs, touching, split.cut, home, last, bodies);
-  }
+  cut_by_weight(weight, shares, threads, n, split.cut);
+  const std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
   split.walk_weight.assign(threads, 0.0);
   for (int t = 0; t < threads; ++t)
     for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b)
@@ -129,32 +96,23 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
     if (h >= 0) ++split.home_begin[h + 1];
   for (int t = 0; t < threads; ++t) split.home_begin[t + 1] += split.home_begin[t];
   split.homes.resize(split.home_begin[threads]);
-  std::vector<std::uint32_t> place(n_bodies, 0), fill(split.home_begin.begin(), split.home_begin.end() - 1);
+  std::vector<std::uint32_t> fill(split.home_begin.begin(), split.home_begin.end() - 1);
   for (std::uint32_t b = 0; b < n_bodies; ++b)
-    if (home[b] >= 0) split.homes[place[b] = fill[home[b]]++] = b;
-  // Each body's pairs before its home chunk: all foreign, in increasing order.
-  const std::size_t n_foreign = split.foreign_side.size();
-  auto for_each_early = [&](auto add) {
-    for (std::uint32_t f = 0; f < n_foreign; ++f) {
+    if (home[b] >= 0) split.homes[fill[home[b]]++] = b;
+  // Each body's pairs after its home chunk (all foreign), in increasing order: its late terms.
+  split.late_begin.assign(n_bodies + 1, 0);
+  auto for_each_late = [&](auto add) {
+    for (std::uint32_t f = 0; f < split.foreign_side.size(); ++f) {
       const BodyPair p = pairs[split.foreign[f]];
-      if (!(split.foreign_side[f] & 1u)) add(place[p.i], f << 1);
-      if (!(split.foreign_side[f] & 2u)) add(place[p.j], f << 1 | 1u);
+      if (!(split.foreign_side[f] & 1u)) add(p.i, f << 1);
+      if (!(split.foreign_side[f] & 2u)) add(p.j, f << 1 | 1u);
     }
   };
-  split.early_begin.assign(split.homes.size() + 1, 0);
-  for_each_early([&](std::uint32_t h, std::uint32_t) { ++split.early_begin[h + 1]; });
-  for (std::size_t h = 0; h < split.homes.size(); ++h) split.early_begin[h + 1] += split.early_begin[h];
-  split.early.resize(split.early_begin.back());
-  fill.assign(split.early_begin.begin(), split.early_begin.end() - 1);
-  for_each_early([&](std::uint32_t h, std::uint32_t entry) { split.early[fill[h]++] = entry; });
-  // The home bodies with early pairs, by chunk: a chunk whose sums start at +0 starts these alone.
-  split.early_homes_begin.assign(threads + 1, 0);
-  split.early_homes.clear();
-  for (int t = 0; t < threads; ++t) {
-    for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h)
-      if (split.early_begin[h] < split.early_begin[h + 1]) split.early_homes.push_back(h);
-    split.early_homes_begin[t + 1] = std::uint32_t(split.early_homes.size());
-  }
+  for_each_late([&](std::uint32_t b, std::uint32_t) { ++split.late_begin[b + 1]; });
+  for (std::size_t b = 0; b < n_bodies; ++b) split.late_begin[b + 1] += split.late_begin[b];
+  split.late.resize(split.late_begin.back());
+  fill.assign(split.late_begin.begin(), split.late_begin.end() - 1);
+  for_each_late([&](std::uint32_t b, std::uint32_t entry) { split.late[fill[b]++] = entry; });
 }
 
 std::vector<double> paced_shares(const PairSplit& split, const std::vector<ThreadPace>& pace,

@@ -1,8 +1,10 @@
 #pragma once
 // Each body's contact force summed in the body-pair loop at any thread count, with the bits of
-// one thread's pair-order sum: the list is cut into one contiguous chunk per thread, a body's
-// sum is made by the chunk holding its last pair (its home), and only the pairs whose bodies
-// are not both homed in their own chunk (foreign pairs) go through memory (all_pair_forces).
+// one thread's pair-order sum: the list is cut into one contiguous chunk per thread, each pair
+// is computed by its chunk's thread, and a body's sum is begun by the chunk holding its first
+// pair (its home). A pair whose bodies are not both homed in its chunk (a foreign pair) adds the
+// side homed there and keeps the other (a late term) for the closing pass, which adds a body's
+// late terms after its sum in pair order (LateTerms): no pass before the walk, no barrier.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -18,10 +20,29 @@ struct BodySum {
   Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
 };
 
-// A foreign pair's results, computed before the chunks' walks (which read them).
+// A foreign pair's results, kept by its chunk's walk for the side homed in an earlier chunk.
 struct ForeignResult {
   Vec3 force_i, torque_i, torque_j;  // N on i, N m on i and on j
-  bool ended;                        // its contact ended this step (PairList::block_ended)
+};
+
+// Each body's late terms (its pairs after its home chunk), added after its sum by the closing
+// pass in pair order: one thread's bits. Addresses, for the closing pass's registers.
+struct LateTerms {
+  const std::uint32_t* begin = nullptr;  // per body + 1: its entries of `late`
+  const std::uint32_t* late = nullptr;   // foreign ordinal << 1 | (1 when the body is j), increasing
+  const ForeignResult* foreign = nullptr;
+  [[gnu::always_inline]] void add_to(std::size_t b, Vec3& force, Vec3& torque) const {
+    for (std::uint32_t e = begin[b]; e < begin[b + 1]; ++e) {
+      const ForeignResult& r = foreign[late[e] >> 1];
+      if (late[e] & 1u) {
+        force -= r.force_i;  // as add_as_j (pair_loop.hpp)
+        torque += r.torque_j;
+      } else {
+        force += r.force_i;
+        torque += r.torque_i;
+      }
+    }
+  }
 };
 
 // The cut of a pair list for a team of `threads`, rebuilt with the list or the team size.
@@ -35,19 +56,17 @@ struct PairSplit {
   std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j
   std::vector<std::uint32_t> home_begin;     // per chunk + 1: its bodies in `homes`
   std::vector<std::uint32_t> homes;          // the bodies with pairs, by home chunk
-  std::vector<std::uint32_t> early_begin;    // per entry of `homes` + 1: its pairs in earlier chunks
-  std::vector<std::uint32_t> early;          // foreign ordinal << 1 | (1 when the body is j), increasing
-  std::vector<std::uint32_t> early_homes_begin;  // per chunk + 1: its entries of `homes` with early pairs
-  std::vector<std::uint32_t> early_homes;        // those entries (indices of `homes`), by chunk
+  std::vector<std::uint32_t> late_begin;     // per body + 1: its late terms in `late` (LateTerms)
+  std::vector<std::uint32_t> late;           // foreign ordinal << 1 | (1 when the body is j), by body
 };
 
 // Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the work
-// each chunk does in its walk: its internal pairs, each weighed by its contacts at the last step
-// (`touching`, per pair, or empty: none), and the foreign ones' adds (computed before, shared out),
-// plus the work of the bodies it takes in the step's other passes (`body_weight`, per body in
-// pairs apart, or empty: none). Chunk t gets the fraction shares[t] of the whole weight (`shares`:
-// per thread, summing to 1, or empty: even shares). Thread t takes the bodies from the body i of
-// chunk t's first pair (body_cut): each body with pairs as i is in the share of the chunk of its last one.
+// each chunk does in its walk: its pairs, each weighed by its contacts at the last step
+// (`touching`, per pair, or empty: none), plus the work of the bodies it takes in the step's
+// other passes (`body_weight`, per body in pairs apart, or empty: none). Chunk t gets the
+// fraction shares[t] of the whole weight (`shares`: per thread, summing to 1, or empty: even
+// shares). Thread t takes the bodies from the body i of chunk t's first pair (body_cut): each
+// body with pairs as i is in the share of the chunk of its last one.
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
                  const std::vector<double>& shares = {});
@@ -69,28 +88,38 @@ struct alignas(64) ThreadPace {
 std::vector<double> paced_shares(const PairSplit& split, const std::vector<ThreadPace>& pace,
                                  const std::vector<double>& shares);
 
+// One thread's flag: every sum its chunk begins is +0 (reset, or each taken and cleared by
+// ForceSums since the loop), so its walk starts from them as they are, with no pass clearing
+// them. A cache line each: set by sums_taken between the regions, read and cleared by its own
+// thread at the loop's start (no barrier between the threads' reads and a clear).
+struct alignas(64) SumsZero {
+  bool on = false;
+};
+
 // The body pairs' sums (per body of the contact stage), made by their loop every step.
 struct DirectSums {
   std::vector<BodySum> sums;
   std::vector<float> body_weight;  // per body, its other passes' work in pairs apart (split_pairs), or empty
   PairSplit split;
-  std::vector<ForeignResult> foreign;  // per foreign pair of `split`
+  std::vector<ForeignResult> foreign;  // per foreign pair of `split`: its late terms
   // The cut follows the threads' measured speed: a vCPU slowed by the host (or another process
   // on its core) for seconds takes less of the next cut. `shares` is the last cut's (empty: even);
   // `follow_pace` false keeps them as set (tests force cuts with it).
   std::vector<ThreadPace> pace;  // per thread of the cut's team
   std::vector<double> shares;
   bool follow_pace = true;
-  // Every sum is +0 (reset, or each taken and cleared by ForceSums since the loop): the first
-  // chunk's walk then starts from them as they are, no pass to clear its home bodies' sums.
-  // Read by every thread at the loop's start (then only the sums with early pairs are started),
-  // cleared by the first chunk's thread after the foreign pairs' barrier.
-  bool zero = false;
+  std::vector<SumsZero> zero;  // per thread of the cut's team
+  void taken() {  // every sum was read and cleared (ForceSums)
+    for (SumsZero& z : zero) z.on = true;
+  }
   void reset(std::size_t n_bodies) {  // at each rebuild: the split is cut again in the loop
     sums.assign(n_bodies, BodySum{});
     split.threads = 0;
-    zero = true;
+    split.late_begin.assign(n_bodies + 1, 0);  // no late terms until the loop (a closing pass may read)
+    split.late.clear();
+    zero.assign(1, SumsZero{true});
   }
+  LateTerms late_terms() const { return {split.late_begin.data(), split.late.data(), foreign.data()}; }
 };
 
 }  // namespace polydem

@@ -123,8 +123,11 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
       wrong_calls += calls[k] != 1;
       wrong_pending += !same_bits(list.pending[k], pending[k]);
     }
-    for (std::uint32_t b = 0; b < n_bodies; ++b)
-      wrong_sums += !same_bits(direct.sums[b].force, plain[b].force) || !same_bits(direct.sums[b].torque, plain[b].torque);
+    for (std::uint32_t b = 0; b < n_bodies; ++b) {  // the loop's sum, then the late terms (as ForceSums adds them)
+      Vec3 force = direct.sums[b].force, torque = direct.sums[b].torque;
+      direct.late_terms().add_to(b, force, torque);
+      wrong_sums += !same_bits(force, plain[b].force) || !same_bits(torque, plain[b].torque);
+    }
     for (std::size_t b = 0; b < blocks; ++b) {
       wrong_blocks += list.block_contacts[b] != contacts[b] || bool(list.block_ended[b]) != bool(ended[b]);
       ends += ended[b];
@@ -139,7 +142,7 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
       CHECK(std::abs(double(direct.split.cut[1]) / double(list.size()) - shares[0]) < 0.1);
     if (step % 2) {  // the sums taken and cleared, as a closing pass does (ForceSums): the next loop starts from them
       std::fill(direct.sums.begin(), direct.sums.end(), BodySum{});
-      direct.zero = true;
+      direct.taken();
     }
   }
 }
@@ -154,15 +157,13 @@ PairSplit split_for(const std::vector<BodyPair>& pairs, std::uint32_t n_bodies, 
   return split;
 }
 
-// The chunk of each body's last pair, as i only or as either side; -1 for a body in no pair.
-std::vector<int> last_chunk(const std::vector<BodyPair>& pairs, const PairSplit& split, std::uint32_t n_bodies,
-                            bool either_side) {
+// The chunk of each body's last pair as i; -1 for a body in no pair as i.
+std::vector<int> last_chunk_as_i(const std::vector<BodyPair>& pairs, const PairSplit& split, std::uint32_t n_bodies) {
   std::vector<int> last(n_bodies, -1);
   int c = 0;
   for (std::uint32_t k = 0; k < pairs.size(); ++k) {
     while (k >= split.cut[c + 1]) ++c;
     last[pairs[k].i] = c;
-    if (either_side) last[pairs[k].j] = c;
   }
   return last;
 }
@@ -175,7 +176,7 @@ TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pai
   check_sums(40, 39);      // one block: the later chunks empty
 }
 
-TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk", "[pair_split]") {
+TEST_CASE("a split cuts at blocks, homes each body in its first pair's chunk and lists its later pairs", "[pair_split]") {
   std::mt19937_64 rng(7);
   const std::uint32_t n_bodies = 3000;
   const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 6 * n_bodies, 60);
@@ -189,18 +190,30 @@ TEST_CASE("a split cuts at blocks and homes each body in its last pair's chunk",
         CHECK(home[split.homes[h]] == -1);  // one home a body
         home[split.homes[h]] = t;
       }
-    const std::vector<int> last = last_chunk(pairs, split, n_bodies, true);
-    int wrong_home = 0;
-    for (std::uint32_t b = 0; b < n_bodies; ++b) wrong_home += home[b] != last[b];
-    CHECK(wrong_home == 0);
-    // The homes with pairs in earlier chunks, listed by chunk (none in the first).
-    CHECK(split.early_homes_begin[1] == 0);
-    for (int t = 0; t < threads; ++t) {
-      std::uint32_t with_early = 0;
-      for (std::uint32_t h = split.home_begin[t]; h < split.home_begin[t + 1]; ++h)
-        with_early += split.early_begin[h] < split.early_begin[h + 1];
-      CHECK(split.early_homes_begin[t + 1] - split.early_homes_begin[t] == with_early);
+    // Each body's home is its first pair's chunk; its pairs in later chunks are its late terms, in order.
+    std::vector<int> first(n_bodies, -1);
+    std::vector<std::vector<std::uint32_t>> later(n_bodies);
+    int c = 0;
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+      while (k >= split.cut[c + 1]) ++c;
+      for (std::uint32_t b : {pairs[k].i, pairs[k].j}) {
+        if (first[b] < 0) first[b] = c;
+        if (c != first[b]) later[b].push_back(k);
+      }
     }
+    int wrong_home = 0, wrong_late = 0;
+    for (std::uint32_t b = 0; b < n_bodies; ++b) {
+      wrong_home += home[b] != first[b];
+      std::vector<std::uint32_t> listed;
+      for (std::uint32_t e = split.late_begin[b]; e < split.late_begin[b + 1]; ++e) {
+        const std::uint32_t k = split.foreign[split.late[e] >> 1];
+        listed.push_back(k);
+        wrong_late += (split.late[e] & 1u) != (pairs[k].j == b);  // the side it is
+      }
+      wrong_late += listed != later[b];
+    }
+    CHECK(wrong_home == 0);
+    CHECK(wrong_late == 0);
     // Ids that follow space: only a boundary layer of pairs is foreign.
     CHECK(split.foreign_side.size() <= std::size_t(threads - 1) * pairs.size() / 10);
   }
@@ -233,7 +246,7 @@ TEST_CASE("a split cuts the bodies where it cuts the pairs: each body with the c
     CHECK(at.front() == 0);
     CHECK(at.back() == n_bodies);
     for (int t = 0; t < threads; ++t) CHECK(at[t] <= at[t + 1]);
-    const std::vector<int> last = last_chunk(pairs, split, n_bodies, false);
+    const std::vector<int> last = last_chunk_as_i(pairs, split, n_bodies);
     int wrong_share = 0;
     for (std::uint32_t b = 0; b < n_bodies; ++b)
       if (last[b] >= 0) wrong_share += b < at[last[b]] || b >= at[last[b] + 1];
@@ -256,15 +269,16 @@ TEST_CASE("a split weighs the bodies' other work: heavy bodies at the low ids mo
   CHECK(std::abs(double(heavy.body_cut[1]) - 620.0) <= 0.03 * n_bodies);
 }
 
-TEST_CASE("ids at random in space: the cut halves the bodies, each foreign result weighed where it is added", "[pair_split]") {
+TEST_CASE("ids at random in space: the cut halves the pairs, each computed by its chunk's thread", "[pair_split]") {
   std::mt19937_64 rng(19);
   const std::uint32_t n_bodies = 3000;
   PairSplit split;
-  split_pairs(shuffled_chain_pairs(rng, n_bodies, 3), {}, {}, n_bodies, 2, split);
-  // Half the bodies each: half the internal pairs each, and the crossing pairs' results added half
-  // in the first chunk's walk (their i), half at the start of the second (their j). Weighed in the
-  // first chunk alone, the cut fell at body ~1,320 (0.44 n).
-  CHECK(std::abs(double(split.body_cut[1]) - 0.5 * n_bodies) <= 0.03 * n_bodies);
+  const std::vector<BodyPair> pairs = shuffled_chain_pairs(rng, n_bodies, 3);
+  split_pairs(pairs, {}, {}, n_bodies, 2, split);
+  CHECK(std::abs(double(split.cut[1]) - 0.5 * double(pairs.size())) <= double(kPairBlock));
+  // Most pairs are foreign (a body's first pair lies anywhere), each one's late side listed once.
+  CHECK(split.foreign_side.size() > pairs.size() / 4);
+  CHECK(split.late.size() >= split.foreign_side.size());
 }
 
 TEST_CASE("a team's shares of the bodies take each body once, by the cut made for its size", "[pair_split]") {
