@@ -50,3 +50,15 @@ TEST_CASE("accuracy: under damping_mass: contact a cube landing flat rebounds at
   CHECK(at_03 <= 0.015);
   CHECK(cube_flat_error(0.01, 2, true) < 1e-4);
 }
+
+TEST_CASE("accuracy: a cube landing almost flat, its far edge joining mid-contact, is second order against the RK4 patch", "[validation][second_order]") {
+  // The far edge's two vertices join the near edge's patch within a step of the touch (kJoinGap):
+  // their start is no onset of the patch's force (pair_kernel.hpp, mark_joins).
+  const double at_auto = cube_join_error(0.1), at_005 = cube_join_error(0.05), at_0025 = cube_join_error(0.025);
+  const double order = std::log2(at_auto / at_005), order_fine = std::log2(at_005 / at_0025);
+  std::printf("cube joining edge, worst of 8 touch places: error %.2e at 0.1, %.2e at 0.05, %.2e at 0.025, order %.2f, %.2f\n",
+              at_auto, at_005, at_0025, order, order_fine);
+  CHECK(at_auto <= 3e-3);
+  CHECK(order >= 1.8);
+  CHECK(order_fine >= 1.8);
+}
