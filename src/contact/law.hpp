@@ -146,7 +146,7 @@ template <bool kLone>
   const double u = k.weight * step.force(-k.dn, -vn, f_rest);  // N, unclamped, signed: -dn inside the overlap
   NormalForce out;
   out.sampled = true;
-  if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
+  if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
     const ExactOnset onset = exact_onset_force(law.kn, law.alpha_n, k.m_eff, dt, overlap, -vn);
     out.fp = k.weight * onset.force;
     out.since_touch = onset.since_touch;
@@ -225,7 +225,7 @@ template <class Normal, bool kLone>
     // Both corrections in fp, the dashpot's share, so the ledger counts their work: kept out, as
     // the linear law's push, en 0.9's ledger after an impact at 0.3 x critical was 3.2% off, in
     // fp 2.0% (2.7% before them; the kernel alone, worst of 16 touch places).
-    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
+    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
       out.fp = Normal::onset_force(law, k.r_star, k.weight, nu, k.m_eff, overlap, -vn, dt);
     } else if (overlap > 0.0) {
       const double inv_m = 1.0 / k.m_eff, vn_end = k.v_end.dot(k.normal);  // 1/kg, m/s
@@ -244,8 +244,8 @@ template <class Normal, bool kLone>
     // N, unclamped and signed: the spring at -dn is `spring` inside the overlap (one evaluation).
     const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;
     if (overlap > 0.0) out.fp = std::max(u, 0.0);
-    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0) {
-      const OnsetForce onset = onset_force(overlap, vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
+    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
+      const OnsetForce onset = onset_force(std::max(overlap, k.patch_depth), vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
       out.fp += onset.dashpot;
       // The spring's push pairs with the one where the clamp lets go, inside the overlap: an
       // undamped contact ends at x = 0, where the kernels no longer see it (band 0), so it

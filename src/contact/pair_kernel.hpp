@@ -119,7 +119,34 @@ struct PairScratch {
   std::vector<std::uint32_t> region;  // contact region of each found contact (non-convex pairs)
   std::vector<std::uint8_t> now_on;
   std::vector<double> patch_mass;     // kg, damping_mass: contact on a patch (patch_dashpot_masses)
+  std::vector<double> patch_depth;    // m, per found contact: ContactKinematics::patch_depth (patch_onsets)
+  bool onsets = false;                // patch_depth is set for this pair (rare: the contact set changed)
 };
+
+// The sub-contacts whose overlap starts this step (none at n) in a patch of several (their region;
+// the pair on convex bodies) act as one contact, whose force starts at the patch's first touch:
+//  - another overlapped at n: the patch's force is continuous, the new one entering at weight ~0
+//    and taking its share from the others, so its start is no onset (patch_depth -1). Counted as
+//    one, its dashpot's share looked like a jump from zero: an O(dt) impulse where the new vertex
+//    is as deep as the others after a step (a cube landing almost flat: issue 16's tilted pair);
+//  - none did: each one's onset dates from the touch of the deepest (patch_depth its overlap),
+//    its weighted shares then summing to the patch's dashpot jump at that touch.
+inline void patch_onsets(bool regions, PairScratch& scratch) {
+  const std::size_t n = scratch.found.size();
+  scratch.patch_depth.assign(n, 0.0);
+  scratch.onsets = true;
+  const auto same = [&](std::size_t c, std::size_t o) { return !regions || scratch.region[o] == scratch.region[c]; };
+  for (std::size_t c = 0; c < n; ++c) {
+    if (scratch.found[c].state->history.gap < 0.0) continue;  // overlapped at n (or took a history)
+    double depth = 0.0;  // m
+    for (std::size_t o = 0; o < n && depth >= 0.0; ++o) {
+      if (!same(c, o)) continue;
+      if (scratch.found[o].state->history.gap < 0.0) depth = -1.0;
+      else depth = std::max(depth, -scratch.found[o].geometry.gap);
+    }
+    scratch.patch_depth[c] = depth;
+  }
+}
 
 // damping_mass: contact on a patch of several sub-contacts: they act as one spring (the patch
 // weights), so each one's dashpot takes the mass at the patch's centre of pressure, the levers
@@ -295,7 +322,8 @@ template <class Parts, class Partner>
                         pl.nu_t,
                         pl.r_star,
                         pl.exact_step,
-                        law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k]};  // k', c' for the pair's fixed mass
+                        law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k],  // k', c' for the pair's fixed mass
+                        pl.scratch.onsets ? pl.scratch.patch_depth[c] : 0.0};
   const ContactForce f = contact_force<Parts, false, Stored::kSkip>(law, kin, pl.scratch.found[c].state->history, lc.dt);
   if constexpr (Parts::rolling) add_contact(pl, c, f, motion.lever.cross(f.force) + f.moment);
   else add_contact(pl, c, f, motion.lever.cross(f.force));
@@ -396,7 +424,8 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     return totals;  // most listed pairs, at a glance
   find_contacts(band, a, partner, list, k, scratch);
   const double r_star = Parts::Normal::kCurved ? partner.r_star(a.radius, p.j) : 0.0;  // m
-  if ((was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found))
+  const bool changed = (was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found);
+  if (changed)
     totals.energy = hand_over_history(list, list.slot_begin[k], list.slot_begin[k + 1], was_touching,
                                       scratch.found, scratch.now_on, &law, r_star);
   if (scratch.found.empty()) return totals;
@@ -410,6 +439,8 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     patch_weights(scratch.found, band, scratch.weight);
   if (law.contact_mass && scratch.found.size() > 1)
     patch_dashpot_masses(a, bodies.mass[p.i], bodies.position[p.i], partner, p.j, regions, scratch);
+  scratch.onsets = false;
+  if (changed && scratch.found.size() > 1) patch_onsets(regions, scratch);
   apply_law<Parts>(law, dt, bodies, partner, list, k, scratch, r_star, totals);
   return totals;
 }

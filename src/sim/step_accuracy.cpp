@@ -201,6 +201,7 @@ double accuracy_fraction(double accuracy, ImpactModel model) {
 double auto_fraction(ImpactModel model) {
   if (model.exact) return accuracy_fraction(kAutoAccuracy, ImpactModel{.exact = true});
   if (model.hertz && !model.polyhedra) return accuracy_fraction(kAutoAccuracy, ImpactModel{.hertz = true});
+  if (model.polyhedra) return accuracy_fraction(kAutoAccuracy, ImpactModel{.polyhedra = true});  // kCubes: 0.0654
   return kAutoFraction;
 }
 

@@ -27,8 +27,9 @@ constexpr double kAutoAccuracy = 1e-3;
 
 // The fraction of the critical step `dt: auto` takes: kAutoAccuracy's by the exact step's
 // sphere-wall rows where every contact takes the exact step (0.181), by the Hertz rows for
-// spheres under a Hertz law (0.167), else kAutoFraction (sim/time_step.hpp). The oblique
-// impact's rows are left out of both, as friction's error is the tangential spring's.
+// spheres under a Hertz law (0.167), by the cube landings where a body is a polyhedron (0.0654,
+// 0.1 before session 27), else kAutoFraction (sim/time_step.hpp). The oblique impact's rows are
+// left out of all three, as friction's error is the tangential spring's.
 double auto_fraction(ImpactModel model);
 
 // The largest fraction of the critical step (at most kUnsafeFraction) whose expected error

@@ -39,8 +39,8 @@ double expected_impact_speed(const Bodies& bodies, const std::vector<Shape>& sha
 
 // A fraction of the critical step: w0 dt <= 0.2 on the lightest contact-point mass, less on
 // heavier contacts; a single impact's restitution is then 0.1-0.25% off (tools/bench/accuracy).
-// Where every contact takes the linear law's exact step, or spheres meet under Hertz, `dt: auto`
-// takes the step of kAutoAccuracy instead, and simulation: accuracy picks another fraction (sim/step_accuracy.hpp).
+// Where every contact takes the linear law's exact step, spheres meet under Hertz, or a body is
+// a polyhedron, `dt: auto` takes the step of kAutoAccuracy instead, and simulation: accuracy picks another fraction (sim/step_accuracy.hpp).
 // A given step above kUnsafeFraction draws a warning, and `accuracy` never picks more.
 constexpr double kAutoFraction = 0.1;
 constexpr double kUnsafeFraction = 0.3;

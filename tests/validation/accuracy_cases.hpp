@@ -308,7 +308,7 @@ inline double cube_corner_error(double fraction, bool contact_mass, bool rk4 = f
   static std::optional<double> rk4_rebound[2];  // -, once per dashpot mass: 30,000 RK4 steps, not the engine's run time
   if (rk4 && !rk4_rebound[contact_mass]) {
     const double m_dashpot = contact_mass ? m_star : m;  // kg, at the touch
-    const CornerLanding landing{m, inertia, kKn, 2.0 * alpha * std::sqrt(kKn * m_dashpot), r, contact_mass ? alpha : 0.0};
+    const CornerLanding landing{m, inertia, kKn, 2.0 * alpha * std::sqrt(kKn * m_dashpot), {r}, contact_mass ? alpha : 0.0};
     const double t_c = ClampedImpact{alpha * std::sqrt(m_dashpot / m_star), std::sqrt(kKn / m_star), 0.01, m_star}.release_time();
     rk4_rebound[contact_mass] = landing.rebound(0.01, 1.5 * t_c, t_c / 20000.0);  // s: halving the step moves it by < 1e-10
   }

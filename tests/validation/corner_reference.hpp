@@ -7,7 +7,12 @@
 // point's rebound (4.5e-4 with the contact's mass): this keeps it. Converged to 1e-10 of the
 // rebound at t_c/20000 (t_c/5000 to t_c/80000 agree to 6e-9); with the inertia taken infinite it
 // gives the closed form's en to 1e-14. Used by the accuracy slice and sweep.
+// Several vertices (a face landing tilted): one patch, each overlapping vertex's clamped
+// spring-dashpot scaled by its patch weight x_k / sum(x) (pair_kernel.hpp, band 0), so a vertex
+// that joins mid-contact enters at weight 0 (the nu on m only).
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "validation.hpp"
 
@@ -16,7 +21,7 @@ namespace polydem::validation {
 struct CornerLanding {
   double m, inertia;        // kg, kg m^2 (isotropic)
   double kn, nu;            // N/m, N s/m (the pair's mass: fixed)
-  Vec3 vertex;              // m, the touching vertex from the centre at the touch (world frame)
+  std::vector<Vec3> vertices;  // m, from the centre at the touch (world frame): the lowest touches at t = 0
   double alpha_contact = 0.0;  // -, > 0: nu = 2 alpha sqrt(kn m*) on the vertex's m* now (damping_mass: contact)
 
   struct State {
@@ -24,12 +29,33 @@ struct CornerLanding {
     Quat q;             // the turn since the touch
     Vec3 w;             // rad/s
   };
-  // N, the floor's force: the vertex's overlap x = -(z + (q r - r).z) at rate -(vz + (w x q r).z).
-  double force(const State& s) const {
-    const Vec3 r = s.q * vertex;
-    const double x = -(s.z + r.z() - vertex.z()), rate = -(s.vz + s.w.cross(r).z());
-    if (x < 0.0 || (x == 0.0 && rate <= 0.0)) return 0.0;
-    return std::max(kn * x + dashpot(r) * rate, 0.0);
+  // N and N m about the centre, the floor's: vertex k's overlap x = -(z + (q r_k).z - floor) at
+  // rate -(vz + (w x q r_k).z), its force w_k max(kn x + nu rate, 0); w_k = x / sum(x), or
+  // shared by the vertices touching at x = 0 when none overlaps (the start: the dashpot's jump).
+  struct Load {
+    double force;
+    Vec3 torque;
+  };
+  Load load(const State& s) const {
+    double floor = 1e300, total = 0.0;  // m
+    for (const Vec3& v : vertices) floor = std::min(floor, v.z());
+    int at_zero = 0;
+    for (const Vec3& v : vertices) {
+      const double x = -(s.z + (s.q * v).z() - floor);
+      total += std::max(x, 0.0);
+      at_zero += x == 0.0;
+    }
+    Load out{0.0, Vec3::Zero()};
+    for (const Vec3& v : vertices) {
+      const Vec3 r = s.q * v;
+      const double x = -(s.z + r.z() - floor), rate = -(s.vz + s.w.cross(r).z());
+      if (x < 0.0 || (x == 0.0 && rate <= 0.0)) continue;
+      const double weight = total > 0.0 ? x / total : 1.0 / at_zero;
+      const double f = weight * std::max(kn * x + dashpot(r) * rate, 0.0);
+      out.force += f;
+      out.torque += r.cross(Vec3(0.0, 0.0, f));
+    }
+    return out;
   }
   // N s/m, the dashpot with the lever r (m) from the centre to the vertex now.
   double dashpot(const Vec3& r) const {
@@ -42,19 +68,18 @@ struct CornerLanding {
     Vec3 w;
   };
   Rate rate(const State& s) const {
-    const double f = force(s);
+    const Load f = load(s);
     const Quat dq = Quat(0.0, s.w.x(), s.w.y(), s.w.z()) * s.q;  // dq/dt = (0, w) q / 2
-    return {s.vz, f / m, 0.5 * dq.coeffs(), (s.q * vertex).cross(Vec3(0.0, 0.0, f)) / inertia};
+    return {s.vz, f.force / m, 0.5 * dq.coeffs(), f.torque / inertia};
   }
   static State add(const State& s, const Rate& k, double h) {
     Quat q;
     q.coeffs() = s.q.coeffs() + h * k.q;
     return {s.z + h * k.z, s.vz + h * k.vz, q, s.w + h * k.w};
   }
-  // -, the vertex's normal velocity after the impact over v0 (> 0: rebound), taken with the lever
-  // at the touch as the engine's measure does; from the touch at v0 (m/s) over `span` (s, past
-  // the release) in steps h (s). The force starts at t = 0 and ends without a jump (the clamp).
-  double rebound(double v0, double span, double h) const {
+  // The state from the touch at v0 (m/s) over `span` (s, past the release) in steps h (s). The
+  // force starts at t = 0 and ends without a jump (the clamp).
+  State land(double v0, double span, double h) const {
     State s{0.0, -v0, Quat::Identity(), Vec3::Zero()};
     const long steps = std::lround(span / h);
     for (long n = 0; n < steps; ++n) {
@@ -64,7 +89,13 @@ struct CornerLanding {
       s = add(s, sum, h / 6.0);
       s.q.normalize();
     }
-    return (s.vz + s.w.cross(vertex).z()) / v0;
+    return s;
+  }
+  // -, the first vertex's normal velocity after the impact over v0 (> 0: rebound), taken with
+  // the lever at the touch as the engine's measure does.
+  double rebound(double v0, double span, double h) const {
+    const State s = land(v0, span, h);
+    return (s.vz + s.w.cross(vertices[0]).z()) / v0;
   }
 };
 

@@ -62,6 +62,11 @@ struct ContactKinematics {
   // The pair's cached k' and c' (exact_linear.hpp) where m_eff stays the pair's for the list's
   // life; null: computed for this contact (damping_mass: contact, callers of one contact).
   LinearStep* linear_step = nullptr;
+  // m, where the overlap starts in a patch of several sub-contacts (pair_kernel.hpp, patch_onsets):
+  // < 0, the patch overlapped at n, so its force does not start and the onset's pushes
+  // (second_order.hpp) are not taken; else the deepest overlap of those starting with this one,
+  // so the end-of-step dashpot's pushes date from the patch's touch (0: this contact alone).
+  double patch_depth = 0.0;
 };
 
 struct ContactForce {
