@@ -23,21 +23,21 @@ echo "ok: polydem render draws the -np 2 run from its .pvtu files"
 # Checkpoints in parallel: a manifest and a piece per rank. The -np 2 run's 20 ms checkpoint
 # resumed by one process ends on the plain run's state and CSV files (the -np 3 resume:
 # mpi_run.sh); so does the -np 2 final checkpoint, joined by one process resuming it at its time.
-mid=$tmp/np2/checkpoint_001656.bin
+mid=$tmp/np2/checkpoint_002533.bin
 for f in "$mid" "${mid%.bin}_p0.bin" "${mid%.bin}_p1.bin"; do [ -s "$f" ] || fail "no $f"; done
 [ "$(head -c 8 "$mid")" = PDCKMA03 ] || fail "$mid is not a manifest"
 cp -r "$tmp/np2" "$tmp/one"
-rm "$tmp/one"/checkpoint_003313*.bin
-"$polydem" run "$tmp/pour.yaml" --out "$tmp/one" --resume "$tmp/one/checkpoint_001656.bin" --threads 1 \
+rm "$tmp/one"/checkpoint_005067*.bin
+"$polydem" run "$tmp/pour.yaml" --out "$tmp/one" --resume "$tmp/one/checkpoint_002533.bin" --threads 1 \
   > /dev/null 2>&1 || fail "one process resuming the -np 2 pieces"
-/usr/bin/python3 "$here/same_state.py" "$tmp/plain/checkpoint_003313.bin" "$tmp/one/checkpoint_003313.bin" > /dev/null ||
+/usr/bin/python3 "$here/same_state.py" "$tmp/plain/checkpoint_005067.bin" "$tmp/one/checkpoint_005067.bin" > /dev/null ||
   fail "-np 2 pieces resumed by one process: another final state"
 for f in energy.csv driver_floor.csv driver_left.csv; do
   cmp "$tmp/plain/$f" "$tmp/one/$f" || fail "-np 2 pieces resumed by one process: $f differs"
   cmp "$tmp/plain/$f" "$tmp/np2/$f" || fail "-np 2: $f differs from one process's"
 done
-/usr/bin/python3 "$here/same_state.py" "$tmp/plain/checkpoint_003313.bin" \
-  "$(joined "$tmp/pour.yaml" "$tmp/np2/checkpoint_003313.bin")" > /dev/null || fail "-np 2: another final state"
+/usr/bin/python3 "$here/same_state.py" "$tmp/plain/checkpoint_005067.bin" \
+  "$(joined "$tmp/pour.yaml" "$tmp/np2/checkpoint_005067.bin")" > /dev/null || fail "-np 2: another final state"
 echo "ok: -np 2 checkpoint pieces resume in one process on the plain run's bits, CSV files included"
 
 # A missing, damaged or foreign piece: one message naming the manifest, the piece and its file,
@@ -45,16 +45,16 @@ echo "ok: -np 2 checkpoint pieces resume in one process on the plain run's bits,
 broken() {  # what to do to the copy's 20 ms checkpoint, expected message, ranks (0: one process)
   rm -rf "$tmp/broken" && cp -r "$tmp/np2" "$tmp/broken"
   (cd "$tmp/broken" && eval "$1")
-  local run=("$polydem" run "$tmp/pour.yaml" --out "$tmp/broken" --resume "$tmp/broken/checkpoint_001656.bin")
+  local run=("$polydem" run "$tmp/pour.yaml" --out "$tmp/broken" --resume "$tmp/broken/checkpoint_002533.bin")
   if [ "$3" = 0 ]; then expect_exit 1 "$2" "${run[@]}"
   else expect_exit 1 "$2" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np "$3" "${run[@]}"
   fi
   [ "$(grep -c "error:" "$tmp/err")" -eq 1 ] || { cat "$tmp/err"; fail "not one message"; }
 }
-broken "rm checkpoint_001656_p1.bin" "checkpoint_001656.bin: piece 1 of 2 (.*checkpoint_001656_p1.bin) is missing" 2
-broken "printf x | dd of=checkpoint_001656_p0.bin bs=1 seek=100 conv=notrunc status=none" \
+broken "rm checkpoint_002533_p1.bin" "checkpoint_002533.bin: piece 1 of 2 (.*checkpoint_002533_p1.bin) is missing" 2
+broken "printf x | dd of=checkpoint_002533_p0.bin bs=1 seek=100 conv=notrunc status=none" \
   "piece 0 of 2 .* is damaged: .*checksum mismatch" 0
-broken "cp checkpoint_003313_p0.bin checkpoint_001656_p0.bin" "piece 0 of 2 .* is not the piece the manifest names" 0
+broken "cp checkpoint_005067_p0.bin checkpoint_002533_p0.bin" "piece 0 of 2 .* is not the piece the manifest names" 0
 echo "ok: a missing, damaged or foreign checkpoint piece: one message naming it, exit 1"
 
 # SIGTERM on mpirun (as Ctrl-C or a batch scheduler's stop): every rank stops at the same step
@@ -90,7 +90,7 @@ rm "$tmp/ref/$(basename "$stopped")"
 joined=$(joined "$tmp/pour.yaml" "$stopped")
 /usr/bin/python3 "$here/same_state.py" "$tmp/ref/$(basename "$stopped")" "$joined" > /dev/null ||
   fail "SIGTERM at -np 2: the checkpoint at step $step is not the run's state there"
-later=$(checkpoint_time "$stopped" 1656)
+later=$(checkpoint_time "$stopped" 2533)
 "$polydem" run "$tmp/pour.yaml" --out "$tmp/ref" --resume "$tmp/ref/$(basename "$stopped")" --until "$later" \
   --threads 1 > /dev/null 2>&1 || fail "one process 20 ms on"
 mpi 3 run "$tmp/pour.yaml" --out "$tmp/stopped" --resume "$stopped" --until "$later" --threads 1 > /dev/null 2>&1 ||

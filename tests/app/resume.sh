@@ -20,11 +20,11 @@ same_outputs() {  # same_outputs DIR_A DIR_B: every CSV and the .pvd identical
 # A run killed (SIGKILL) after its rows to 40 ms but with its last checkpoint at 20 ms, the
 # last row of energy.csv half written: resumed, it ends as the uninterrupted run.
 cp -r "$tmp/full" "$tmp/killed"
-rm "$tmp/killed/checkpoint_010476.bin"
+rm "$tmp/killed/checkpoint_016023.bin"
 head -c -20 "$tmp/full/energy.csv" > "$tmp/killed/energy.csv"
-"$polydem" run "$tmp/drop.yaml" --out "$tmp/killed" --resume "$tmp/killed/checkpoint_005238.bin" 2> /dev/null || fail "resume"
+"$polydem" run "$tmp/drop.yaml" --out "$tmp/killed" --resume "$tmp/killed/checkpoint_008011.bin" 2> /dev/null || fail "resume"
 same_outputs "$tmp/full" "$tmp/killed"
-cmp "$tmp/full/checkpoint_010476.bin" "$tmp/killed/checkpoint_010476.bin" || fail "final state differs"
+cmp "$tmp/full/checkpoint_016023.bin" "$tmp/killed/checkpoint_016023.bin" || fail "final state differs"
 
 # SIGTERM: a checkpoint, exit code 3; resumed, the same rows and state as the full run.
 sed "s/duration: \"40 ms\"/duration: \"400 ms\"/" "$tmp/drop.yaml" > "$tmp/long.yaml"
@@ -53,18 +53,18 @@ same_outputs "$tmp/long" "$tmp/cut"
 
 # Another scene (gravity upwards, same bodies and step): refused, or resumed with --force.
 sed "s/gravity: \[0, 0, -9.807\]/gravity: [0, 0, 9.807]/" "$tmp/drop.yaml" > "$tmp/up.yaml"
-set +e; "$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/up.log"; code=$?; set -e
+set +e; "$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_008011.bin" 2> "$tmp/up.log"; code=$?; set -e
 [ "$code" -eq 1 ] || fail "another scene's checkpoint: exit $code, expected 1"
-grep -q "checkpoint_005238.bin: checkpoint written for another scene.*--force" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no refusal message"; }
-"$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_005238.bin" --force 2> "$tmp/up.log" || fail "--force"
+grep -q "checkpoint_008011.bin: checkpoint written for another scene.*--force" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no refusal message"; }
+"$polydem" run "$tmp/up.yaml" --out "$tmp/up" --resume "$tmp/full/checkpoint_008011.bin" --force 2> "$tmp/up.log" || fail "--force"
 grep -q "warning: .*another scene.*resuming anyway (--force)" "$tmp/up.log" || { cat "$tmp/up.log"; fail "no --force warning"; }
 # Moved or resized drivers are another scene too (the wall's point, the box's width).
 sed "s/name: left, point: \[-0.035, 0, 0\]/name: left, point: [-0.036, 0, 0]/" "$tmp/drop.yaml" > "$tmp/wide.yaml"
 grep -q "point: \[-0.036" "$tmp/wide.yaml" || fail "wide.yaml: the wall did not move"
-set +e; "$polydem" run "$tmp/wide.yaml" --out "$tmp/wide" --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/wide.log"; code=$?; set -e
+set +e; "$polydem" run "$tmp/wide.yaml" --out "$tmp/wide" --resume "$tmp/full/checkpoint_008011.bin" 2> "$tmp/wide.log"; code=$?; set -e
 [ "$code" -eq 1 ] && grep -q "written for another scene" "$tmp/wide.log" || { cat "$tmp/wide.log"; fail "a moved wall: exit $code"; }
 # A checkpoint past the end of the run.
-set +e; "$polydem" run "$tmp/drop.yaml" --out "$tmp/past" --until 0.01 --resume "$tmp/full/checkpoint_005238.bin" 2> "$tmp/past.log"; code=$?; set -e
+set +e; "$polydem" run "$tmp/drop.yaml" --out "$tmp/past" --until 0.01 --resume "$tmp/full/checkpoint_008011.bin" 2> "$tmp/past.log"; code=$?; set -e
 [ "$code" -eq 1 ] && grep -q "past the end of this run" "$tmp/past.log" || { cat "$tmp/past.log"; fail "checkpoint past the end: exit $code"; }
 # A checkpoint at the very end of the run (no step left, as when joining a distributed run's
 # pieces into one file): the run writes it again, byte for byte. Spheres only: their list keeps

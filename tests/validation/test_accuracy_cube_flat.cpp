@@ -37,7 +37,7 @@ TEST_CASE("accuracy: cube landing tilted 1e-3 rad against its converged landing,
               at_03, order);
   // Measured 8.16e-4 at 0.1, 7.39e-3 at 0.3, order 1.78 (acc20's patch onsets; before: 1.70e-3,
   // 1.11e-2, order 1.84). Issue 16's 1.8 is missed by 0.02 with both errors halved: left open
-  // (/work/notes/s27/report_acc20.md).
+  // there (the patch's spring kink where a vertex joins within a step).
   CHECK(at_auto <= 3e-3);
   CHECK(at_03 <= 0.015);
   CHECK(order >= 1.75);
@@ -55,7 +55,7 @@ TEST_CASE("accuracy: under damping_mass: contact a cube landing flat rebounds at
 
 TEST_CASE("accuracy: a cube landing almost flat, its far edge joining mid-contact, is second order against the RK4 patch", "[validation][second_order]") {
   // The far edge's two vertices join the near edge's patch within a step of the touch (kJoinGap):
-  // their start is no onset of the patch's force (pair_kernel.hpp, mark_joins).
+  // their start is no onset of the patch's force (pair_kernel.hpp, patch_onsets).
   const double at_auto = cube_join_error(0.1), at_005 = cube_join_error(0.05), at_0025 = cube_join_error(0.025);
   const double order = std::log2(at_auto / at_005), order_fine = std::log2(at_005 / at_0025);
   std::printf("cube joining edge, worst of 8 touch places: error %.2e at 0.1, %.2e at 0.05, %.2e at 0.025, order %.2f, %.2f\n",
@@ -63,7 +63,7 @@ TEST_CASE("accuracy: a cube landing almost flat, its far edge joining mid-contac
   // Measured 1.44e-3 at 0.1, 5.04e-4 at 0.05, 1.03e-4 at 0.025: order 1.51, then 2.29. Where
   // the far edge starts in the near edge's step (most touch places at 0.1) the patch's onset is
   // still taken from the deepest vertex's, which misses the patch's spring kink at the join:
-  // issue 16's 1.8 holds from 0.05 down only (left open: /work/notes/s27/report_acc20.md).
+  // issue 16's 1.8 holds from 0.05 down only (left open there).
   CHECK(at_auto <= 3e-3);
   CHECK(order >= 1.4);
   CHECK(order_fine >= 1.8);
