@@ -30,14 +30,7 @@ cmp "$tmp/full/checkpoint_016023.bin" "$tmp/killed/checkpoint_016023.bin" || fai
 sed "s/duration: \"40 ms\"/duration: \"400 ms\"/" "$tmp/drop.yaml" > "$tmp/long.yaml"
 "$polydem" run "$tmp/long.yaml" --out "$tmp/long" 2> /dev/null || fail "long run"
 "$polydem" run "$tmp/long.yaml" --out "$tmp/term" --threads 1 2> "$tmp/term.log" &
-pid=$!
-rows() { if [ -f "$tmp/term/energy.csv" ]; then wc -l < "$tmp/term/energy.csv"; else echo 0; fi; }
-until [ "$(rows)" -gt 3 ] || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
-kill -TERM "$pid" 2> /dev/null || fail "the run ended before it could be stopped"
-set +e; wait "$pid"; code=$?; set -e
-[ "$code" -eq 3 ] || { cat "$tmp/term.log"; fail "SIGTERM: exit code $code, expected 3"; }
-resume=$(grep -o -- "--resume [^ ]*" "$tmp/term.log" | cut -d' ' -f2)
-[ -f "$resume" ] || { cat "$tmp/term.log"; fail "no checkpoint after SIGTERM"; }
+sigterm_after_rows $! "$tmp/term" "$tmp/term.log"  # sets resume
 "$polydem" run "$tmp/long.yaml" --out "$tmp/term" --resume "$resume" 2> /dev/null || fail "resume after SIGTERM"
 same_outputs "$tmp/long" "$tmp/term"
 

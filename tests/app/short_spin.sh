@@ -23,11 +23,5 @@ expect_exit 1 "--until: expected a time" bare "$polydem" run "$tmp/drop.yaml" --
 sed "s/duration: \"40 ms\"/duration: \"400 ms\"/" "$tmp/drop.yaml" > "$tmp/long.yaml"
 env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT "$polydem" run "$tmp/long.yaml" --out "$tmp/term" --threads 2 \
   2> "$tmp/term.log" &  # not through `bare`: its subshell would take the signal
-pid=$!
-rows() { if [ -f "$tmp/term/energy.csv" ]; then wc -l < "$tmp/term/energy.csv"; else echo 0; fi; }
-until [ "$(rows)" -gt 3 ] || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
-kill -TERM "$pid" 2> /dev/null || fail "the run ended before it could be stopped"
-set +e; wait "$pid"; code=$?; set -e
-[ "$code" -eq 3 ] || { cat "$tmp/term.log"; fail "SIGTERM: exit code $code, expected 3"; }
-grep -q -- "--resume .*checkpoint_" "$tmp/term.log" || { cat "$tmp/term.log"; fail "no checkpoint after SIGTERM"; }
+sigterm_after_rows $! "$tmp/term" "$tmp/term.log"
 echo "short_spin: ok"
