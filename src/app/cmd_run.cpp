@@ -247,12 +247,12 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
   o.resume = a.resume;
   o.force = a.force;
   o.adapt_threads = !a.fixed_threads;
+  const int team = omp_get_max_threads();
   if (io)
     std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s%s, %d thread%s%s%s, output in %s\n",
-                 sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), omp_get_max_threads(),
-                 omp_get_max_threads() > 1 ? "s" : "",
+                 sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), team, team > 1 ? "s" : "",
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "",
-                 omp_get_max_threads() > 1 ? wait_note().c_str() : "", o.out_dir.c_str());
+                 team > 1 ? wait_note().c_str() : "", o.out_dir.c_str());
   const std::clock_t cpu_start = std::clock();
   const RunSummary s = run_simulation(sim, o);
   const double loop_cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;  // s, every thread of the process

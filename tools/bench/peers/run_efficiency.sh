@@ -2,6 +2,7 @@
 # Two builds alternated on the peers' settled sphere bed (run_peers.sh makes it once): each at 1
 # thread, 2 threads and `mpirun -np 2` (1 thread a rank), ROUNDS rounds of STEPS steps, printing
 # polydem's own loop time (s, no start-up). Efficiency = t(1 thread) / (2 t(2)).
+# A build before 27b641a spins as libgomp does by default: run both under GOMP_SPINCOUNT=1000.
 # usage: tools/bench/peers/run_efficiency.sh NEW_POLYDEM OLD_POLYDEM [ROUNDS] [STEPS]   (5, 10000)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
