@@ -407,17 +407,19 @@ bool ContactEngine::stale_after_measure(const LocalBodies& bodies, const Drivers
 
 void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double dt, bool stale) {
   if (stale) rebuild(bodies, drivers);  // poses the bodies it pairs
-  in_team(bodies.size() >= kParallelMinItems, [&] { forces(bodies, drivers, dt, !stale); });
+  in_team(bodies.size() >= kParallelMinItems, [&] { forces(bodies, drivers, dt, !stale, AfterPairs::sum_bodies); });
+  if (!bodies.ghost) sums_taken();  // every body's, in reduce_bodies
+  close_forces(bodies, drivers);
 }
 
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
-                           bool sum_bodies) {
+                           AfterPairs then) {
   if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data(), any_sphere_};
-  // The body pairs' loop ends without a barrier: the driver pairs' loop (or the barrier after
-  // it) is the one before the sums read either list.
+  // Both pair loops end without a barrier: the one after them is kept only where the region
+  // reads their results (the sums) before its end.
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_,
                      equal_spheres_ ? &*equal_spheres_ : nullptr);
@@ -460,19 +462,19 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       else if (spheres_only_)
         even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
       else
-        all_pair_forces(driver_list_, kernel);
+        all_pair_forces<true>(driver_list_, kernel);
     });
-  } else {
+  }
+  if (then != AfterPairs::region_ends) {
 #pragma omp barrier
   }
-  if (sum_bodies) reduce_bodies(bodies);
-#pragma omp single nowait
-  {
-    if (sum_bodies && !bodies.ghost) sums_taken();  // every body's, after reduce_bodies' barrier
-    add_totals();
-    flush_ended(bodies.ghost);
-    reduce_drivers(drivers);
-  }
+  if (then == AfterPairs::sum_bodies) reduce_bodies(bodies);
+}
+
+void ContactEngine::close_forces(const LocalBodies& bodies, Drivers& drivers) {
+  add_totals();
+  flush_ended(bodies.ghost);
+  reduce_drivers(drivers);
 }
 
 void ContactEngine::add_totals() {

@@ -106,12 +106,19 @@ class ContactEngine {
   void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);
   bool stale_after_measure(const LocalBodies& bodies, const Drivers& drivers);
   void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
-  // The pairs' forces added to the bodies (team stage: ends at a barrier), the drivers'
-  // reactions and the step's energy totals (by one thread, no barrier). `pose_bodies`: false
-  // right after a rebuild (it posed them); spheres are posed by measure_motion, which must
-  // come first. `sum_bodies` false: the forces are left in the lists, and the caller calls
-  // force_sums(bodies)(b) for every owned body (Simulation: in the pass of the closing kick).
-  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, bool sum_bodies = true);
+  // What follows forces() in its parallel region: it ends at a barrier only before a read of the sums.
+  enum class AfterPairs {
+    sum_bodies,   // forces() adds every body's sum to its force and torque (reduce_bodies)
+    read_sums,    // the caller calls force_sums(bodies)(b) for every owned body (a closing kick)
+    region_ends,  // nothing before the region's end (which the sums' reader follows)
+  };
+  // The pairs' forces (a team stage, on every thread of the region); then, after the region,
+  // close_forces on one thread. `pose_bodies`: false right after a rebuild (it posed them);
+  // spheres are posed by measure_motion, which must come first.
+  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, AfterPairs then);
+  // After forces()' region, on one thread: the drivers' reactions, the step's contact count and
+  // the ended contacts' energy (~23k instructions a bed step: no barrier inside the region for them).
+  void close_forces(const LocalBodies& bodies, Drivers& drivers);
   // sums(b) adds the pairs' forces and torques on owned body b to its force and torque, in the
   // fixed order of its pairs (the same bits for any thread count); `sums` holds the lists'
   // addresses, for a loop over the bodies that keeps them in registers (integrate.hpp's kick_after).

@@ -323,7 +323,8 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
 // thread takes the run of blocks nearest the pairs of its bodies in `cut` (`begin`, per body + 1:
 // its first pair), the bodies its passes move, or without a cut for this team its share of the
 // pairs; the same every step, so a pair's arrays and its body's state stay in one core's cache
-// (shared as they came, blocks moved between the cores each step). Ends at a barrier.
+// (shared as they came, blocks moved between the cores each step). Inside a team the threads
+// leave without a barrier: the caller meets where something reads the results (ContactEngine::forces).
 template <class Kernel>
 void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t* begin = nullptr, TeamCut cut = {}) {
   const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
@@ -336,7 +337,6 @@ void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t*
     auto first_block = [&](std::size_t u) { return (first_pair(u) + kPairBlock / 2) / kPairBlock; };
     for (std::size_t b = first_block(t), end = t + 1 == threads ? blocks : first_block(t + 1); b < end; ++b)
       pair_loop_detail::block_forces(list, kernel, b, scratch);
-#pragma omp barrier
   });
 }
 

@@ -291,14 +291,15 @@ template <Rotor kRotor, class Arrays>
 }  // namespace integrate_detail
 
 // kick(b, h, groups) with before(i) run on each body just before its kick (a step's closing
-// kick: the contact forces summed into force[i]): one pass and one barrier for both.
+// kick: the contact forces summed into force[i]): one pass and one barrier for both (none when
+// not `wait`: the region ends after it).
 template <class B, class Before>
-void kick_after(B& b, double h, const RotorGroups& groups, const Before& before, TeamCut cut = {}) {
+void kick_after(B& b, double h, const RotorGroups& groups, const Before& before, TeamCut cut = {}, bool wait = true) {
   auto one = [h, before](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
     before(i);
     integrate_detail::kick_body<decltype(rotor)::value>(a, i, h);
   };
-  over_rotor_groups(b, groups, one, cut);
+  over_rotor_groups(b, groups, one, cut, wait);
 }
 
 // x += v dt; free-rotor rotation of (q, L_body) over dt; angular_velocity = R (L_body / I).

@@ -158,7 +158,10 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   const LocalBodies view = store_.view();
   if (stale) engine_->rebuild(view, drivers);  // poses the bodies it pairs
   // The bodies' sums stay in the lists: the closing kick adds them (owned_sums), as one process's does.
-  in_team(view.size() >= kParallelMinItems, [&] { engine_->forces(view, drivers, dt, !stale, false); });
+  in_team(view.size() >= kParallelMinItems, [&] {
+    engine_->forces(view, drivers, dt, !stale, ContactEngine::AfterPairs::region_ends);
+  });
+  engine_->close_forces(view, drivers);
   share_results(drivers, stale);
 }
 
@@ -174,7 +177,8 @@ void RankContacts::start(const Bodies& bodies, double h, double dt, const Vec3& 
   start_pass(store_, h, dt, owned_rotors_, gravity);
 }
 
-void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_, closing_sums()); }
+// The last stage of its region (whose end is the barrier).
+void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_, closing_sums(), {}, false); }
 
 void RankContacts::close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity,
                                    const PointWatch* watch) {

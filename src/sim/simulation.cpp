@@ -200,9 +200,10 @@ void Simulation::driver_work_half() {
 
 // Two parallel regions a normal step (one more at a rebuild, one with drag or fluid forces):
 // each stage inside is a work-shared loop, so the threads wake twice, not once per stage, and
-// meet at three barriers (spheres): after the opening pass, after the pair loops, after the
-// closing pass (each body's contact force sum, then its kick). Many ranks: the contact stage
-// runs between the regions, exchanges and all, and each rank moves the bodies it owns.
+// meet at the regions' ends alone (spheres, the closing kick left open: the opening pass moves
+// and checks its thread's bodies; the pair loops' results are read after the join), else after
+// the pair loops too (a closing kick in the region reads every body's sum). Many ranks: the
+// contact stage runs between the regions, exchanges and all, and each rank moves the bodies it owns.
 void Simulation::step(bool leave_kick_open) {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
@@ -262,14 +263,16 @@ void Simulation::step(bool leave_kick_open) {
   in_team(team, [&] {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
-      engine_->forces(local, drivers, dt_, !stale, false);
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut());
+      using Then = ContactEngine::AfterPairs;
+      engine_->forces(local, drivers, dt_, !stale, leave_kick_open ? Then::region_ends : Then::read_sums);
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut(), false);
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(0.5 * dt_);
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
+  if (contacts && one_process) engine_->close_forces(all_owned(bodies), drivers);
   if (contacts && !leave_kick_open) sums_taken();
   if (rank_passes && !leave_kick_open) ranks_->publish(bodies);  // a closed step's state is read
   if (contacts) driver_work_half();
@@ -284,7 +287,7 @@ void Simulation::close_step() {
     if (ranks_)
       ranks_->kick_closing(0.5 * dt_);
     else
-      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut());
+      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut(), false);
   });
   sums_taken();
   if (ranks_) ranks_->publish(bodies);
