@@ -196,7 +196,7 @@ void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
   parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
 }
 
-void ContactEngine::pose(const LocalBodies& bodies) {
+void ContactEngine::pose(const LocalBodies& bodies, bool wait) {
   const std::size_t n = listed_.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   // The arrays' addresses, copied into each thread's loop: read through the vectors, each body
@@ -209,7 +209,9 @@ void ContactEngine::pose(const LocalBodies& bodies) {
     const PoseArrays a = arrays;
     const auto [first, last] = team_share(listed_, body_cut());  // the bodies this thread's walk reads most
     for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
+    if (wait) {
 #pragma omp barrier
+    }
   });
 }
 

@@ -96,6 +96,12 @@ class ContactEngine {
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
   // `watched`: the pass that moved the bodies ran the trigger's test (watch_motion), so only the poses.
   void measure_motion(const LocalBodies& bodies, bool watched = false);
+  // Polyhedra's poses for this step's forces, by every thread of the team after measure_motion,
+  // each its share of the cut (the bodies its opening pass moved), with no barrier: the region's
+  // end is the one forces(..., pose_bodies false) needs. A rebuild then poses its own list again.
+  void pose_before_forces(const LocalBodies& bodies) {
+    if (!spheres_only_) pose(bodies, false);
+  }
   // True, with `watch` set, where the trigger's test of every local body can run in the pass
   // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
   bool watch_motion(const LocalBodies& bodies, PointWatch& watch) {
@@ -113,8 +119,8 @@ class ContactEngine {
     region_ends,  // nothing before the region's end (which the sums' reader follows)
   };
   // The pairs' forces (a team stage, on every thread of the region); then, after the region,
-  // close_forces on one thread. `pose_bodies`: false right after a rebuild (it posed them);
-  // spheres are posed by measure_motion, which must come first.
+  // close_forces on one thread. `pose_bodies`: false right after a rebuild (it posed them) or
+  // after pose_before_forces; spheres are posed by measure_motion, which must come first.
   void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, AfterPairs then);
   // After forces()' region, on one thread: the drivers' reactions, the step's contact count and
   // the ended contacts' energy (~23k instructions a bed step: no barrier inside the region for them).
@@ -173,7 +179,7 @@ class ContactEngine {
   PairList& driver_pairs() { return driver_list_; }
 
  private:
-  void pose(const LocalBodies& bodies);
+  void pose(const LocalBodies& bodies, bool wait = true);  // `wait`: a barrier at its end
   void keep_sphere_poses(const LocalBodies& bodies, bool needed);
   // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.
   PosedBody sphere_pose(const LocalBodies& bodies, std::size_t b) const {

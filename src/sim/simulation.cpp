@@ -239,7 +239,10 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->start(bodies, 0.5 * dt_, dt_, gravity_);
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
-    if (contacts && one_process) engine_->measure_motion(all_owned(bodies), watched);
+    if (contacts && one_process) {
+      engine_->measure_motion(all_owned(bodies), watched);
+      engine_->pose_before_forces(all_owned(bodies));
+    }
   });
   if (close_last) sums_taken();
   drivers.advance(time(), dt_);
@@ -264,7 +267,7 @@ void Simulation::step(bool leave_kick_open) {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       using Then = ContactEngine::AfterPairs;
-      engine_->forces(local, drivers, dt_, !stale, leave_kick_open ? Then::region_ends : Then::read_sums);
+      engine_->forces(local, drivers, dt_, false, leave_kick_open ? Then::region_ends : Then::read_sums);
       if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut(), false);
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(0.5 * dt_);
