@@ -43,31 +43,59 @@ std::vector<int> home_chunks(const std::vector<BodyPair>& pairs, std::size_t n_b
   return home;
 }
 
-// Per block, the bodies' other work (`body_weight`), each body's in the block of its first pair
-// as i (or of the next body's), where the body cut puts it.
-std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::vector<float>& body_weight) {
-  std::vector<double> weight((pairs.size() + kPairBlock - 1) / kPairBlock, 0.0);
-  if (weight.empty()) return weight;
+// Per body, the block of its first pair as i (or of the next body's): where the body cut puts its passes.
+std::vector<std::uint32_t> body_blocks(const std::vector<BodyPair>& pairs, std::size_t n_bodies) {
+  std::vector<std::uint32_t> block(pairs.empty() ? 0 : n_bodies);
   std::size_t k = 0;
-  for (std::uint32_t b = 0; b < body_weight.size(); ++b) {
+  for (std::uint32_t b = 0; b < block.size(); ++b) {
     while (k < pairs.size() && pairs[k].i < b) ++k;
-    weight[std::min(k, pairs.size() - 1) / kPairBlock] += body_weight[b];
+    block[b] = std::uint32_t(std::min(k, pairs.size() - 1) / kPairBlock);
   }
+  return block;
+}
+
+// Per block, the bodies' other work (`body_weight`), each body's in its block (body_blocks).
+std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::vector<float>& body_weight,
+                                 const std::vector<std::uint32_t>& block) {
+  std::vector<double> weight((pairs.size() + kPairBlock - 1) / kPairBlock, 0.0);
+  for (std::uint32_t b = 0; b < std::min(body_weight.size(), block.size()); ++b) weight[block[b]] += body_weight[b];
   return weight;
+}
+
+// A cut's crossing work added where it runs: each foreign pair's (its walk's block) and each late
+// term's (its body's passes' block, in `bodies` too: not walk work).
+void add_crossing(const std::vector<BodyPair>& pairs, const std::vector<int>& home, const std::vector<std::uint32_t>& cut,
+                  const std::vector<std::uint32_t>& block, CrossWeights cross, std::vector<double>& weight,
+                  std::vector<double>& bodies) {
+  int c = 0;
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+    while (k >= cut[c + 1]) ++c;
+    const bool home_i = home[pairs[k].i] == c, home_j = home[pairs[k].j] == c;
+    if (home_i && home_j) continue;
+    weight[k / kPairBlock] += cross.foreign;
+    for (std::uint32_t b : {pairs[k].i, pairs[k].j})
+      if (home[b] != c) weight[block[b]] += cross.late, bodies[block[b]] += cross.late;
+  }
 }
 
 }  // namespace
 
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares) {
+                 const std::vector<double>& shares, CrossWeights cross) {
   const std::size_t n = pairs.size();
   split.threads = threads;
-  const std::vector<double> bodies = body_weights(pairs, body_weight);
+  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies);
+  std::vector<double> bodies = body_weights(pairs, body_weight, block);
   std::vector<double> weight = bodies;  // each pair computed by its chunk's thread
   for (std::uint32_t k = 0; k < n; ++k) weight[k / kPairBlock] += pair_weight(touching, k);
   cut_by_weight(weight, shares, threads, n, split.cut);
-  const std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
+  std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
+  if (threads > 1 && (cross.foreign > 0.0 || cross.late > 0.0)) {  // once more, with this cut's crossing work
+    add_crossing(pairs, home, split.cut, block, cross, weight, bodies);
+    cut_by_weight(weight, shares, threads, n, split.cut);
+    home = home_chunks(pairs, n_bodies, split.cut);
+  }
   split.walk_weight.assign(threads, 0.0);
   for (int t = 0; t < threads; ++t)
     for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b)

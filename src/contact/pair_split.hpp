@@ -60,16 +60,23 @@ struct PairSplit {
   std::vector<std::uint32_t> late;           // foreign ordinal << 1 | (1 when the body is j), by body
 };
 
+// The work a cut adds where it crosses pairs, in split_pairs' unit (a pair apart): a foreign pair's
+// result kept on top of its pair (the walk), and a late term added by its body's closing pass.
+struct CrossWeights {
+  double foreign = 0.0, late = 0.0;
+};
+
 // Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the work
 // each chunk does in its walk: its pairs, each weighed by its contacts at the last step
 // (`touching`, per pair, or empty: none), plus the work of the bodies it takes in the step's
 // other passes (`body_weight`, per body in pairs apart, or empty: none). Chunk t gets the
 // fraction shares[t] of the whole weight (`shares`: per thread, summing to 1, or empty: even
 // shares). Thread t takes the bodies from the body i of chunk t's first pair (body_cut): each
-// body with pairs as i is in the share of the chunk of its last one.
+// body with pairs as i is in the share of the chunk of its last one. With `cross`, the cut is made
+// again once with the first cut's foreign pairs and late terms weighed where they run.
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares = {});
+                 const std::vector<double>& shares = {}, CrossWeights cross = {});
 
 // One thread's walk times (s) since the last cut, the last kSteps kept. A cache line of its own
 // start: each thread writes its own every step.
@@ -100,6 +107,7 @@ struct alignas(64) SumsZero {
 struct DirectSums {
   std::vector<BodySum> sums;
   std::vector<float> body_weight;  // per body, its other passes' work in pairs apart (split_pairs), or empty
+  CrossWeights cross;              // the cut's crossing work (split_pairs)
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`: its late terms
   // The cut follows the threads' measured speed: a vCPU slowed by the host (or another process

@@ -86,6 +86,7 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
   std::vector<std::uint16_t> was(list.size(), 0);     // contacts at the last step
   DirectSums direct;
   direct.reset(n_bodies);
+  direct.cross = CrossWeights{0.7, 0.2};  // the engine's for spheres: the cut made twice
   int step = 0;
   struct Team {
     int threads;
@@ -279,6 +280,21 @@ TEST_CASE("ids at random in space: the cut halves the pairs, each computed by it
   // Most pairs are foreign (a body's first pair lies anywhere), each one's late side listed once.
   CHECK(split.foreign_side.size() > pairs.size() / 4);
   CHECK(split.late.size() >= split.foreign_side.size());
+}
+
+TEST_CASE("a cut's crossing work moves it: a star's foreign pairs weighed twice end chunk 0 at 5/8", "[pair_split]") {
+  // Body 0 paired with every other: the even cut homes body 0 in chunk 0, so every pair of chunk 1
+  // is foreign. Each weighed 1 + 1 (a late term 0): the first cut's chunk 0 weighs n/2, its chunk 1
+  // n, and the second cut halves 3n/2 where n/2 + 2 (k - n/2) = 3n/4: k = 5n/8.
+  const std::uint32_t n_pairs = 64 * kPairBlock, n_bodies = n_pairs + 1;
+  std::vector<BodyPair> pairs;
+  for (std::uint32_t j = 1; j < n_bodies; ++j) pairs.push_back({0, j});
+  PairSplit even, crossed;
+  split_pairs(pairs, {}, {}, n_bodies, 2, even);
+  split_pairs(pairs, {}, {}, n_bodies, 2, crossed, {}, CrossWeights{1.0, 0.0});
+  CHECK(even.cut[1] == n_pairs / 2);
+  CHECK(std::abs(double(crossed.cut[1]) - 0.625 * n_pairs) <= double(kPairBlock));
+  CHECK(crossed.foreign_side.size() == n_pairs - crossed.cut[1]);  // chunk 1's pairs, of the second cut
 }
 
 TEST_CASE("a team's shares of the bodies take each body once, by the cut made for its size", "[pair_split]") {
