@@ -494,13 +494,14 @@ void ContactEngine::add_totals() {
 // a flush splits no pair's step-ordered sum but where every run splits it (at its contact's
 // end, at the ledger's closes).
 static void add_pending(const PairList& list, const std::vector<std::uint8_t>* ghost, ExactEnergy& sum) {
-  for (std::size_t k = 0; k < list.pending.size(); ++k)
-    if (!ghost || !(*ghost)[list.pairs[k].i]) sum.add(list.pending[k]);
+  for (std::size_t k = 0; k < list.size(); ++k)
+    if (!ghost || !(*ghost)[list.pairs[k].i]) sum.add(list.open_energy_or_zero(k));
 }
 
 void ContactEngine::flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost) {
-  if (!ghost || !(*ghost)[list.pairs[k].i]) flushed_.add(list.pending[k]);
-  list.pending[k] = EnergyParts{};
+  if (!list.sparse && !list.has_slots(k)) return;  // no slot: no energy (its first slot is the next pair's)
+  if (!ghost || !(*ghost)[list.pairs[k].i]) flushed_.add(list.open_energy(k));
+  list.open_energy(k) = EnergyParts{};
 }
 
 void ContactEngine::flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs,
@@ -519,7 +520,7 @@ void ContactEngine::flush_ended(const std::vector<std::uint8_t>* ghost) {
 }
 
 void ContactEngine::flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost) {
-  for (std::size_t k = 0; k < list.pending.size(); ++k) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
     bool active = false;
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) active |= list.active[s] != 0;
     if (!active) flush_pair(list, k, ghost);
@@ -530,6 +531,7 @@ void ContactEngine::flush_energy(const std::vector<std::uint8_t>* ghost) {
   for (PairList* list : {&body_list_, &driver_list_}) {
     add_pending(*list, ghost, flushed_);
     std::fill(list->pending.begin(), list->pending.end(), EnergyParts{});
+    for (ContactSlot& slot : list->slots) slot.pending = EnergyParts{};
   }
 }
 

@@ -24,7 +24,6 @@ PairList active_part(const PairList& list) {
     n_pairs += n_slots > before;
   }
   kept.pairs.reserve(n_pairs);
-  kept.pending.reserve(n_pairs);
   kept.slot_begin.reserve(n_pairs + 1);
   kept.features.reserve(n_slots);
   kept.slots.reserve(n_slots);
@@ -35,12 +34,12 @@ PairList active_part(const PairList& list) {
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
       if (!list.active[s]) continue;
       kept.features.push_back(list.features[s]);
-      kept.slots.push_back(ContactSlot{list.history(s)});
+      kept.slots.push_back(ContactSlot{list.history(s), {}});
       if (list.recording) kept.records.push_back(list.record(s));
     }
     if (kept.slots.size() == before) continue;
     kept.pairs.push_back(list.pairs[k]);
-    kept.pending.push_back(list.pending.empty() ? EnergyParts{} : list.pending[k]);
+    kept.slots[before].pending = list.open_energy_or_zero(k);  // dense: on the pair's first slot
     kept.slot_begin.push_back(std::uint32_t(kept.slots.size()));
   }
   kept.active.assign(kept.slots.size(), 1);
@@ -50,7 +49,7 @@ PairList active_part(const PairList& list) {
 
 std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fresh) {
   std::vector<std::uint32_t> uncarried;
-  const bool has_pending = !old_list.pending.empty();
+  const bool has_pending = !old_list.sparse || !old_list.pending.empty();
   std::size_t k_new = 0;
   for (std::size_t k_old = 0; k_old < old_list.size(); ++k_old) {
     const BodyPair& p = old_list.pairs[k_old];
@@ -73,7 +72,7 @@ std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fre
       }
     }
     if (!has_pending) continue;
-    if (fresh.touching[k_new]) fresh.pending[k_new] = old_list.pending[k_old];
+    if (fresh.touching[k_new]) fresh.open_energy(k_new) = old_list.open_energy(k_old);
     else uncarried.push_back(std::uint32_t(k_old));
   }
   return uncarried;

@@ -19,11 +19,14 @@ namespace polydem {
 
 // A dense list's state of one slot (the sphere fast path's one slot a pair), touched only
 // where a contact is (or was) active; the slot's key lives apart in PairList::features, the
-// array every step scans. Its last gap is history.gap.
+// array every step scans. Its last gap is history.gap. A pair's first slot holds the pair's
+// pending energy (PairList::open_energy; zero on the others): read with the history where the
+// pair touches, not streamed for the pairs that do not (32 bytes a listed pair, issue 19).
 struct ContactSlot {
   ContactHistory history;     // N, N m: springs carried while the key lives
+  EnergyParts pending;        // J, on a pair's first slot: its energies since the ledger closed
 };
-static_assert(sizeof(ContactSlot) == 80, "ContactSlot: the history alone");
+static_assert(sizeof(ContactSlot) == 112, "ContactSlot: the history and a pair's pending energy");
 
 // Packs a contact key of one pair into an integer that orders slots deterministically.
 inline std::uint64_t feature_key(FeaturePair f) {
@@ -57,9 +60,7 @@ struct PairList {
   std::vector<Vec3> force_i, torque_i, torque_j;
   std::vector<std::uint16_t> touching;     // active sub-contacts of the pair at the last step
   std::vector<std::uint32_t> block_contacts;  // per block, its active sub-contacts this step
-  // J, per pair: its energies summed in step order since the ledger last closed or its contact
-  // began (ContactEngine::flush_ended): the same bits whatever thread or rank steps the pair
-  // and whenever the lists rebuild (carried with the history; zero while not touching).
+  // J, per pair of a sparse list (a dense list's are in its slots): see open_energy.
   std::vector<EnergyParts> pending;
   std::vector<std::uint8_t> block_ended;   // per block: a pair's contact ended this step (its pending is due)
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
@@ -76,6 +77,18 @@ struct PairList {
   // Slot s's history and record, made on first use in a sparse list (the const ones: an active slot's).
   ContactHistory& history(std::uint32_t s) { return sparse ? touch(s).history : slots[s].history; }
   const ContactHistory& history(std::uint32_t s) const { return sparse ? states[state_of[s]].history : slots[s].history; }
+  // J, pair k's energies summed in step order since the ledger last closed or its contact began
+  // (ContactEngine::flush_ended): the same bits whatever thread or rank steps the pair and
+  // whenever the lists rebuild (carried with the history; zero while not touching). A dense
+  // list keeps it on the pair's first slot; a pair with no slot has none (has_slots).
+  bool has_slots(std::size_t k) const { return slot_begin[k] != slot_begin[k + 1]; }
+  EnergyParts& open_energy(std::size_t k) { return sparse ? pending[k] : slots[slot_begin[k]].pending; }
+  const EnergyParts& open_energy(std::size_t k) const { return sparse ? pending[k] : slots[slot_begin[k]].pending; }
+  // Pair k's pending energy, or none (+0) for a pair without a slot.
+  EnergyParts open_energy_or_zero(std::size_t k) const {
+    if (sparse) return k < pending.size() ? pending[k] : EnergyParts{};
+    return has_slots(k) ? slots[slot_begin[k]].pending : EnergyParts{};
+  }
   SlotRecord& record(std::uint32_t s) { return sparse ? touch(s).record : records.at(s); }
   const SlotRecord& record(std::uint32_t s) const { return sparse ? states[state_of[s]].record : records.at(s); }
   void set_recording(bool on) {
@@ -91,7 +104,7 @@ struct PairList {
     touching.assign(pairs.size(), 0);
     linear_steps.assign(pair_steps ? pairs.size() : 0, LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
-    pending.assign(pairs.size(), EnergyParts{});
+    pending.assign(sparse ? pairs.size() : 0, EnergyParts{});
     block_contacts.assign((pairs.size() + kPairBlock - 1) / kPairBlock, 0);
     block_ended.assign(block_contacts.size(), 0);
   }

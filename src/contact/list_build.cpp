@@ -112,7 +112,7 @@ void size_slots(PairList& list) {
   }
   list.active.assign(n_slots, 0);
   list.touching.assign(list.size(), 0);
-  list.pending.assign(list.size(), EnergyParts{});
+  list.pending.assign(list.sparse ? list.size() : 0, EnergyParts{});  // dense: in the slots
 }
 
 void size_results(PairList& list, bool pair_steps) {

@@ -41,13 +41,13 @@ void write_active(Writer& w, const PairList& list) {
       if (list.active[s]) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
-        const ContactSlot slot{list.history(s)};
+        const ContactSlot slot{list.history(s), {}};
         slot_fields(w, list.features[s], slot, list.record(s));  // a dense list must record
       }
   for (std::size_t k = 0; k < list.size(); ++k)  // the pairs above, in order: their pending energies
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s]) {
-        w.pod(list.pending[k]);
+        w.pod(list.open_energy(k));
         break;
       }
 }
@@ -84,7 +84,8 @@ void read_active(Reader& r, PairList& list, std::size_t bodies, std::size_t part
   }
   list.resize_results();
   if (!pending) return;
-  for (EnergyParts& e : list.pending) {
+  for (std::size_t k = 0; k < list.size(); ++k) {  // each pair has a slot: its first holds the energy
+    EnergyParts& e = list.open_energy(k);
     r.pod(e);
     check_open_energy(r, e);
   }

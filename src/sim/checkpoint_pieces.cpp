@@ -53,7 +53,7 @@ void write_slots(Writer& w, const std::vector<TableSlot>& slots) {
     slot_fields(w, t.key, t.slot, t.record);
   }
   for (std::size_t s = 0; s < slots.size(); ++s)  // each pair's first slot: its pending energy
-    if (s == 0 || slots[s].i != slots[s - 1].i || slots[s].j != slots[s - 1].j) w.pod(slots[s].pending);
+    if (s == 0 || slots[s].i != slots[s - 1].i || slots[s].j != slots[s - 1].j) w.pod(slots[s].slot.pending);
 }
 
 // This rank's bodies (ids, then the state arrays of format 06 for them) and contacts.
@@ -128,8 +128,8 @@ void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std:
   if (!pending) return;
   for (std::size_t s = first; s < out.size(); ++s)
     if (s == first || out[s].i != out[s - 1].i || out[s].j != out[s - 1].j) {
-      r.pod(out[s].pending);
-      check_open_energy(r, out[s].pending);
+      r.pod(out[s].slot.pending);
+      check_open_energy(r, out[s].slot.pending);
     }
 }
 

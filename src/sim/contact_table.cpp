@@ -14,8 +14,8 @@ std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& stor
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
         out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s],
-                       {list.history(s)}, list.recording ? list.record(s) : SlotRecord{}, EnergyParts{}});
-    if (out.size() > first) out[first].pending = list.pending[k];
+                       {list.history(s), {}}, list.recording ? list.record(s) : SlotRecord{}});
+    if (out.size() > first) out[first].slot.pending = list.open_energy(k);
   }
   return out;
 }
@@ -26,13 +26,11 @@ PairList table_of(std::vector<TableSlot> slots) {
     return a.i != b.i ? a.i < b.i : a.j < b.j;
   });
   PairList table;
-  std::vector<EnergyParts> pending;
   table.slot_begin.push_back(0);
   for (const TableSlot& t : slots) {
     if (table.pairs.empty() || table.pairs.back().i != t.i || table.pairs.back().j != t.j) {
       table.pairs.push_back({t.i, t.j});
       table.slot_begin.push_back(table.slot_begin.back());
-      pending.push_back(t.pending);
     }
     table.features.push_back(t.key);
     table.slots.push_back(t.slot);
@@ -41,7 +39,6 @@ PairList table_of(std::vector<TableSlot> slots) {
     ++table.slot_begin.back();
   }
   table.resize_results();
-  table.pending = std::move(pending);
   for (std::size_t k = 0; k < table.size(); ++k)
     table.touching[k] = std::uint16_t(table.slot_begin[k + 1] - table.slot_begin[k]);
   return table;
@@ -55,7 +52,6 @@ PairList localise(const PairList& table, const std::vector<std::int32_t>& local_
     const std::int32_t i = local_of[p.i], j = driver ? std::int32_t(p.j) : local_of[p.j];
     if (i < 0 || j < 0) continue;
     mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order
-    mine.pending.push_back(table.pending[k]);
     for (std::uint32_t s = table.slot_begin[k]; s < table.slot_begin[k + 1]; ++s) {
       mine.features.push_back(table.features[s]);
       mine.slots.push_back(table.slots[s]);
@@ -64,9 +60,7 @@ PairList localise(const PairList& table, const std::vector<std::int32_t>& local_
     }
     mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
   }
-  std::vector<EnergyParts> pending = std::move(mine.pending);
   mine.resize_results();
-  mine.pending = std::move(pending);
   return mine;
 }
 

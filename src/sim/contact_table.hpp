@@ -12,15 +12,14 @@
 
 namespace polydem {
 
-// One active slot with its pair in global ids (j: a body, or a driver index), and on a pair's
-// first slot the pair's pending energy (J, PairList::pending; zero on the others): it moves
-// with the history.
+// One active slot with its pair in global ids (j: a body, or a driver index); on a pair's
+// first slot, slot.pending holds the pair's pending energy (J, PairList::open_energy; zero on
+// the others): it moves with the history.
 struct TableSlot {
   std::uint32_t i, j;
   FeaturePair key;
   ContactSlot slot;
   SlotRecord record;
-  EnergyParts pending;
 };
 
 // The active slots of `list` (local indices of `store`) this rank answers for.

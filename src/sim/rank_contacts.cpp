@@ -314,8 +314,8 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
     const std::size_t first = slots.size();
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
       if (list.active[s])
-        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], {list.history(s)}, list.record(s), {}});
-    if (slots.size() > first) slots[first].pending = list.pending[k];
+        slots.push_back({list.pairs[k].i, list.pairs[k].j, list.features[s], {list.history(s), {}}, list.record(s)});
+    if (slots.size() > first) slots[first].slot.pending = list.open_energy(k);
   }
   return slots;
 }

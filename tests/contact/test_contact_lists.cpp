@@ -120,13 +120,13 @@ TEST_CASE("carry_history from the active part gives the new list the whole old l
 // (the engine adds those to the exact sum at once).
 TEST_CASE("carry_history moves a touching pair's pending energy with its history") {
   PairList old = make_list({{0, 1}, {0, 2}, {1, 2}}, {{{1, true}}, {{2, true}}, {{3, true}, {5, true}}});
-  for (std::size_t k = 0; k < old.size(); ++k) old.pending[k] = EnergyParts{0.1 * double(k + 1), 0.01, 0.0, 0.0};  // J
+  for (std::size_t k = 0; k < old.size(); ++k) old.open_energy(k) = EnergyParts{0.1 * double(k + 1), 0.01, 0.0, 0.0};  // J
   // The new list: (0, 2) left range, (1, 2) kept key 5 only, (0, 1) lost its key.
   PairList fresh = make_list({{0, 1}, {1, 2}, {1, 3}}, {{{4, false}}, {{5, false}}, {{2, false}}});
   const std::vector<std::uint32_t> left = carry_history(active_part(old), fresh);
   CHECK(left == std::vector<std::uint32_t>{0, 1});  // (0, 1) touches no more, (0, 2) is gone
-  CHECK(fresh.pending[0].net == 0.0);
-  CHECK(fresh.pending[1].net == old.pending[2].net);
-  CHECK(fresh.pending[1].sliding == old.pending[2].sliding);
-  CHECK(fresh.pending[2].net == 0.0);
+  CHECK(fresh.open_energy(0).net == 0.0);
+  CHECK(fresh.open_energy(1).net == old.open_energy(2).net);
+  CHECK(fresh.open_energy(1).sliding == old.open_energy(2).sliding);
+  CHECK(fresh.open_energy(2).net == 0.0);
 }

@@ -33,7 +33,7 @@ std::size_t mismatches(const Bodies& a, const Bodies& b, const ContactEngine& ea
     bad += !(la.active[s] == lb.active[s] && same_bits(ha.ft, hb.ft) && same_bits(ha.mr, hb.mr) &&
              same_bits(ha.fd, hb.fd) && same_bits(ha.gap, hb.gap));
   }
-  for (std::size_t k = 0; k < la.pending.size(); ++k) bad += !same_bits(la.pending[k], lb.pending[k]);  // J, each pair's
+  for (std::size_t k = 0; k < la.size(); ++k) bad += !same_bits(la.open_energy_or_zero(k), lb.open_energy_or_zero(k));  // J, each pair's
   return bad;
 }
 

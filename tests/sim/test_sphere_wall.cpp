@@ -37,10 +37,11 @@ std::size_t wall_pair_mismatches(const PairList& a, const PairList& b) {
     bad += !(a.active[s] == b.active[s] &&
              (!a.active[s] || (same_history(a.history(s), b.history(s)) &&
                                same_bits(a.record(s).point, b.record(s).point) && same_bits(a.record(s).fn, b.record(s).fn))));
-  for (std::size_t k = 0; k < a.size(); ++k)
-    bad += !(same_bits(a.pending[k].net, b.pending[k].net) && same_bits(a.pending[k].sliding, b.pending[k].sliding) &&
-             same_bits(a.pending[k].rolling, b.pending[k].rolling) &&
-             same_bits(a.pending[k].patch, b.pending[k].patch));
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const EnergyParts ea = a.open_energy_or_zero(k), eb = b.open_energy_or_zero(k);  // J
+    bad += !(same_bits(ea.net, eb.net) && same_bits(ea.sliding, eb.sliding) && same_bits(ea.rolling, eb.rolling) &&
+             same_bits(ea.patch, eb.patch));
+  }
   return bad;
 }
 

@@ -8,7 +8,8 @@
 # The estimate is cachegrind's: cycles = Ir + 10 (L1 misses) + 100 (LL misses).
 # SHAPE=cube: scene.py's lattice of rounded cubes, face to face (rows in results_sim_cube.csv);
 # ORDERS: the orders to count (default "lattice shuffled"). REST=1 (scene.py; cubes' default):
-# the lattice at rest from the first step; its rows' order reads "lattice-rest".
+# the lattice at rest from the first step; its rows' order reads "lattice-rest". LL: the last
+# level's bytes (default 33554432; 2097152: a core's L2 here), named in the order when not 32 MB.
 # Prints and appends to tools/bench/scale/results_sim.csv:
 # "commit,bodies,order,steps,ir,l1_miss,ll_miss,cycles_est,ratio" (per particle-step; ratio:
 # the estimate against the same order's first size).
@@ -26,10 +27,11 @@ export SHAPE=${SHAPE:-sphere} REST=${REST:-$([ "${SHAPE:-}" = cube ] && echo 1 |
 csv=tools/bench/scale/results_sim$([ "$SHAPE" = sphere ] || echo "_$SHAPE").csv
 [ -s "$csv" ] || echo "commit,bodies,order,steps,ir,l1_miss,ll_miss,cycles_est,ratio" > "$csv"
 commit=${COMMIT:-$(git rev-parse --short HEAD)}
+last_level=${LL:-33554432}  # bytes of the simulated last level
 
 counts() {  # scene steps -> "Ir L1misses LLmisses" of the steps
   rm -rf "$work/out"
-  valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --I1=32768,8,64 --LL=33554432,16,64 \
+  valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --I1=32768,8,64 --LL="$last_level",16,64 \
       --collect-atstart=no --toggle-collect='polydem::Simulation::step()' --toggle-collect='polydem::Simulation::step(bool)' \
       --callgrind-out-file="$work/cg.out" "$bin" run "$1" --out "$work/out" --threads 1 \
       --fixed-threads --until "$(python3 -c "print($2 * 5e-6)")" > /dev/null 2> "$work/log" \
@@ -57,6 +59,6 @@ EOF
 )
     [ -n "$first" ] || first=$(echo "$row" | cut -d, -f6)
     IFS=, read -r bodies st ir l1 ll cyc ratio <<< "$row"
-    echo "$commit,$bodies,$order$([ "$REST" = 1 ] && echo -rest),$st,$ir,$l1,$ll,$cyc,$ratio" | tee -a "$csv"
+    echo "$commit,$bodies,$order$([ "$REST" = 1 ] && echo -rest)$([ "$last_level" = 33554432 ] || echo "-ll$last_level"),$st,$ir,$l1,$ll,$cyc,$ratio" | tee -a "$csv"
   done
 done
