@@ -169,16 +169,13 @@ void RankContacts::add_sums() {
   sums_taken();
 }
 
-void RankContacts::start(const Bodies& bodies, double h, double dt, const Vec3& gravity) {
-  if (std::exchange(pull_, false)) store_.pull(bodies);
+void RankContacts::start(double h, double dt, const Vec3& gravity) {
   start_pass(store_, h, dt, owned_rotors_, gravity);
 }
 
 void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_, closing_sums()); }
 
-void RankContacts::close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity,
-                                   const PointWatch* watch) {
-  if (std::exchange(pull_, false)) store_.pull(bodies);
+void RankContacts::close_and_start(double h, double dt, const Vec3& gravity, const PointWatch* watch) {
   if (watch)
     close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums(), {}, *watch);
   else if (gravity_only_)
@@ -323,13 +320,11 @@ ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
   return mine;
 }
 
-long RankContacts::first_non_finite(const Bodies& bodies) const {
-  return least_over_ranks(link_, first_non_finite_owned(bodies));
-}
+long RankContacts::first_non_finite() const { return least_over_ranks(link_, first_non_finite_owned()); }
 
-long RankContacts::first_non_finite_owned(const Bodies& bodies) const {
-  for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
-    if (!bodies.finite(b)) return long(b);
+long RankContacts::first_non_finite_owned() const {
+  for (std::size_t k = 0; k < store_.ghost.size(); ++k)  // increasing ids: the first is the smallest
+    if (!store_.ghost[k] && !finite_state(store_, k)) return long(store_.global_id[k]);
   return -1;
 }
 
@@ -356,7 +351,9 @@ EnergyParts RankContacts::take_energy() {
 
 StateEnergy RankContacts::state_energy(const Bodies& bodies, const Drivers& drivers) {
   StateEnergy mine;
-  for (std::uint32_t b : output_bodies()) mine.add_body(bodies, b);  // before a cut: rank 0 every body
+  with_output_rows(bodies, [&](const auto& arrays, const std::vector<std::uint32_t>& rows) {
+    for (std::uint32_t k : rows) mine.add_body(arrays, k);  // before a cut: rank 0 every body
+  });
   mine.open = taken_;  // J
   if (engine_) {
     mine.elastic = engine_->elastic(drivers, &store_.ghost);
