@@ -183,7 +183,6 @@ class RankContacts {
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::vector<std::uint32_t>> send_local_, receive_local_;  // per parcel of out_, in_: its bodies' local indices
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
-  std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
   bool gravity_only_ = false;  // only_gravity
   Vec3 gravity_ = Vec3::Zero();  // m/s^2
