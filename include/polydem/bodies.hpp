@@ -62,12 +62,14 @@ struct Bodies {
     for (std::size_t b = 0; b < id.size(); ++b) at[id[b]] = std::uint32_t(b);
     return at;
   }
-
-  // The state integration moves (pose, velocity, angular momentum) of body b is finite.
-  bool finite(std::size_t b) const {
-    return position[b].allFinite() && velocity[b].allFinite() && angular_momentum[b].allFinite() &&
-           orientation[b].coeffs().allFinite();
-  }
 };
+
+// The state integration moves (pose, velocity, angular momentum) of body b of `a` (Bodies, or a
+// rank's LocalStore) is finite.
+template <class Arrays>
+bool finite_state(const Arrays& a, std::size_t b) {
+  return a.position[b].allFinite() && a.velocity[b].allFinite() && a.angular_momentum[b].allFinite() &&
+         a.orientation[b].coeffs().allFinite();
+}
 
 }  // namespace polydem

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "polydem/error.hpp"
+#include "sim/body_rows.hpp"
 #include "sim/checkpoint_io.hpp"
 #include "sim/contact_table.hpp"
 
@@ -37,14 +38,6 @@ std::string folder_of(const std::string& path) {
   return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
-template <class T>
-std::vector<T> subset(const std::vector<T>& all, const std::vector<std::uint32_t>& ids) {
-  std::vector<T> part;
-  part.reserve(ids.size());
-  for (std::uint32_t b : ids) part.push_back(all[b]);
-  return part;
-}
-
 void write_slots(Writer& w, const std::vector<TableSlot>& slots) {
   w.pod<std::uint64_t>(slots.size());
   for (const TableSlot& t : slots) {
@@ -62,13 +55,14 @@ FileSeal write_piece(const std::string& path, const Simulation& sim, std::size_t
   const std::vector<std::uint32_t> ids = ranks.output_bodies();
   const std::vector<TableSlot> body = ranks.output_slots(sim.engine(), false);
   const std::vector<TableSlot> driver = ranks.output_slots(sim.engine(), true);
-  const Bodies& b = sim.bodies;
   const PieceHeader header{scene_fingerprint(sim), std::uint64_t(sim.step_index()), piece, pieces, ids.size(), 0};
   return write_sealed(path, kPieceMagic, header, [&](Writer& w) {
     w.array(ids);
-    w.array(subset(b.position, ids)); w.array(subset(b.orientation, ids)); w.array(subset(b.velocity, ids));
-    w.array(subset(b.angular_velocity, ids)); w.array(subset(b.angular_momentum, ids));
-    w.array(subset(b.force, ids)); w.array(subset(b.torque, ids));
+    ranks.with_output_rows(sim.bodies, [&](const auto& b, const std::vector<std::uint32_t>& rows) {
+      w.array(subset(b.position, rows)); w.array(subset(b.orientation, rows)); w.array(subset(b.velocity, rows));
+      w.array(subset(b.angular_velocity, rows)); w.array(subset(b.angular_momentum, rows));
+      w.array(subset(b.force, rows)); w.array(subset(b.torque, rows));
+    });
     write_slots(w, body);
     write_slots(w, driver);
     write_flushed(w, ranks.output_flushed(sim.engine()));

@@ -44,12 +44,22 @@ PairList table_of(std::vector<TableSlot> slots) {
   return table;
 }
 
-PairList localise(const PairList& table, const std::vector<std::int32_t>& local_of, bool driver) {
+namespace {
+
+// The index of `g` in `held` (increasing), or -1 when not held.
+std::int64_t index_in(const std::vector<std::uint32_t>& held, std::uint32_t g) {
+  const auto at = std::lower_bound(held.begin(), held.end(), g);
+  return at != held.end() && *at == g ? std::int64_t(at - held.begin()) : -1;
+}
+
+}  // namespace
+
+PairList localise(const PairList& table, const std::vector<std::uint32_t>& held, bool driver) {
   PairList mine;
   mine.slot_begin.push_back(0);
   for (std::size_t k = 0; k < table.size(); ++k) {
     const BodyPair p = table.pairs[k];
-    const std::int32_t i = local_of[p.i], j = driver ? std::int32_t(p.j) : local_of[p.j];
+    const std::int64_t i = index_in(held, p.i), j = driver ? std::int64_t(p.j) : index_in(held, p.j);
     if (i < 0 || j < 0) continue;
     mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order
     for (std::uint32_t s = table.slot_begin[k]; s < table.slot_begin[k + 1]; ++s) {

@@ -28,8 +28,8 @@ std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& stor
 // The table of all ranks' slots: pairs in increasing (i, j), each pair's slots from one rank in key order.
 PairList table_of(std::vector<TableSlot> slots);
 
-// The table's pairs between local bodies (`local_of`: global id -> local index, -1 when not
-// local), in local indices: the histories a rebuild on this rank hands over.
-PairList localise(const PairList& table, const std::vector<std::int32_t>& local_of, bool driver);
+// The table's pairs between local bodies (`held`: their global ids, increasing; a body's local
+// index is its place there), in local indices: the histories a rebuild on this rank hands over.
+PairList localise(const PairList& table, const std::vector<std::uint32_t>& held, bool driver);
 
 }  // namespace polydem

@@ -14,24 +14,6 @@ void put(double* out, const double* in, int n) { std::copy(in, in + n, out); }
 
 }  // namespace
 
-void LastGood::keep(const Bodies& b, const std::vector<std::uint32_t>& own) {
-  ids = own;
-  const std::size_t n = own.size();
-  position.resize(n);
-  velocity.resize(n);
-  angular_velocity.resize(n);
-  orientation.resize(n);
-  bool turned = false;
-  for (std::size_t k = 0; k < n; ++k) {
-    position[k] = b.position[own[k]];
-    velocity[k] = b.velocity[own[k]];
-    angular_velocity[k] = b.angular_velocity[own[k]];
-    orientation[k] = b.orientation[own[k]];
-    turned |= !is_identity(orientation[k]);
-  }
-  if (!turned) release(orientation);
-}
-
 LastGood LastGood::gathered(const RankLink& link) const {
   std::vector<char> bytes;
   for (std::size_t k = 0; k < ids.size(); ++k) {

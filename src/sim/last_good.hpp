@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "polydem/bodies.hpp"
@@ -29,8 +30,25 @@ struct LastGood {
     if (std::all_of(b.orientation.begin(), b.orientation.end(), is_identity)) release(orientation);
     else orientation = b.orientation;
   }
-  // The bodies `own` only (a rank's).
-  void keep(const Bodies& b, const std::vector<std::uint32_t>& own);
+  // The bodies `ids` only (a rank's), at `rows` of `a` (Bodies, or the rank's LocalStore).
+  template <class Arrays>
+  void keep(const Arrays& a, const std::vector<std::uint32_t>& rows, std::vector<std::uint32_t> own) {
+    ids = std::move(own);
+    const std::size_t n = rows.size();
+    position.resize(n);
+    velocity.resize(n);
+    angular_velocity.resize(n);
+    orientation.resize(n);
+    bool turned = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      position[k] = a.position[rows[k]];
+      velocity[k] = a.velocity[rows[k]];
+      angular_velocity[k] = a.angular_velocity[rows[k]];
+      orientation[k] = a.orientation[rows[k]];
+      turned |= !is_identity(orientation[k]);
+    }
+    if (!turned) release(orientation);
+  }
   // Every rank's kept bodies on rank 0, as one process keeps them (a collective; empty on the others).
   LastGood gathered(const RankLink& link) const;
   // The bodies as they were: the constant fields from `now`, the moving ones kept (every body's).

@@ -1,5 +1,7 @@
 #include "sim/local_store.hpp"
 
+#include <algorithm>
+
 namespace polydem {
 
 namespace {
@@ -35,6 +37,8 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
   scale.resize(n);
   mass.resize(n);
   inertia.resize(n);
+  group.resize(n);
+  id.resize(n);
   for (auto* v : {&position, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end, &angular_momentum,
                   &force, &torque})
     v->resize(n);
@@ -45,6 +49,8 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
     scale[k] = all.scale[g];
     mass[k] = all.mass[g];
     inertia[k] = all.inertia[g];
+    group[k] = all.group[g];
+    id[k] = all.id[g];
     copy_motion(*this, k, all, g);
   }
 }
@@ -58,6 +64,17 @@ void LocalStore::publish(Bodies& all, bool with_ghosts) const {
 void LocalStore::pull(const Bodies& all) {
   for (std::size_t k = 0; k < global_id.size(); ++k)
     if (!ghost[k]) copy_motion(*this, k, all, global_id[k]);
+}
+
+std::uint32_t LocalStore::local_of(std::uint32_t g) const {
+  return std::uint32_t(std::lower_bound(global_id.begin(), global_id.end(), g) - global_id.begin());
+}
+
+std::vector<std::uint32_t> LocalStore::owned_rows() const {
+  std::vector<std::uint32_t> rows;
+  for (std::size_t k = 0; k < ghost.size(); ++k)
+    if (!ghost[k]) rows.push_back(std::uint32_t(k));
+  return rows;
 }
 
 }  // namespace polydem

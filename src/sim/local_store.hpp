@@ -3,9 +3,11 @@
 // increasing global id (contact/local_bodies.hpp: why the order gives the bits of one process).
 // A rank's one copy of its bodies' state between gathers: its passes integrate the owned bodies
 // here (arrays_of), by local index, and its contact stage reads them here; a ghost carries only
-// what contacts read (pose, velocities, shape, scale, mass, global id), written where its
-// owner's parcel lands (sim/ghost_plan.hpp). The set changes only at list rebuilds. The global
-// Bodies arrays get the owned bodies' state only where a gather or a writer reads it (publish).
+// what contacts read (pose, velocities, shape, scale, mass, global id) and output (group, user
+// id), written where its owner's parcel lands (sim/ghost_plan.hpp). The set changes only at
+// list rebuilds. Its fields are named as Bodies', so a rank's writers, energies and checks read
+// it through the same templates (body_rows.hpp). The global Bodies arrays get the owned bodies'
+// state only where a gather reads it (publish).
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +27,8 @@ struct LocalStore {
   std::vector<int> shape;
   std::vector<double> scale, mass;  // -, kg
   std::vector<Vec3> inertia;        // kg m^2, principal moments
+  std::vector<int> group;           // as Bodies' (output)
+  std::vector<std::uint32_t> id;    // the user id (Bodies::id: files and messages name it)
   // N, N m: the owned bodies' forces as integration keeps them (m gravity, drag, then the
   // closing kick's contact sums added); a ghost's unused.
   std::vector<Vec3> force, torque;
@@ -38,6 +42,10 @@ struct LocalStore {
   // after something wrote them).
   void publish(Bodies& all, bool with_ghosts = false) const;
   void pull(const Bodies& all);
+  // The local index of the body of global id `g`, which the store holds.
+  std::uint32_t local_of(std::uint32_t g) const;
+  // The owned bodies' local indices (increasing global id).
+  std::vector<std::uint32_t> owned_rows() const;
   LocalBodies view() {
     return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
             &shape,    &scale,       &mass,     &ghost,            &force,        &torque};

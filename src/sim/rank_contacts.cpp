@@ -102,18 +102,15 @@ void RankContacts::migrate_bodies(Bodies& bodies) {
 // Lists this rank's bodies (plan_) and hands their histories over from `body_table` and
 // `driver_table` (global ids; pairs of other bodies are left out).
 void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table) {
-  local_of_.assign(bodies.size(), -1);
   ghost_local_.clear();
-  for (std::size_t k = 0; k < plan_.local.size(); ++k) {
-    local_of_[plan_.local[k]] = std::int32_t(k);
+  for (std::size_t k = 0; k < plan_.local.size(); ++k)
     if (plan_.ghost[k]) ghost_local_.push_back(std::uint32_t(k));
-  }
   store_.select(bodies, plan_.local, plan_.ghost);
   owned_rotors_ = local_rotors(group_rotors(bodies, plan_.owned, shapes_));
   size_parcels();
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
-  engine_->body_pairs() = localise(body_table, local_of_, false);
-  engine_->driver_pairs() = localise(driver_table, local_of_, true);
+  engine_->body_pairs() = localise(body_table, store_.global_id, false);
+  engine_->driver_pairs() = localise(driver_table, store_.global_id, true);
 }
 
 void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
@@ -172,17 +169,14 @@ void RankContacts::add_sums() {
   sums_taken();
 }
 
-void RankContacts::start(const Bodies& bodies, double h, double dt, const Vec3& gravity) {
-  if (std::exchange(pull_, false)) store_.pull(bodies);
+void RankContacts::start(double h, double dt, const Vec3& gravity) {
   start_pass(store_, h, dt, owned_rotors_, gravity);
 }
 
 // The last stage of its region (whose end is the barrier).
 void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_, closing_sums(), {}, false); }
 
-void RankContacts::close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity,
-                                   const PointWatch* watch) {
-  if (std::exchange(pull_, false)) store_.pull(bodies);
+void RankContacts::close_and_start(double h, double dt, const Vec3& gravity, const PointWatch* watch) {
   if (watch)
     close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums(), {}, *watch);
   else if (gravity_only_)
@@ -208,7 +202,7 @@ ForceSums RankContacts::closing_sums() {
 // by their runs between the ghosts (no id read a body: +20% of the opening pass's instructions).
 RotorGroups RankContacts::local_rotors(RotorGroups g) const {
   for (auto* ids : {&g.spheres, &g.isotropic, &g.asymmetric})
-    for (std::size_t& i : *ids) i = std::size_t(local_of_[i]);
+    for (std::size_t& i : *ids) i = store_.local_of(std::uint32_t(i));
   return with_runs(std::move(g));
 }
 
@@ -259,7 +253,7 @@ bool RankContacts::exchange_deciding(const Drivers& drivers, double dt) {
 }
 
 // The ghost exchange's parcels, sized once per plan (no allocation a step), the local indices
-// of each parcel's bodies (after local_of_) and the received ones' positions now (the store
+// of each parcel's bodies (the store's local_of) and the received ones' positions now (the store
 // just selected), which the next steps drift. The parcels carry the step's
 // requests when every rank sends to and receives from every other (a collective: all agree).
 void RankContacts::size_parcels() {
@@ -277,14 +271,14 @@ void RankContacts::size_parcels() {
     if (!plan_.send[q].empty()) {
       out_.push_back({q, std::vector<char>(plan_.send[q].size() * body + word)});
       std::vector<std::uint32_t>& local = send_local_.emplace_back();
-      for (std::uint32_t b : plan_.send[q]) local.push_back(std::uint32_t(local_of_[b]));
+      for (std::uint32_t b : plan_.send[q]) local.push_back(store_.local_of(b));
     }
     if (plan_.receive[q].empty()) continue;
     in_.push_back({q, std::vector<char>(plan_.receive[q].size() * body + word)});
     std::vector<std::uint32_t>& local = receive_local_.emplace_back();
     std::vector<Vec3>& x = drifted_.emplace_back();
     for (std::uint32_t b : plan_.receive[q]) {
-      local.push_back(std::uint32_t(local_of_[b]));
+      local.push_back(store_.local_of(b));
       x.push_back(store_.position[local.back()]);
     }
   }
@@ -327,13 +321,11 @@ ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
   return mine;
 }
 
-long RankContacts::first_non_finite(const Bodies& bodies) const {
-  return least_over_ranks(link_, first_non_finite_owned(bodies));
-}
+long RankContacts::first_non_finite() const { return least_over_ranks(link_, first_non_finite_owned()); }
 
-long RankContacts::first_non_finite_owned(const Bodies& bodies) const {
-  for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
-    if (!bodies.finite(b)) return long(b);
+long RankContacts::first_non_finite_owned() const {
+  for (std::size_t k = 0; k < store_.ghost.size(); ++k)  // increasing ids: the first is the smallest
+    if (!store_.ghost[k] && !finite_state(store_, k)) return long(store_.global_id[k]);
   return -1;
 }
 
@@ -360,7 +352,9 @@ EnergyParts RankContacts::take_energy() {
 
 StateEnergy RankContacts::state_energy(const Bodies& bodies, const Drivers& drivers) {
   StateEnergy mine;
-  for (std::uint32_t b : output_bodies()) mine.add_body(bodies, b);  // before a cut: rank 0 every body
+  with_output_rows(bodies, [&](const auto& arrays, const std::vector<std::uint32_t>& rows) {
+    for (std::uint32_t k : rows) mine.add_body(arrays, k);  // before a cut: rank 0 every body
+  });
   mine.open = taken_;  // J
   if (engine_) {
     mine.elastic = engine_->elastic(drivers, &store_.ghost);

@@ -52,13 +52,12 @@ class RankContacts {
   // (close_and_start); called by every thread of a team; then sums_taken(), which clears the
   // ghosts' sums too, so the next pair loop starts from zeros. Here, not in Simulation's unit:
   // beside one process's passes there, GCC outlined an Eigen += of the cubes' opening pass
-  // (+0.6% a step). An opening after force_rebuild first takes the owned state from `bodies`.
-  void start(const Bodies& bodies, double h, double dt, const Vec3& gravity);
+  // (+0.6% a step).
+  void start(double h, double dt, const Vec3& gravity);
   void kick_closing(double h);
   // `watch`: from watch_motion, the pass runs the rebuild trigger's test on each owned body it
   // moves (the step's measure then only poses).
-  void close_and_start(const Bodies& bodies, double h, double dt, const Vec3& gravity,
-                       const PointWatch* watch = nullptr);
+  void close_and_start(double h, double dt, const Vec3& gravity, const PointWatch* watch = nullptr);
   // Nothing but m gravity (m/s^2) and the contacts acts (no drag or fluid force): the joined
   // pass makes each owned body's force in registers (close_and_start_step<true>), as one process's.
   void only_gravity(const Vec3& gravity) { gravity_only_ = true, gravity_ = gravity; }
@@ -67,10 +66,9 @@ class RankContacts {
   bool watch_motion(PointWatch& watch);
   void sums_taken();
   void add_sums();  // the same with no kick: each owned body's sum added to its force
-  // The owned bodies' state and the ghosts' poses into `bodies` (the steps keep them in the
-  // store): before anything but this class reads `bodies` (output, checkpoints, checks, a
-  // contact piece's points), and store_from_bodies after something else wrote them (drag and
-  // fluid forces).
+  // The owned bodies' state into `bodies` (the steps keep them in the store): before a gather
+  // reads `bodies`, and store_from_bodies after something else wrote them (drag and fluid
+  // forces). A rank's own writers and checks read the store (with_output_rows).
   void publish(Bodies& bodies) const { store_.publish(bodies, true); }
   void store_from_bodies(const Bodies& bodies) { store_.pull(bodies); }
   // Whether the next steps share the drivers' reactions (the servo and the driver work of a
@@ -82,8 +80,12 @@ class RankContacts {
   void ask_stop(bool asked) { stop_asked_ = asked; }
   bool stop_seen() const { return stop_seen_; }  // some rank asked before this step's collective
   // Rebuilds at the next step from `whole`'s lists and `bodies` (a checkpoint read: the table
-  // and the state on every rank).
-  void force_rebuild() { forced_ = pull_ = true; }
+  // and the state on every rank), the store taking its owned bodies' state from `bodies` now
+  // (what reads the state before that step reads the store).
+  void force_rebuild(const Bodies& bodies) {
+    forced_ = true;
+    store_.pull(bodies);
+  }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
   // (a checkpoint written: the table went to rank 0 only).
   void rebuild_next_step() { rebuild_asked_ = true; }
@@ -99,13 +101,20 @@ class RankContacts {
   // its driver pairs); before its first step (no cut yet), rank 0 every body and `whole`'s
   // lists (read from a checkpoint, or none), the other ranks nothing.
   std::vector<std::uint32_t> output_bodies() const;
+  // Calls f(arrays, rows) with the rows of output_bodies() (in that order) in what holds their
+  // state: after the first step the store (its owned bodies), before it `bodies`.
+  template <class F>
+  void with_output_rows(const Bodies& bodies, F&& f) const {
+    if (engine_) f(store_, store_.owned_rows());
+    else f(bodies, output_bodies());
+  }
   std::vector<TableSlot> output_slots(const ContactEngine& whole, bool driver) const;
   // The ended contacts' energies this rank holds since the ledger last closed (J; rank 0 alone
   // before its first step: `whole`'s), the rest of its share being its slots' pending energies.
   ExactEnergy output_flushed(const ContactEngine& whole) const;
   // The smallest id of an owned body whose state is not finite over all ranks, or -1 (a collective).
-  long first_non_finite(const Bodies& bodies) const;
-  long first_non_finite_owned(const Bodies& bodies) const;  // this rank's alone
+  long first_non_finite() const;
+  long first_non_finite_owned() const;  // this rank's alone
   // This rank's lists (null before its first step) and their bodies (local ids).
   const ContactEngine* lists() const { return engine_.get(); }
   const LocalStore& store() const { return store_; }
@@ -174,9 +183,7 @@ class RankContacts {
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::vector<std::uint32_t>> send_local_, receive_local_;  // per parcel of out_, in_: its bodies' local indices
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
-  std::vector<std::int32_t> local_of_;  // global id -> local index, -1 when not local
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
-  bool pull_ = false;  // the next opening pass first takes the owned bodies' state from the global arrays
   bool gravity_only_ = false;  // only_gravity
   Vec3 gravity_ = Vec3::Zero();  // m/s^2
   bool watched_ = false;  // this step's opening pass ran the trigger's test (watch_motion)

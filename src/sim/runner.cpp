@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <numeric>
 #include <omp.h>
 #include <unistd.h>
 
@@ -19,6 +20,7 @@
 #include "output/vtk_image.hpp"
 #include "polydem/error.hpp"
 #include "sim/body_order.hpp"
+#include "sim/body_rows.hpp"
 #include "sim/checkpoint.hpp"
 #include "sim/checkpoint_pieces.hpp"
 #include "sim/contact_table.hpp"
@@ -72,7 +74,9 @@ std::string numbered(const char* stem, std::int64_t n, const char* ext) {
 // from the centre to the contact point; forces summed over the pair's sub-contacts (ft: the
 // sum of their tangential magnitudes).
 // `body` and `driver`: pair lists in global ids, as one process's engine holds them.
-std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driver, const Bodies& b) {
+// `b`: Bodies, or a rank's LocalStore with the lists in its local indices.
+template <class Arrays>
+std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driver, const Arrays& b) {
   std::vector<ContactOut> out;
   auto add = [&](const PairList& list, bool driver) {
     for (std::size_t k = 0; k < list.size(); ++k) {
@@ -106,11 +110,19 @@ std::vector<ContactOut> contact_lines(const PairList& body, const PairList& driv
 }
 
 // A distributed run's rank: the lines of the pairs it answers for (sim/rank_contacts.hpp), from
-// its owned bodies and ghosts, which are current after a step.
+// its owned bodies and ghosts in its store, which are current after a step.
 std::vector<ContactOut> rank_contact_lines(const Simulation& sim) {
   const RankContacts& r = *sim.rank_contacts();
-  return contact_lines(table_of(r.output_slots(sim.engine(), false)), table_of(r.output_slots(sim.engine(), true)),
-                       sim.bodies);
+  const LocalStore& store = r.store();
+  auto local = [&](bool driver) {  // the pairs in the store's indices
+    PairList list = table_of(r.output_slots(sim.engine(), driver));
+    for (BodyPair& p : list.pairs) {
+      p.i = store.local_of(p.i);
+      if (!driver) p.j = store.local_of(p.j);
+    }
+    return list;
+  };
+  return contact_lines(local(false), local(true), store);
 }
 
 // s: rows of a resumed run's CSV files later than this were written after its checkpoint.
@@ -262,9 +274,13 @@ class OutputWriter {
       return names;
     };
     on_every_rank(*sim_.link(), [&] {
-      write_bodies_piece(dir_ + "/" + piece(bodies, sim_.rank()), sim_.bodies,
-                         by_user_id(sim_.bodies, sim_.rank_contacts()->output_bodies()),
-                         sim_.shapes(), sim_.scene().output.rounded, sim_.scene().forces.gravity);
+      sim_.rank_contacts()->with_output_rows(sim_.bodies, [&](const auto& a, const std::vector<std::uint32_t>& rows) {
+        const Bodies mine = rows_of(a, rows);  // this rank's bodies alone
+        std::vector<std::uint32_t> every(mine.size());
+        std::iota(every.begin(), every.end(), 0u);
+        write_bodies_piece(dir_ + "/" + piece(bodies, sim_.rank()), mine, by_user_id(mine, std::move(every)),
+                           sim_.shapes(), sim_.scene().output.rounded, sim_.scene().forces.gravity);
+      });
       if (!contacts.empty()) write_contacts_vtp(dir_ + "/" + piece(contacts, sim_.rank()), rank_contact_lines(sim_));
       if (!io_) return;
       write_bodies_pvtu(dir_ + "/" + bodies, all(bodies));
@@ -345,8 +361,11 @@ std::string body_name(const Simulation& sim, long body) {
 
 // One process keeps every body; a rank the bodies it owns (before a cut: rank 0 every body).
 void keep_last_good(const Simulation& sim, LastGood& last_good) {
-  if (const RankContacts* r = sim.rank_contacts()) last_good.keep(sim.bodies, r->output_bodies());
-  else last_good.keep(sim.bodies);
+  const RankContacts* r = sim.rank_contacts();
+  if (!r) return last_good.keep(sim.bodies);
+  r->with_output_rows(sim.bodies, [&](const auto& a, const std::vector<std::uint32_t>& rows) {
+    last_good.keep(a, rows, r->output_bodies());
+  });
 }
 
 // What a finiteness check finds: the first body whose state is not finite (-1: none) and, in a
@@ -367,7 +386,7 @@ StateCheck check_state(const Simulation& sim, const OverlapWatch& watch, double 
     deep = watch.first_deep(r->lists()->body_pairs(), r->lists()->driver_pairs(), sim.drivers, kn, kn_driver,
                             sim.time(), {&r->store().global_id, &r->store().ghost});
   std::vector<char> mine;
-  append_record(mine, std::int64_t(r->first_non_finite_owned(sim.bodies)));
+  append_record(mine, std::int64_t(r->first_non_finite_owned()));
   append_record(mine, deep ? deep->key : std::array<std::uint64_t, 2>{~0ull, ~0ull});
   if (deep) mine.insert(mine.end(), deep->warning.begin(), deep->warning.end());
   StateCheck c{-1, ""};

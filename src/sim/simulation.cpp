@@ -144,7 +144,7 @@ void Simulation::contact_stage() {
 void Simulation::force_rebuild(bool table_on_every_rank) {
   engine_->force_rebuild();
   if (!ranks_) return;
-  if (table_on_every_rank) ranks_->force_rebuild();
+  if (table_on_every_rank) ranks_->force_rebuild(bodies);
   else ranks_->rebuild_next_step();
 }
 
@@ -177,7 +177,7 @@ void Simulation::close_ledger() {
 }
 
 long Simulation::first_non_finite() const {
-  return ranks_ ? ranks_->first_non_finite(bodies) : first_non_finite_body(bodies);
+  return ranks_ ? ranks_->first_non_finite() : first_non_finite_body(bodies);
 }
 
 void Simulation::external_forces() {
@@ -228,7 +228,7 @@ void Simulation::step(bool leave_kick_open) {
     // no barrier between them when the cut is this team's (the region's end is the one needed).
     const bool wait = cut.threads != omp_get_num_threads();
     if (close_last && !one_process)
-      ranks_->close_and_start(bodies, 0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
+      ranks_->close_and_start(0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
     else if (watched)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
     else if (from_gravity)
@@ -236,7 +236,7 @@ void Simulation::step(bool leave_kick_open) {
     else if (close_last)
       close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (rank_passes)
-      ranks_->start(bodies, 0.5 * dt_, dt_, gravity_);
+      ranks_->start(0.5 * dt_, dt_, gravity_);
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
     if (contacts && one_process) {
@@ -336,7 +336,7 @@ EnergyRow Simulation::energy() const {
 
 long first_non_finite_body(const Bodies& bodies) {
   for (std::size_t b = 0; b < bodies.size(); ++b)
-    if (!bodies.finite(b)) return long(b);
+    if (!finite_state(bodies, b)) return long(b);
   return -1;
 }
 

@@ -15,14 +15,6 @@ void each_sum(S& s, F&& f) {
 
 }  // namespace
 
-void StateEnergy::add_body(const Bodies& bodies, std::size_t b) {
-  const double m = bodies.mass[b];  // kg
-  kinetic.add(0.5 * m * bodies.velocity[b].squaredNorm());
-  const Vec3& L = bodies.angular_momentum[b];
-  rotational.add(0.5 * L.cwiseProduct(L).cwiseQuotient(bodies.inertia[b]).sum());
-  for (int a = 0; a < 3; ++a) moment[a].add(m * bodies.position[b][a]);
-}
-
 std::vector<std::uint64_t> StateEnergy::words() const {
   std::vector<std::uint64_t> w;
   each_sum(*this, [&](const ExactSum& s) {

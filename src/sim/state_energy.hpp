@@ -19,7 +19,15 @@ struct StateEnergy {
   ExactStored elastic;             // J
   ExactEnergy open;                // J
 
-  void add_body(const Bodies& bodies, std::size_t b);
+  // Body b of `a` (Bodies, or a rank's LocalStore).
+  template <class Arrays>
+  void add_body(const Arrays& a, std::size_t b) {
+    const double m = a.mass[b];  // kg
+    kinetic.add(0.5 * m * a.velocity[b].squaredNorm());
+    const Vec3& L = a.angular_momentum[b];
+    rotational.add(0.5 * L.cwiseProduct(L).cwiseQuotient(a.inertia[b]).sum());
+    for (int d = 0; d < 3; ++d) moment[d].add(m * a.position[b][d]);
+  }
   Vec3 mass_moment() const { return {moment[0].value(), moment[1].value(), moment[2].value()}; }
   std::vector<std::uint64_t> words() const;
   // The sum whose words (over `terms` ranks) are `w`.
