@@ -37,16 +37,25 @@ inline void clear_home_sums(DirectSums& direct, int t) {
   add_as_i(sums[p.i], pt.force_i, pt.torque_i);
   add_as_j(sums[p.j], pt.force_i, pt.torque_j);
 }
+// Whether a kernel's lists are always dense (Kernel::kDense: the sphere kernel's): their pairs'
+// energies are on their first slots, with no test of PairList::sparse.
+template <class Kernel>
+constexpr bool dense_kernel() {
+  if constexpr (requires { Kernel::kDense; }) return Kernel::kDense;
+  return false;
+}
+
 // Pair k's own results: its touching count and pending energy, its block's contacts and ended flag.
 // A pair touching neither at the last step nor now adds no energy (+0 to its +0: flushed when it
 // ended), so its pending energy is not read: 32 bytes a pair not streamed (issue 19).
+template <bool kDense = false>
 [[gnu::always_inline]] inline void keep_pair(PairList& list, std::uint32_t k, const PairTotals& pt,
                                              std::uint32_t& contacts, bool& ended) {
   const bool was = list.touching[k] != 0;
   ended |= was & (pt.contacts == 0);  // touching at the last step, not now
-  list.touching[k] = std::uint16_t(pt.contacts);
-  if (was | (pt.contacts != 0)) list.open_energy(k) += pt.energy;
+  if (was | (pt.contacts != 0)) (kDense ? list.slots[list.slot_begin[k]].pending : list.open_energy(k)) += pt.energy;
   else assert(pt.energy.net == 0.0 && pt.energy.sliding == 0.0 && pt.energy.rolling == 0.0 && pt.energy.patch == 0.0);
+  list.touching[k] = std::uint16_t(pt.contacts);
   contacts += std::uint32_t(pt.contacts);
 }
 
@@ -102,12 +111,12 @@ template <class Kernel, class Add>
   const auto alone = [&](std::uint32_t a) __attribute__((noinline)) {  // not steady: the scalar kernel
     const PairTotals pt = kernel(a, scratch);
     add(a, pt);
-    keep_pair(list, a, pt, contacts, ended);
+    keep_pair<dense_kernel<Kernel>()>(list, a, pt, contacts, ended);
   };
   const auto lone = [&](std::uint32_t a) __attribute__((noinline)) {  // a candidate without a partner
     const PairTotals pt = steady_alone(kernel, a, scratch);
     add(a, pt);
-    keep_pair(list, a, pt, contacts, ended);
+    keep_pair<dense_kernel<Kernel>()>(list, a, pt, contacts, ended);
   };
   for (; k < stop; ++k) {
     if (kernel.candidate(k)) {
@@ -119,13 +128,13 @@ template <class Kernel, class Add>
       kernel.template steady<2>(two, [&](int l, const PairTotals* t) __attribute__((always_inline)) {
         if (!t) return alone(two[l]);
         add(two[l], *t);
-        keep_pair(list, two[l], *t, contacts, ended);
+        keep_pair<dense_kernel<Kernel>()>(list, two[l], *t, contacts, ended);
       });
       waiting = kNone;
       continue;
     }
     const PairTotals pt = kernel(k, scratch);
-    keep_pair(list, k, pt, contacts, ended);
+    keep_pair<dense_kernel<Kernel>()>(list, k, pt, contacts, ended);
     if (pt.contacts == 0) {  // out of reach: its terms are +0
       add.out_of_reach(k, pt);
       continue;
@@ -147,7 +156,7 @@ template <class Kernel, class Add>
     for (; k < stop; ++k) {
       const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
       add(k, pt);
-      keep_pair(list, k, pt, contacts, ended);
+      keep_pair<dense_kernel<Kernel>()>(list, k, pt, contacts, ended);
     }
   }
 }

@@ -1,3 +1,5 @@
+#include <cassert>
+
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
 #include "contact/sphere_lanes.hpp"
@@ -8,6 +10,7 @@ namespace {
 // The pair loop's kernel: sphere_pair_forces for pair k.
 template <class Parts, class Sizes>
 struct SphereKernel {
+  static constexpr bool kDense = true;  // a sphere list is dense: each pair's energy on its slot
   const LawParams& law;
   double band, dt;  // m, s
   const BodyView& bodies;
@@ -32,6 +35,7 @@ struct SphereLanesKernel : SphereKernel<SteadyParts, Sizes> {
 
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
                       DirectSums& direct, const EqualSpheres* equal, bool lanes) {
+  assert(!list.sparse);
   with_law(law, [&](auto parts) {
     using Parts = decltype(parts);
     const auto run = [&](const auto& sizes) {
