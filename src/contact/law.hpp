@@ -244,7 +244,10 @@ template <class Normal, bool kLone>
     // N, unclamped and signed: the spring at -dn is `spring` inside the overlap (one evaluation).
     const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;
     if (overlap > 0.0) out.fp = std::max(u, 0.0);
-    if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
+    if (k.patch_push) [[unlikely]] {  // a patch whose sub-contacts start within the step (patch_push.hpp)
+      out.fp += std::max(-c * vn_e, 0.0) * k.patch_push->dashpot;
+      if (c > 0.0) out.push = Normal::spring(law, k.r_star, 1.0, k.patch_push->spring);
+    } else if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
       const OnsetForce onset = onset_force(std::max(overlap, k.patch_depth), vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
       out.fp += onset.dashpot;
       // The spring's push pairs with the one where the clamp lets go, inside the overlap: an

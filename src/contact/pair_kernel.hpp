@@ -11,6 +11,7 @@
 #include "geometry/shadowing.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/contact_regions.hpp"
+#include "contact/patch_push.hpp"
 
 namespace polydem {
 
@@ -121,6 +122,9 @@ struct PairScratch {
   std::vector<double> patch_mass;     // kg, damping_mass: contact on a patch (patch_dashpot_masses)
   std::vector<double> patch_depth;    // m, per found contact: ContactKinematics::patch_depth (patch_onsets)
   bool onsets = false;                // patch_depth is set for this pair (rare: the contact set changed)
+  std::vector<PatchPush> patch_push;  // per found contact where `onsets` and the band is 0 (patch_pushes)
+  std::vector<PatchDrift> drift;      // one region's sub-contacts over the step (patch_pushes)
+  bool pushes = false;                // patch_push is set for this pair
 };
 
 // The sub-contacts whose overlap starts this step (none at n) in a patch of several (their region;
@@ -145,6 +149,30 @@ inline void patch_onsets(bool regions, PairScratch& scratch) {
       else depth = std::max(depth, -scratch.found[o].geometry.gap);
     }
     scratch.patch_depth[c] = depth;
+  }
+}
+
+// The pushes of patch_push.hpp for each sub-contact of a pair whose contact set changed, from
+// its region's overlaps (no band: the weights are the overlaps') and closing rates at the half
+// step (v_centre, m/s: i's velocity less j's at i's centre xi, m; w_rel, rad/s). A sub-contact
+// new this step and closing touched x / r before n+1 (at most dt, s); else it counts as touching at n.
+inline void patch_pushes(const Vec3& xi, const Vec3& v_centre, const Vec3& w_rel, bool regions, double dt,
+                         PairScratch& scratch) {
+  const std::size_t n = scratch.found.size();
+  scratch.patch_push.resize(n);
+  scratch.pushes = true;
+  for (std::size_t c = 0; c < n; ++c) {
+    scratch.drift.clear();
+    std::size_t self = 0;
+    for (std::size_t o = 0; o < n; ++o) {
+      if (regions && scratch.region[o] != scratch.region[c]) continue;
+      if (o == c) self = scratch.drift.size();
+      const ContactPoint& g = scratch.found[o].geometry;
+      const double x = -g.gap, r = -(v_centre + w_rel.cross(g.point - xi)).dot(g.normal);  // m, m/s
+      const bool old = scratch.found[o].state->history.gap < 0.0 || !(r > 0.0);
+      scratch.drift.push_back({x, r, old ? dt : std::min(x / r, dt), old});
+    }
+    scratch.patch_push[c] = patch_push(scratch.drift, self, dt);
   }
 }
 
@@ -323,7 +351,8 @@ template <class Parts, class Partner>
                         pl.r_star,
                         pl.exact_step,
                         law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k],  // k', c' for the pair's fixed mass
-                        pl.scratch.onsets ? pl.scratch.patch_depth[c] : 0.0};
+                        pl.scratch.onsets ? pl.scratch.patch_depth[c] : 0.0,
+                        pl.scratch.pushes ? &pl.scratch.patch_push[c] : nullptr};
   const ContactForce f = contact_force<Parts, false, Stored::kSkip>(law, kin, pl.scratch.found[c].state->history, lc.dt);
   if constexpr (Parts::rolling) add_contact(pl, c, f, motion.lever.cross(f.force) + f.moment);
   else add_contact(pl, c, f, motion.lever.cross(f.force));
@@ -402,7 +431,8 @@ template <class Parts, class Partner>
   constexpr bool kLanes = !Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
   bool laned = false;
   if constexpr (kLanes) {
-    laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0;
+    laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0 &&
+            !scratch.pushes;  // a changed patch's shares move: every one takes its push
     if (laned) law_in_lanes<Parts>(pl);
   }
   if (!laned)
@@ -439,8 +469,16 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     patch_weights(scratch.found, band, scratch.weight);
   if (law.contact_mass && scratch.found.size() > 1)
     patch_dashpot_masses(a, bodies.mass[p.i], bodies.position[p.i], partner, p.j, regions, scratch);
-  scratch.onsets = false;
-  if (changed && scratch.found.size() > 1) patch_onsets(regions, scratch);
+  scratch.onsets = scratch.pushes = false;
+  if (changed && scratch.found.size() > 1) {
+    patch_onsets(regions, scratch);
+    if (band == 0.0) {
+      const RigidMotion mj = partner.motion(p.j);
+      const Vec3& xi = bodies.position[p.i];
+      patch_pushes(xi, bodies.velocity[p.i] - mj.at(xi), bodies.angular_velocity[p.i] - mj.angular_velocity, regions,
+                   dt, scratch);
+    }
+  }
   apply_law<Parts>(law, dt, bodies, partner, list, k, scratch, r_star, totals);
   return totals;
 }

@@ -43,6 +43,12 @@ struct ContactHistory {
   bool rolling_slipping = false;  // the rolling spring was capped, likewise
 };
 
+// A sub-contact's push where its patch's contact set changed within the step (patch_push.hpp):
+// per unit of its dashpot's force (-) and, times kn, its spring's (m).
+struct PatchPush {
+  double dashpot, spring;
+};
+
 struct ContactKinematics {
   Vec3 normal;    // unit, from j to i
   double dn;      // m, gap (negative: overlap)
@@ -67,6 +73,9 @@ struct ContactKinematics {
   // (second_order.hpp) are not taken; else the deepest overlap of those starting with this one,
   // so the end-of-step dashpot's pushes date from the patch's touch (0: this contact alone).
   double patch_depth = 0.0;
+  // The linear law's end-of-step dashpot takes this push instead of its onset's where set (null:
+  // the pair's contact set did not change, or a lone contact).
+  const PatchPush* patch_push = nullptr;
 };
 
 struct ContactForce {

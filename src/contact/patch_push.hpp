@@ -1,0 +1,101 @@
+#pragma once
+// The onset pushes of a patch whose sub-contacts start at different times within one step
+// (issue 16: a cube landing almost flat, its far edge joining the near one's patch). Each
+// sub-contact's share w_k = x_k / sum(x) (pair_kernel.hpp, patch_weights) then moves on the
+// scale of the join's lag, not of the impact: the near edge carries the whole patch until the
+// far one touches, then hands it half of it. The cells of velocity Verlet sample w_k at the
+// steps only, which misses O(dt) of each share's impulse, the patch's torque. Here the overlaps
+// drift along straight lines over the step (x_j at n+1 less r_j, the closing rate, per second
+// before it; a new one from its touch) and each share's impulse over the step is integrated in
+// closed form, and so is each later cell's while the shares settle (the lag may be shorter
+// than dt). The step adds what the cells miss, as the lone contact's onset push does
+// (second_order.hpp): with f the share, f(n) and f'(n) from the sub-contacts that touched at n
+// (the formula the last step used), the push (a force over dt) is
+//   P dt = integral over [n, n+3/2] - f(n) dt/2 - f'(n) dt^2/8 - f(n+1) dt
+//          + sum over m >= 2 of (integral over cell n+m - f(n+m) dt).
+// For one share whose dashpot starts tau before n+1 it is onset_force's g (tau - dt/2). Only
+// the rare step where a pair's contact set changed pays for it.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "contact/law/types.hpp"
+
+namespace polydem {
+
+// One sub-contact of a patch over the step, s (s) the time before n+1: overlap x - r s (m) for
+// s < touch (s; the whole step for one that touched at n).
+struct PatchDrift {
+  double x, r, touch;  // m, m/s (closing), s
+  bool old;            // it touched at n: in the formula of the last step
+};
+
+namespace patch_detail {
+// Share k's dashpot and spring parts over the patch's present sub-contacts on s in [a, b]:
+// integral of x_k / S and x_k^2 / S (s, m s), S = X - R s their overlap sum (m; X at n+1, R its
+// rate). With x_k = alpha S + beta both integrals are closed: alpha (b - a) + beta I1 and
+// alpha^2 I_S + 2 alpha beta (b - a) + beta^2 I1, I1 the integral of 1/S.
+inline std::array<double, 2> piece(double xk, double rk, double X, double R, double a, double b) {
+  const double width = b - a, s_end = X - R * b, s_start = X - R * a;  // s, m, m
+  const double mean = X - R * 0.5 * (a + b);                           // m, S at the piece's middle
+  if (s_end <= 0.0 && s_start > 0.0 && R > 0.0)  // the touch: the present ones start together, x_k / S = r_k / R
+    return {rk / R * width, (rk / R) * (rk / R) * 0.5 * s_start * width};
+  if (s_end <= 0.0 || s_start <= 0.0) return {0.0, 0.0};  // the patch lets go in it: not modelled
+  if (std::abs(R) * width <= 1e-6 * mean) {  // S nearly constant
+    const double xm = xk - rk * 0.5 * (a + b);  // m, the midpoint rule: its error is O(width^3 R^2 / S^3)
+    return {xm / mean * width, xm * xm / mean * width};
+  }
+  const double alpha = rk / R, beta = xk - alpha * X;  // -, m
+  const double i1 = std::log(s_start / s_end) / R;      // s/m
+  return {alpha * width + beta * i1, alpha * alpha * mean * width + 2.0 * alpha * beta * width + beta * beta * i1};
+}
+
+// Share k's value and slope in t (x_k / S, x_k^2 / S; per s and m/s) at s over `present`.
+inline std::array<double, 4> at(const std::vector<PatchDrift>& d, std::size_t k, double s, bool only_old) {
+  double X = 0.0, R = 0.0;  // m, m/s
+  for (const PatchDrift& j : d)
+    if (only_old ? j.old : true) X += std::max(j.x - j.r * s, 0.0), R += j.r;
+  const double xk = std::max(d[k].x - d[k].r * s, 0.0), rk = d[k].r;
+  if (!(X > 0.0) || (only_old && !d[k].old)) return {0.0, 0.0, 0.0, 0.0};
+  return {xk / X, xk * xk / X, (rk * X - xk * R) / (X * X), (2.0 * xk * rk * X - xk * xk * R) / (X * X)};
+}
+}  // namespace patch_detail
+
+// Sub-contact k's push, per unit of its dashpot force (-) and of kn (m): PatchPush.
+inline PatchPush patch_push(const std::vector<PatchDrift>& d, std::size_t k, double dt) {
+  std::vector<double> cuts = {0.0, dt};  // s: the touches inside the step split it
+  for (const PatchDrift& j : d)
+    if (!j.old && j.touch > 0.0 && j.touch < dt) cuts.push_back(j.touch);
+  std::sort(cuts.begin(), cuts.end());
+  double dashpot = 0.0, spring = 0.0;  // s, m s
+  for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
+    const double a = cuts[p], b = cuts[p + 1];
+    if (b <= a || (!d[k].old && d[k].touch < b)) continue;  // empty, or k not touching yet
+    double X = 0.0, R = 0.0;  // m, m/s: the sub-contacts touching over [a, b]
+    for (const PatchDrift& j : d)
+      if (j.old || j.touch >= b) X += j.x, R += j.r;
+    const std::array<double, 2> part = patch_detail::piece(d[k].x, d[k].r, X, R, a, b);
+    dashpot += part[0], spring += part[1];
+  }
+  // After n+1 the shares keep moving on the join's scale (the lag between the touches, which may
+  // be less than dt): the cells n+1 ... n+kAhead sample them at their steps, what they miss
+  // counted here as well (their later error falls as (lag / steps)^2).
+  double X = 0.0, R = 0.0;  // m, m/s: every sub-contact, after n+1
+  for (const PatchDrift& j : d) X += j.x, R += j.r;
+  const std::array<double, 2> half = patch_detail::piece(d[k].x, d[k].r, X, R, -0.5 * dt, 0.0);
+  dashpot += half[0], spring += half[1];
+  const std::array<double, 4> now = patch_detail::at(d, k, 0.0, false), then = patch_detail::at(d, k, dt, true);
+  double missed = -now[0] * dt, missed_spring = -now[1] * dt;  // s, m s: cell n+1 samples n+1
+  constexpr int kAhead = 16;
+  for (int m = 2; m <= kAhead; ++m) {
+    if (!(X + R * (m + 0.5) * dt > 0.0)) break;  // separating: it lets go
+    const std::array<double, 2> cell = patch_detail::piece(d[k].x, d[k].r, X, R, -(m + 0.5) * dt, -(m - 0.5) * dt);
+    const double sk = d[k].x + d[k].r * m * dt, S = X + R * m * dt;  // m
+    missed += cell[0] - sk / S * dt, missed_spring += cell[1] - sk * sk / S * dt;
+  }
+  return {(dashpot + missed) / dt - 0.5 * then[0] - then[2] * dt / 8.0,
+          (spring + missed_spring) / dt - 0.5 * then[1] - then[3] * dt / 8.0};
+}
+
+}  // namespace polydem
