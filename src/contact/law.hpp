@@ -130,6 +130,9 @@ namespace law_detail {
 // seen once. kLone: the weight is 1 at n and n+1 (the sphere path), so nothing is divided by it.
 struct NormalForce {
   double fp = 0.0, push = 0.0;  // N
+  // N, the patch push's dashpot and spring parts (in push: h.fd keeps the force at n+1 without
+  // them, as a weight near 0 at a late touch would blow them up per unit weight next step).
+  double patch_dashpot = 0.0, patch_spring = 0.0;
   bool sampled = false;  // the exact step's force: a two-step average, not the force at n+1
   double since_touch = 0.0;  // s, the exact onset's time since its arc's touch (0: no exact onset)
 };
@@ -245,8 +248,10 @@ template <class Normal, bool kLone>
     const double u = Normal::spring(law, k.r_star, k.weight, -k.dn) - nu_w * vn_e;
     if (overlap > 0.0) out.fp = std::max(u, 0.0);
     if (k.patch_push) [[unlikely]] {  // a patch whose sub-contacts start within the step (patch_push.hpp)
-      out.fp += std::max(-c * vn_e, 0.0) * k.patch_push->dashpot;
-      if (c > 0.0) out.push = Normal::spring(law, k.r_star, 1.0, k.patch_push->spring);
+      out.patch_dashpot = std::max(-c * vn_e, 0.0) * k.patch_push->dashpot;
+      if (c > 0.0) out.patch_spring = Normal::spring(law, k.r_star, 1.0, k.patch_push->spring);
+      out.push = out.patch_dashpot + out.patch_spring;
+      if (f_last > 0.0 && u <= 0.0) out.push += release_force(f_last, u, dt);  // its clamp lets go as well
     } else if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
       const OnsetForce onset = onset_force(std::max(overlap, k.patch_depth), vn, std::max(-nu_w * vn_e, 0.0), spring, dt);
       out.fp += onset.dashpot;
@@ -342,6 +347,11 @@ template <class Parts, bool kLone = false, Stored kStored = Stored::kFill>
   out.dissipated = 0.5 * (h.fd + fd) * (h.gap - k.dn);  // trapezoid, as the kicks apply it
   const double overlap_last = std::max(-h.gap, 0.0);    // m
   out.patch = Normal::patch(law, k.r_star, overlap_last, overlap, h.weight, w);
+  if (k.patch_push) [[unlikely]] {  // its impulse (N s) at n+1 works across the velocity there (m/s)
+    const double stroke = k.v_end.dot(k.normal) * dt;  // m
+    out.dissipated -= normal.patch_dashpot * stroke;  // the dashpot's
+    out.patch += normal.patch_spring * stroke;        // the springs' under moving shares, as the weights'
+  }
   if (cohesion) {
     out.fn += cohesion_force(w * law.fc, law.dncut, k.dn);
     out.dissipated += cohesion_dissipated(law, h.weight, h.gap, w, k.dn);
