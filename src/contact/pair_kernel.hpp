@@ -123,7 +123,8 @@ struct PairScratch {
   std::vector<double> patch_depth;    // m, per found contact: ContactKinematics::patch_depth (patch_onsets)
   bool onsets = false;                // patch_depth is set for this pair (rare: the contact set changed)
   std::vector<PatchPush> patch_push;  // per found contact where `onsets` and the band is 0 (patch_pushes)
-  std::vector<PatchDrift> drift;      // one region's sub-contacts over the step (patch_pushes)
+  std::vector<PatchDrift> all_drift;  // the pair's sub-contacts over the step (patch_pushes)
+  std::vector<PatchDrift> drift;      // one region's of them
   bool pushes = false;                // patch_push is set for this pair
 };
 
@@ -155,24 +156,36 @@ inline void patch_onsets(bool regions, PairScratch& scratch) {
 // The pushes of patch_push.hpp for each sub-contact of a pair whose contact set changed, from
 // its region's overlaps (no band: the weights are the overlaps') and closing rates at the half
 // step (v_centre, m/s: i's velocity less j's at i's centre xi, m; w_rel, rad/s). A sub-contact
-// new this step and closing touched x / r before n+1 (at most dt, s); else it counts as touching at n.
+// new this step and closing touched x / r before n+1; else it counts as touching at n. Only a
+// region where one touched within the step (x < r dt) pushes: a set that changes otherwise (a
+// vertex letting go, a feature handed over, a vertex at rest flickering by round-off) moves no
+// share by O(1) within a step.
 inline void patch_pushes(const Vec3& xi, const Vec3& v_centre, const Vec3& w_rel, bool regions, double dt,
                          PairScratch& scratch) {
   const std::size_t n = scratch.found.size();
-  scratch.patch_push.resize(n);
+  scratch.all_drift.clear();
+  bool touched = false;  // a sub-contact touched within the step
+  for (std::size_t o = 0; o < n; ++o) {
+    const ContactPoint& g = scratch.found[o].geometry;
+    const double x = -g.gap, r = -(v_centre + w_rel.cross(g.point - xi)).dot(g.normal);  // m, m/s
+    const bool old = scratch.found[o].state->history.gap < 0.0 || !(x < r * dt);
+    scratch.all_drift.push_back({x, r, old ? dt : x / r, old});
+    touched = touched || !old;
+  }
+  if (!touched) return;
+  scratch.patch_push.assign(n, PatchPush{0.0, 0.0});
   scratch.pushes = true;
   for (std::size_t c = 0; c < n; ++c) {
     scratch.drift.clear();
     std::size_t self = 0;
+    bool region_touched = false;
     for (std::size_t o = 0; o < n; ++o) {
       if (regions && scratch.region[o] != scratch.region[c]) continue;
       if (o == c) self = scratch.drift.size();
-      const ContactPoint& g = scratch.found[o].geometry;
-      const double x = -g.gap, r = -(v_centre + w_rel.cross(g.point - xi)).dot(g.normal);  // m, m/s
-      const bool old = scratch.found[o].state->history.gap < 0.0 || !(r > 0.0);
-      scratch.drift.push_back({x, r, old ? dt : std::min(x / r, dt), old});
+      scratch.drift.push_back(scratch.all_drift[o]);
+      region_touched = region_touched || !scratch.all_drift[o].old;
     }
-    scratch.patch_push[c] = patch_push(scratch.drift, self, dt);
+    if (region_touched) scratch.patch_push[c] = patch_push(scratch.drift, self, dt);
   }
 }
 

@@ -62,6 +62,15 @@ inline std::array<double, 4> at(const std::vector<PatchDrift>& d, std::size_t k,
 }
 }  // namespace patch_detail
 
+// s after n+1 when the first sub-contact present at n+1 lets go (its overlap x - r s reaches 0:
+// x / -r for one opening), at most `cap`: the model of the shares holds up to there.
+inline double patch_window(const std::vector<PatchDrift>& d, double cap) {
+  double end = cap;  // s
+  for (const PatchDrift& j : d)
+    if (j.r < 0.0) end = std::min(end, j.x / -j.r);
+  return end;
+}
+
 // Sub-contact k's push, per unit of its dashpot force (-) and of kn (m): PatchPush.
 inline PatchPush patch_push(const std::vector<PatchDrift>& d, std::size_t k, double dt) {
   std::vector<double> cuts = {0.0, dt};  // s: the touches inside the step split it
@@ -80,22 +89,24 @@ inline PatchPush patch_push(const std::vector<PatchDrift>& d, std::size_t k, dou
   }
   // After n+1 the shares keep moving on the join's scale (the lag between the touches, which may
   // be less than dt): the cells n+1 ... n+kAhead sample them at their steps, what they miss
-  // counted here as well (their later error falls as (lag / steps)^2).
+  // counted here as well (their later error falls as (lag / steps)^2), up to the first letting
+  // go (patch_window): past it the straight lines are not the patch's, and the step that sees
+  // it changes the set and pushes anew. A cell cut there counts its part before, so the push
+  // is continuous in dt.
+  constexpr int kAhead = 16;
+  const double end = patch_window(d, (kAhead + 0.5) * dt);  // s after n+1
   double X = 0.0, R = 0.0;  // m, m/s: every sub-contact, after n+1
   for (const PatchDrift& j : d) X += j.x, R += j.r;
-  const std::array<double, 2> half = patch_detail::piece(d[k].x, d[k].r, X, R, -0.5 * dt, 0.0);
-  dashpot += half[0], spring += half[1];
-  const std::array<double, 4> now = patch_detail::at(d, k, 0.0, false), then = patch_detail::at(d, k, dt, true);
-  double missed = -now[0] * dt, missed_spring = -now[1] * dt;  // s, m s: cell n+1 samples n+1
-  constexpr int kAhead = 16;
-  for (int m = 2; m <= kAhead; ++m) {
-    if (!(X + R * (m + 0.5) * dt > 0.0)) break;  // separating: it lets go
-    const std::array<double, 2> cell = patch_detail::piece(d[k].x, d[k].r, X, R, -(m + 0.5) * dt, -(m - 0.5) * dt);
-    const double sk = d[k].x + d[k].r * m * dt, S = X + R * m * dt;  // m
-    missed += cell[0] - sk / S * dt, missed_spring += cell[1] - sk * sk / S * dt;
+  for (int m = 1; m <= kAhead + 1; ++m) {  // cell n+m: [m - 3/2, m - 1/2] dt after n+1 (for m = 1 its first half is the step's)
+    const double from = std::max(m - 1.5, 0.0) * dt, to = std::min((m - 0.5) * dt, end);  // s after n+1
+    if (to <= from) break;
+    const std::array<double, 2> cell = patch_detail::piece(d[k].x, d[k].r, X, R, -to, -from);
+    const std::array<double, 4> sample = patch_detail::at(d, k, -(m - 1) * dt, false);  // at n+m
+    const double width = to - (m - 1.5) * dt;  // s, the cell's part the samples count
+    dashpot += cell[0] - sample[0] * width, spring += cell[1] - sample[1] * width;
   }
-  return {(dashpot + missed) / dt - 0.5 * then[0] - then[2] * dt / 8.0,
-          (spring + missed_spring) / dt - 0.5 * then[1] - then[3] * dt / 8.0};
+  const std::array<double, 4> then = patch_detail::at(d, k, dt, true);
+  return {dashpot / dt - 0.5 * then[0] - then[2] * dt / 8.0, spring / dt - 0.5 * then[1] - then[3] * dt / 8.0};
 }
 
 }  // namespace polydem
