@@ -260,7 +260,7 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->compute(bodies, drivers, dt_, *engine_);
     } else {
       stale = engine_->stale_after_measure(all_owned(bodies), drivers);
-      if (stale) engine_->rebuild(all_owned(bodies), drivers);
+      if (stale) engine_->rebuild(all_owned(bodies), drivers, true);  // region 1 posed the listed bodies
     }
   }
   in_team(team, [&] {
