@@ -1,6 +1,9 @@
 #include "sim/local_store.hpp"
 
 #include <algorithm>
+#include <numeric>
+
+#include "sim/body_rows.hpp"
 
 namespace polydem {
 
@@ -30,19 +33,10 @@ void copy_motion(To& to, std::size_t t, const From& from, std::size_t f) {
 }  // namespace
 
 void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost) {
+  resize(ids.size());
   global_id = std::move(ids);
   ghost = std::move(is_ghost);
   const std::size_t n = global_id.size();
-  shape.resize(n);
-  scale.resize(n);
-  mass.resize(n);
-  inertia.resize(n);
-  group.resize(n);
-  id.resize(n);
-  for (auto* v : {&position, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end, &angular_momentum,
-                  &force, &torque})
-    v->resize(n);
-  orientation.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t g = global_id[k];
     shape[k] = all.shape[g];
@@ -53,6 +47,23 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
     id[k] = all.id[g];
     copy_motion(*this, k, all, g);
   }
+}
+
+void LocalStore::append(const LocalStore& from, const std::vector<std::uint32_t>& rows) {
+  with_arrays(from, [&](auto& to, const auto& at) {
+    for (std::uint32_t r : rows) to.push_back(at[r]);
+  });
+}
+
+void LocalStore::sort_by_id() {
+  std::vector<std::uint32_t> order(size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return global_id[a] < global_id[b]; });
+  with_arrays(*this, [&](auto& v, auto&) { v = subset(v, order); });
+}
+
+void LocalStore::resize(std::size_t n) {
+  with_arrays(*this, [n](auto& v, auto&) { v.resize(n); });
 }
 
 void LocalStore::publish(Bodies& all, bool with_ghosts) const {
