@@ -66,10 +66,9 @@ void LocalStore::resize(std::size_t n) {
   with_arrays(*this, [n](auto& v, auto&) { v.resize(n); });
 }
 
-void LocalStore::publish(Bodies& all, bool with_ghosts) const {
+void LocalStore::publish(Bodies& all) const {
   for (std::size_t k = 0; k < global_id.size(); ++k)
     if (!ghost[k]) copy_motion(all, global_id[k], *this, k);
-    else if (with_ghosts) copy_pose(all, global_id[k], *this, k);
 }
 
 void LocalStore::pull(const Bodies& all) {

@@ -6,8 +6,9 @@
 // what contacts read (pose, velocities, shape, scale, mass, global id) and output (group, user
 // id), written where its owner's parcel lands (sim/ghost_plan.hpp). The set changes only at
 // list rebuilds. Its fields are named as Bodies', so a rank's writers, energies and checks read
-// it through the same templates (body_rows.hpp). The global Bodies arrays get the owned bodies'
-// state only where a gather reads it (publish).
+// it through the same templates (body_rows.hpp). A rebuild makes the next store from the old
+// one and the parcels that land (sim/rank_migration.hpp); the global Bodies arrays get the owned
+// bodies' state only where a gather reads it (publish).
 #include <cstdint>
 #include <vector>
 
@@ -42,11 +43,9 @@ struct LocalStore {
   void sort_by_id();
   void resize(std::size_t n);
   std::size_t size() const { return global_id.size(); }
-  // The owned bodies' integration state into `all` at their global ids (before a gather,
-  // output or a rebuild reads the global arrays), and the ghosts' pose and velocities
-  // `with_ghosts` (a rebuild's migration reads a pair's other body); or back from it (pull:
-  // after something wrote them).
-  void publish(Bodies& all, bool with_ghosts = false) const;
+  // The owned bodies' integration state into `all` at their global ids (a gather:
+  // RankContacts::sync_bodies); or back from it (pull: after something wrote them).
+  void publish(Bodies& all) const;
   void pull(const Bodies& all);
   // The local index of the body of global id `g`, which the store holds.
   std::uint32_t local_of(std::uint32_t g) const;

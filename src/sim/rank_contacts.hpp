@@ -11,8 +11,9 @@
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
 // reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
-// bodies in its LocalStore (one copy of their state); it keeps arrays for all bodies, which get
-// its owned bodies' state only where they are read (publish: gathers, output, rebuilds).
+// bodies in its LocalStore (one copy of their state), and a rebuild after the first sends and
+// lands bodies store to store; it keeps arrays for all bodies, which get the state only where a
+// gather writes it (sync_bodies: output with probes or fluid, drag and fluid forces, the start).
 #include <memory>
 #include <vector>
 
@@ -66,10 +67,9 @@ class RankContacts {
   bool watch_motion(PointWatch& watch);
   void sums_taken();
   void add_sums();  // the same with no kick: each owned body's sum added to its force
-  // The owned bodies' state into `bodies` (the steps keep them in the store): before a gather
-  // reads `bodies`, and store_from_bodies after something else wrote them (drag and fluid
-  // forces). A rank's own writers and checks read the store (with_output_rows).
-  void publish(Bodies& bodies) const { store_.publish(bodies, true); }
+  // The owned bodies' state back from `bodies` after something else wrote them (drag and fluid
+  // forces, after sync_bodies). A rank's own writers and checks read the store (with_output_rows);
+  // `bodies` gets the state only where a gather writes it (sync_bodies).
   void store_from_bodies(const Bodies& bodies) { store_.pull(bodies); }
   // Whether the next steps share the drivers' reactions (the servo and the driver work of a
   // moving driver read them each step, output only at its rows); when not, only the contact
