@@ -11,11 +11,8 @@ struct Writer {
   char* at;
   void field(const Vec3& v) { doubles(v.data(), 3); }
   void field(const Quat& q) { doubles(q.coeffs().data(), 4); }
-  void field(std::uint32_t id) { scalar(id); }
-  void field(int i) { scalar(i); }
-  void field(double d) { scalar(d); }
-  template <class T>
-  void scalar(T v) { std::memcpy(at, &v, sizeof v); at += sizeof v; }
+  template <class T>  // a scalar: an id, a shape or group index, a double
+  void field(T v) { std::memcpy(at, &v, sizeof v); at += sizeof v; }
   void doubles(const double* d, std::size_t n) { std::memcpy(at, d, n * sizeof(double)); at += n * sizeof(double); }
 };
 
@@ -23,11 +20,8 @@ struct Reader {
   const char* at;
   void field(Vec3& v) { doubles(v.data(), 3); }
   void field(Quat& q) { doubles(q.coeffs().data(), 4); }
-  void field(std::uint32_t& id) { scalar(id); }
-  void field(int& i) { scalar(i); }
-  void field(double& d) { scalar(d); }
   template <class T>
-  void scalar(T& v) { std::memcpy(&v, at, sizeof v); at += sizeof v; }
+  void field(T& v) { std::memcpy(&v, at, sizeof v); at += sizeof v; }
   void doubles(double* d, std::size_t n) { std::memcpy(d, at, n * sizeof(double)); at += n * sizeof(double); }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <type_traits>
 
 #include "sim/body_rows.hpp"
 
@@ -28,6 +29,15 @@ void copy_motion(To& to, std::size_t t, const From& from, std::size_t f) {
   to.angular_momentum[t] = from.angular_momentum[f];
   to.force[t] = from.force[f];
   to.torque[t] = from.torque[f];
+}
+
+// A new row's value (Eigen's vectors are not zeroed by their constructor): a ghost landed from
+// a parcel keeps zero inertia, angular momentum, force and torque.
+template <class T>
+T blank() {
+  if constexpr (std::is_same_v<T, Vec3>) return Vec3::Zero();
+  else if constexpr (std::is_same_v<T, Quat>) return Quat::Identity();
+  else return T{};
 }
 
 }  // namespace
@@ -63,7 +73,7 @@ void LocalStore::sort_by_id() {
 }
 
 void LocalStore::resize(std::size_t n) {
-  with_arrays(*this, [n](auto& v, auto&) { v.resize(n); });
+  with_arrays(*this, [n](auto& v, auto&) { v.resize(n, blank<typename std::decay_t<decltype(v)>::value_type>()); });
 }
 
 void LocalStore::publish(Bodies& all) const {
