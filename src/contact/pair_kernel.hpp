@@ -221,7 +221,7 @@ struct RigidMotion {
 // Evaluates the candidate feature pairs of pair k (slots [s0, s1)) into scratch.found and drops
 // the shadowed ones. Out of line, as the law loop: one function for both runs short of registers.
 template <class Partner>
-[[gnu::noinline]] void find_contacts(double band, const PosedBody& a, const Partner& partner, PairList& list,
+[[gnu::always_inline]] inline void find_contacts(double band, const PosedBody& a, const Partner& partner, PairList& list,
                                      std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
   scratch.found.clear();
