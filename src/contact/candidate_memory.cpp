@@ -114,9 +114,7 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
       }
       blocks[blk] = block;
     }
-    if (!own_region) {
-#pragma omp barrier
-    }
+    barrier_unless_own_region(own_region);
   });
   join_blocks(blocks, list);
   // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang refuses a

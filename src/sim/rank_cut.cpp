@@ -65,7 +65,7 @@ void RankContacts::recut_if_unbalanced(const std::vector<std::uint32_t>& rows) {
 // kCutSampleRank a rank), every body itself while they are fewer.
 std::vector<char> RankContacts::cut_sample(const std::vector<std::uint32_t>& rows,
                                           const std::vector<std::uint64_t>& w) const {
-  const std::size_t n = plan_.owned.size();
+  const std::size_t n = rows.size();
   const std::size_t most = std::max<std::size_t>(kCutSampleRank, kCutSample / std::size_t(link_.ranks()));
   const std::size_t run = (n + most - 1) / std::max<std::size_t>(most, 1);  // bodies a point stands for
   std::vector<CutPoint> points;
