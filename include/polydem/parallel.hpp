@@ -32,12 +32,22 @@ void in_team(bool worth_waking, const Fn& fn) {
   fn();
 }
 
+// A loop's closing barrier, needed only inside a wider region: a region of the loop's own ends at
+// its own barrier (one meeting, not two).
+inline void barrier_unless_own_region(bool own_region) {
+  if (!own_region) {
+#pragma omp barrier
+  }
+}
+
 template <class Fn>
 void parallel_for(std::size_t n, const Fn& fn) {
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
+  const bool own_region = omp_get_level() == 0;
   in_team(n >= kParallelMinItems, [&] {
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
     for (std::size_t k = 0; k < n; ++k) fn(k);
+    barrier_unless_own_region(own_region);
   });
 }
 
@@ -45,9 +55,11 @@ void parallel_for(std::size_t n, const Fn& fn) {
 template <class Fn>
 void parallel_for_dynamic(std::size_t n, const Fn& fn) {
   if (n == 0) return;
+  const bool own_region = omp_get_level() == 0;
   in_team(n >= kParallelMinItems, [&] {
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, 64) nowait
     for (std::size_t k = 0; k < n; ++k) fn(k);
+    barrier_unless_own_region(own_region);
   });
 }
 

@@ -69,12 +69,13 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
   std::vector<CandidateBlock> blocks(n_blocks);
   std::vector<PairSearches> made(n_blocks);  // the new searches, block by block
   std::vector<std::int64_t> from(near.size());  // as remember() reads it
+  const bool own_region = omp_get_level() == 0;  // its end is the loop's barrier
   in_team(near.size() >= kParallelMinItems, [&] {
     std::vector<FeaturePair> wide, found;
     std::vector<double> wide2, found2;  // m^2
     std::vector<std::uint32_t> order;
     CandidateBlock block;  // grown once per thread; each block is copied out at its exact size
-#pragma omp for schedule(dynamic, 1)
+#pragma omp for schedule(dynamic, 1) nowait
     for (std::size_t blk = 0; blk < n_blocks; ++blk) {
       block.clear();
       for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k) {
@@ -113,6 +114,7 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
       }
       blocks[blk] = block;
     }
+    barrier_unless_own_region(own_region);
   });
   join_blocks(blocks, list);
   // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang refuses a

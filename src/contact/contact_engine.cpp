@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <utility>
 
@@ -101,9 +102,12 @@ constexpr double kSearchExtra = 1.0;
 
 // A body's passes (closing and opening kicks, drift, the rebuild check; a polyhedron's pose) and a
 // sphere-wall pair, in body pairs apart (split_pairs' unit: a sphere pair out of reach; a polyhedron
-// pair): callgrind --separate-threads on the beds (README, "One body cut").
+// pair): callgrind --separate-threads on the beds (README, "One body cut"). Recounted on the peers'
+// bed (bfd00df, 2 threads, 300 steps): a pair unit ~79.5 instructions (the walk over 8,826 pairs,
+// 8,013 touching), a sphere's passes ~114 (1.4), a sphere-wall pair in two lanes ~392 (4.9; 7.4
+// before the wall lanes, which left the floor's thread short of work).
 constexpr double kSpherePassWeight = 1.4;
-constexpr double kWallPairWeight = 7.4;
+constexpr double kWallPairWeight = 4.9;
 constexpr double kPolyhedronPassWeight = 2.9;
 // A cut's crossing work in the same units (CrossWeights), from the bed's instructions at 1 and 2
 // threads (callgrind, 300 steps): a foreign pair's kept result ~62 instructions on top of its pair
@@ -200,18 +204,19 @@ void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
   parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
 }
 
-void ContactEngine::pose(const LocalBodies& bodies, bool wait) {
-  const std::size_t n = listed_.size();
+void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait) {
+  const std::size_t n = some.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   // The arrays' addresses, copied into each thread's loop: read through the vectors, each body
   // reloaded them (Eigen's stores may alias anything), ~25 instructions a body.
   const PoseArrays arrays{bodies.position->data(), bodies.orientation->data(), bodies.shape->data(),
                           bodies.scale->data(),    shapes_.data(),             boxes_.data(),
-                          listed_.data(),          vertex_offset_.data(),      world_vertices_.data(),
+                          some.data(),             vertex_offset_.data(),      world_vertices_.data(),
                           posed_.data()};
+  wait = wait && omp_get_level() > 0;  // a region of its own ends at its own barrier
   in_team(n >= kParallelMinItems, [&] {
     const PoseArrays a = arrays;
-    const auto [first, last] = team_share(listed_, body_cut());  // the bodies this thread's walk reads most
+    const auto [first, last] = team_share(some, body_cut());  // the bodies this thread's walk reads most
     for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
     if (wait) {
 #pragma omp barrier
@@ -236,7 +241,14 @@ static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& p
   std::erase_if(pairs, [&](BodyPair p) { return !bodies.owned(p.i) && !bodies.owned(p.j); });
 }
 
-void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
+// The bodies of `now` (increasing) not in `before` (increasing).
+static std::vector<std::uint32_t> newcomers(const std::vector<std::uint32_t>& now, const std::vector<std::uint32_t>& before) {
+  std::vector<std::uint32_t> fresh;
+  std::set_difference(now.begin(), now.end(), before.begin(), before.end(), std::back_inserter(fresh));
+  return fresh;
+}
+
+void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, bool listed_posed) {
   const double range_p = settings_.skin + band_particle_;
   const double range_d = settings_.skin + band_driver_;
   free_results(body_list_);  // read by nothing from here: the new lists' results replace them
@@ -269,8 +281,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
       release(fresh.gap_at_build);  // the sphere kernel's test is the distance itself: 12 bytes a pair freed
       release(fresh.slot_gap);
     } else {
+      std::vector<std::uint32_t> posed_before = listed_posed ? std::move(listed_) : std::vector<std::uint32_t>{};
       mark_listed(bodies.size(), near, fresh_d.pairs);
-      pose(bodies);
+      pose(bodies, listed_posed ? newcomers(listed_, posed_before) : listed_);
       memory_.find(near, posed_, {bodies.position->data(), bodies.orientation->data(), core_reach_.data()}, range_p,
                    fresh);
     }
@@ -298,6 +311,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
   driver_list_ = std::move(fresh_d);
   driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
   weigh_bodies();
+  // Cut for the team that will walk the list (forces' region), here on one thread: the loop then
+  // meets for no cut (two barriers a rebuild). Another team recuts in the loop.
+  direct_.cut(body_list_, bodies.size() >= kParallelMinItems ? omp_get_max_threads() : 1);
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
   if (spheres_only_)
@@ -306,7 +322,6 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers) {
     mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
-  mark_drivers(bodies, drivers);
   must_rebuild_ = false;
   ++stats_.rebuilds;
   stats_.body_pairs = body_list_.size();
@@ -322,35 +337,31 @@ std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodi
   return EqualSpheres{radius_[0], mass[0]};
 }
 
-// Body-driver pairs within reach of owned bodies, in (body, driver) order; each body is tested in parallel.
-std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const {
+// Body-driver pairs within reach of owned bodies, in (body, driver) order; each body is tested in
+// parallel. The same pass marks the drivers for driver_shift (their placements, and the lever:
+// the farthest body reach from a driver's centre), so a rebuild meets once for both.
+std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) {
   const std::size_t n = bodies.size(), m = drivers.size();
+  drivers_at_build_.clear();
+  std::vector<Vec3> centers;  // m
+  for (std::uint32_t j = 0; j < m; ++j) {
+    drivers_at_build_.push_back({drivers[j], drivers[j].active});
+    centers.push_back(drivers.center(j));
+  }
   std::vector<std::uint8_t> is_near(n * m);
+  std::vector<double> lever(n, 0.0);  // m, per body: the max is exact in any order
   const std::vector<Vec3>& position = *bodies.position;
   parallel_for(n, [&](std::size_t i) {
+    for (const Vec3& c : centers) lever[i] = std::max(lever[i], (position[i] - c).norm() + bounding_[i]);
     if (!bodies.owned(i)) return;  // zeros: a ghost's driver contacts are its owner's
     for (std::uint32_t j = 0; j < m; ++j) is_near[i * m + j] = drivers.near(j, position[i], bounding_[i] + range);
   });
+  driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
   std::vector<BodyPair> pairs;
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t j = 0; j < m; ++j)
       if (is_near[i * m + j]) pairs.push_back({i, j});
   return pairs;
-}
-
-void ContactEngine::mark_drivers(const LocalBodies& bodies, const Drivers& drivers) {
-  drivers_at_build_.clear();
-  std::vector<Vec3> centers;  // m
-  for (std::uint32_t j = 0; j < drivers.size(); ++j) {
-    drivers_at_build_.push_back({drivers[j], drivers[j].active});
-    centers.push_back(drivers.center(j));
-  }
-  std::vector<double> lever(bodies.size(), 0.0);  // m, per body: the max is exact in any order
-  const std::vector<Vec3>& position = *bodies.position;
-  parallel_for(bodies.size(), [&](std::size_t b) {
-    for (const Vec3& c : centers) lever[b] = std::max(lever[b], (position[b] - c).norm() + bounding_[b]);
-  });
-  driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
 }
 
 // Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
@@ -421,7 +432,7 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
 
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
                            AfterPairs then) {
-  if (pose_bodies && !spheres_only_) pose(bodies);  // spheres: by measure_motion, where a driver pair reads the pose
+  if (pose_bodies && !spheres_only_) pose(bodies, listed_);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
                       bodies.angular_velocity_end->data(), bodies.mass->data(), any_sphere_};

@@ -98,9 +98,9 @@ class ContactEngine {
   void measure_motion(const LocalBodies& bodies, bool watched = false);
   // Polyhedra's poses for this step's forces, by every thread of the team after measure_motion,
   // each its share of the cut (the bodies its opening pass moved), with no barrier: the region's
-  // end is the one forces(..., pose_bodies false) needs. A rebuild then poses its own list again.
+  // end is the one forces(..., pose_bodies false) needs. A rebuild then poses its newly listed bodies.
   void pose_before_forces(const LocalBodies& bodies) {
-    if (!spheres_only_) pose(bodies, false);
+    if (!spheres_only_) pose(bodies, listed_, false);
   }
   // True, with `watch` set, where the trigger's test of every local body can run in the pass
   // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
@@ -111,7 +111,9 @@ class ContactEngine {
   // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
   void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);
   bool stale_after_measure(const LocalBodies& bodies, const Drivers& drivers);
-  void rebuild(const LocalBodies& bodies, const Drivers& drivers);  // outside any region: it opens its own
+  // Outside any region: it opens its own. `listed_posed`: pose_before_forces posed the last
+  // lists' bodies at these positions this step, so only the newly listed bodies are posed here.
+  void rebuild(const LocalBodies& bodies, const Drivers& drivers, bool listed_posed = false);
   // What follows forces() in its parallel region: it ends at a barrier only before a read of the sums.
   enum class AfterPairs {
     sum_bodies,   // forces() adds every body's sum to its force and torque (reduce_bodies)
@@ -132,7 +134,7 @@ class ContactEngine {
   // Every body's sum was taken by force_sums (each cleared): the next loop starts from them.
   void sums_taken() { direct_.taken(); }
   // The bodies' cut of the body pairs' loop (pair_split.hpp), for the step's passes over bodies:
-  // each thread then moves the bodies of its chunk's pairs as i. None before the loop first ran.
+  // each thread then moves the bodies of its chunk's pairs as i. None before the first rebuild.
   TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
   // The body pairs' loop cut from the next step on with these shares of its work (per thread,
   // summing to 1), kept instead of following the threads' pace: no result may change (tests).
@@ -179,7 +181,8 @@ class ContactEngine {
   PairList& driver_pairs() { return driver_list_; }
 
  private:
-  void pose(const LocalBodies& bodies, bool wait = true);  // `wait`: a barrier at its end
+  // The bodies `some` (increasing: listed_ or some of it), each thread its share of the cut.
+  void pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait = true);  // `wait`: a barrier at its end
   void keep_sphere_poses(const LocalBodies& bodies, bool needed);
   // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.
   PosedBody sphere_pose(const LocalBodies& bodies, std::size_t b) const {
@@ -196,8 +199,7 @@ class ContactEngine {
   void flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs, const std::vector<std::uint8_t>* ghost);
   void flush_ended(const std::vector<std::uint8_t>* ghost);
   void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
-  std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) const;
-  void mark_drivers(const LocalBodies& bodies, const Drivers& drivers);
+  std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range);  // and marks them
   void weigh_bodies();  // direct_.body_weight, at a rebuild
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
 

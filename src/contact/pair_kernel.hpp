@@ -271,9 +271,9 @@ struct RigidMotion {
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 
 // Evaluates the candidate feature pairs of pair k (slots [s0, s1)) into scratch.found and drops
-// the shadowed ones. Out of line, as the law loop: one function for both runs short of registers.
+// the shadowed ones. Inline in pair_forces (its own call cost ~17 instructions a touching cube pair, issue 19).
 template <class Partner>
-[[gnu::noinline]] void find_contacts(double band, const PosedBody& a, const Partner& partner, PairList& list,
+[[gnu::always_inline]] inline void find_contacts(double band, const PosedBody& a, const Partner& partner, PairList& list,
                                      std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
   scratch.found.clear();
@@ -420,7 +420,7 @@ template <class Parts, class Partner>
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
 // their forces, torques and energy to `totals`.
 template <class Parts, class Partner>
-[[gnu::noinline]] void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
+[[gnu::always_inline]] inline void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, double r_star,
                                  PairTotals& totals) {
   using Normal = typename Parts::Normal;

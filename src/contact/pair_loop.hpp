@@ -281,16 +281,7 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
   if (direct.split.threads != threads) {
 #pragma omp barrier
 #pragma omp single
-    {  // every thread has read the old count (the barrier) before this one changes it
-      if (direct.follow_pace) direct.shares = paced_shares(direct.split, direct.pace, direct.shares);
-      if (direct.shares.size() != std::size_t(threads)) direct.shares.clear();  // another team: even shares
-      split_pairs(list.pairs, list.touching, direct.body_weight, direct.sums.size(), threads, direct.split,
-                  direct.shares, direct.cross);
-      direct.foreign.resize(direct.split.foreign_side.size());
-      direct.pace.assign(threads > 1 ? threads : 0, ThreadPace{});
-      const bool zero = !direct.zero.empty() && direct.zero[0].on;  // the flags agree between loops
-      direct.zero.assign(threads, SumsZero{zero});
-    }
+    direct.cut(list, threads);  // every thread has read the old count (the barrier) before this one changes it
   }
   const int t = omp_get_thread_num();
   if (!std::exchange(direct.zero[t].on, false)) pair_loop_detail::clear_home_sums(direct, t);

@@ -168,4 +168,14 @@ std::vector<double> paced_shares(const PairSplit& split, const std::vector<Threa
   return next;
 }
 
+void DirectSums::cut(const PairList& list, int threads) {
+  if (follow_pace) shares = paced_shares(split, pace, shares);
+  if (shares.size() != std::size_t(threads)) shares.clear();  // another team: even shares
+  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross);
+  foreign.resize(split.foreign_side.size());
+  pace.assign(threads > 1 ? threads : 0, ThreadPace{});
+  const bool on = !zero.empty() && zero[0].on;  // the flags agree between loops
+  zero.assign(threads, SumsZero{on});
+}
+
 }  // namespace polydem

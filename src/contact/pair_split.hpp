@@ -128,6 +128,9 @@ struct DirectSums {
     zero.assign(1, SumsZero{true});
   }
   LateTerms late_terms() const { return {split.late_begin.data(), split.late.data(), foreign.data()}; }
+  // Cuts `list` for a team of `threads` (split_pairs, at the threads' pace): by the loop when its
+  // team is not the cut's, or ahead by the rebuild, outside any region (no barrier in the loop).
+  void cut(const PairList& list, int threads);
 };
 
 }  // namespace polydem

@@ -189,7 +189,7 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
 // Evaluates kernel K with the bodies swapped (edge_vertex from vertex_edge, face_vertex from
 // vertex_face) and turns the normal back to point from B to A; gap and point are symmetric.
 template <FeatureKernel K>
-bool swapped(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
+[[gnu::flatten]] bool swapped(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
   if (!K(B, A, b, a, max_gap, out)) return false;
   out.normal = -out.normal;
   return true;

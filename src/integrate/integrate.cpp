@@ -16,24 +16,6 @@ using integrate_detail::predict_body;
 // Relative tolerance on principal moments for the isotropic fast path.
 constexpr double kIsotropicTolerance = 1e-12;
 
-// Body i into the group of its rotation path; shapes null: no sphere path.
-void add_rotor(const Bodies& b, std::size_t i, const std::vector<Shape>* shapes, RotorGroups& groups) {
-  if (shapes && keeps_no_orientation((*shapes)[b.shape[i]], b.inertia[i]))
-    groups.spheres.push_back(i);
-  else
-    (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
-}
-
-// Sets spheres_alike and spheres_in_order once the groups are made.
-void mark_spheres(const Bodies& b, RotorGroups& groups) {
-  const std::vector<std::size_t>& s = groups.spheres;
-  groups.spheres_alike = groups.spheres_in_order = !s.empty();
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    groups.spheres_alike &= b.mass[s[k]] == b.mass[s[0]] && b.inertia[s[k]] == b.inertia[s[0]];
-    groups.spheres_in_order &= s[k] == k;
-  }
-}
-
 }  // namespace
 
 bool is_isotropic(const Vec3& inertia) {
@@ -47,22 +29,15 @@ bool keeps_no_orientation(const Shape& shape, const Vec3& inertia) {
 
 RotorGroups group_rotors(const Bodies& b) {
   RotorGroups groups;
-  for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, nullptr, groups);
-  mark_spheres(b, groups);
+  for (std::size_t i = 0; i < b.size(); ++i) integrate_detail::add_rotor(b, i, nullptr, groups);
+  integrate_detail::mark_spheres(b, groups);
   return groups;
 }
 
 RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes) {
   RotorGroups groups;
-  for (std::size_t i = 0; i < b.size(); ++i) add_rotor(b, i, &shapes, groups);
-  mark_spheres(b, groups);
-  return groups;
-}
-
-RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids, const std::vector<Shape>& shapes) {
-  RotorGroups groups;
-  for (std::uint32_t i : ids) add_rotor(b, i, &shapes, groups);
-  mark_spheres(b, groups);
+  for (std::size_t i = 0; i < b.size(); ++i) integrate_detail::add_rotor(b, i, &shapes, groups);
+  integrate_detail::mark_spheres(b, groups);
   return groups;
 }
 

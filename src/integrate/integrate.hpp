@@ -60,8 +60,10 @@ bool keeps_no_orientation(const Shape& shape, const Vec3& inertia);
 // takes Rotor::sphere (every orientation is integrated).
 RotorGroups group_rotors(const Bodies& b);
 RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes);
-// The same for the bodies `ids` alone (a rank's owned bodies), in their order.
-RotorGroups group_rotors(const Bodies& b, const std::vector<std::uint32_t>& ids, const std::vector<Shape>& shapes);
+// The same for the rows `rows` alone of `b` (Bodies, or a rank's LocalStore and its owned
+// bodies' rows), in their order.
+template <class B>
+RotorGroups group_rotors(const B& b, const std::vector<std::uint32_t>& rows, const std::vector<Shape>& shapes);
 
 // Sets the orientation of groups.spheres to the identity, turning L into the world frame
 // (L_world = q L_body, w unchanged): at the start and after a state is read (checkpoints of
@@ -192,6 +194,36 @@ void over_rotor_groups(B& b, const RotorGroups& groups, const Body& body, TeamCu
     over_group<Rotor::sphere, Walk::ids>(arrays_of(b), groups.spheres, body, sphere_wait, cut);
   over_group<Rotor::isotropic, Walk::ids>(arrays_of(b), groups.isotropic, body, wait && !asymmetric, cut);
   over_group<Rotor::asymmetric, Walk::ids>(arrays_of(b), groups.asymmetric, body, wait, cut);
+}
+
+namespace integrate_detail {
+// Row i of `b` into the group of its rotation path; shapes null: no sphere path.
+template <class B>
+void add_rotor(const B& b, std::size_t i, const std::vector<Shape>* shapes, RotorGroups& groups) {
+  if (shapes && keeps_no_orientation((*shapes)[b.shape[i]], b.inertia[i]))
+    groups.spheres.push_back(i);
+  else
+    (is_isotropic(b.inertia[i]) ? groups.isotropic : groups.asymmetric).push_back(i);
+}
+
+// Sets spheres_alike and spheres_in_order once the groups are made.
+template <class B>
+void mark_spheres(const B& b, RotorGroups& groups) {
+  const std::vector<std::size_t>& s = groups.spheres;
+  groups.spheres_alike = groups.spheres_in_order = !s.empty();
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    groups.spheres_alike &= b.mass[s[k]] == b.mass[s[0]] && b.inertia[s[k]] == b.inertia[s[0]];
+    groups.spheres_in_order &= s[k] == k;
+  }
+}
+}  // namespace integrate_detail
+
+template <class B>
+RotorGroups group_rotors(const B& b, const std::vector<std::uint32_t>& rows, const std::vector<Shape>& shapes) {
+  RotorGroups groups;
+  for (std::uint32_t i : rows) integrate_detail::add_rotor(b, i, &shapes, groups);
+  integrate_detail::mark_spheres(b, groups);
+  return groups;
 }
 
 namespace integrate_detail {

@@ -144,7 +144,8 @@ void CellList::collect_pairs(double skin, std::size_t n) {
       }
     };
     // Dynamic: clustered scenes put very unequal work in each cell; the merge restores order.
-#pragma omp for schedule(dynamic, 256)
+    // No barrier of its own: the region's end follows.
+#pragma omp for schedule(dynamic, 256) nowait
     for (std::size_t flat = 0; flat < total_cells; ++flat) {
       std::size_t level = 0;
       while (flat >= cell_offset[level + 1]) ++level;

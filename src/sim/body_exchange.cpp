@@ -11,7 +11,8 @@ struct Writer {
   char* at;
   void field(const Vec3& v) { doubles(v.data(), 3); }
   void field(const Quat& q) { doubles(q.coeffs().data(), 4); }
-  void field(std::uint32_t id) { std::memcpy(at, &id, sizeof id); at += sizeof id; }
+  template <class T>  // a scalar: an id, a shape or group index, a double
+  void field(T v) { std::memcpy(at, &v, sizeof v); at += sizeof v; }
   void doubles(const double* d, std::size_t n) { std::memcpy(at, d, n * sizeof(double)); at += n * sizeof(double); }
 };
 
@@ -19,7 +20,8 @@ struct Reader {
   const char* at;
   void field(Vec3& v) { doubles(v.data(), 3); }
   void field(Quat& q) { doubles(q.coeffs().data(), 4); }
-  void field(std::uint32_t& id) { std::memcpy(&id, at, sizeof id); at += sizeof id; }
+  template <class T>
+  void field(T& v) { std::memcpy(&v, at, sizeof v); at += sizeof v; }
   void doubles(double* d, std::size_t n) { std::memcpy(d, at, n * sizeof(double)); at += n * sizeof(double); }
 };
 
@@ -48,27 +50,53 @@ void owned_fields(Io& io, B& b, std::size_t i) {
   io.field(b.torque[i]);
 }
 
+// What a receiver cannot know of a body it did not hold: a ghost's constants (contacts read
+// shape, scale and mass; output group and user id), and an owner's inertia too.
+template <class Io, class B>
+void ghost_constants(Io& io, B& b, std::size_t i) {
+  io.field(b.shape[i]);
+  io.field(b.scale[i]);
+  io.field(b.mass[i]);
+  io.field(b.group[i]);
+  io.field(b.id[i]);
+}
+
+template <class Io, class B>
+void mover_fields(Io& io, B& b, std::size_t i) {
+  io.field(b.global_id[i]);
+  owned_fields(io, b, i);
+  ghost_constants(io, b, i);
+  io.field(b.inertia[i]);
+}
+
+// Appends n rows to `store` to be read into; returns the first.
+std::size_t grown(LocalStore& store, std::size_t n) {
+  const std::size_t first = store.size();
+  store.resize(first + n);
+  return first;
+}
+
 }  // namespace
 
-std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {
-  std::vector<char> bytes(ids.size() * kGhostBytes);
-  pack_ghosts(bodies, ids, bytes.data());
+std::vector<char> pack_ghosts(const LocalStore& store, const std::vector<std::uint32_t>& rows) {
+  std::vector<char> bytes(rows.size() * kGhostBytes);
+  Writer w{bytes.data()};
+  for (std::uint32_t k : rows) {
+    ghost_fields(w, store, k);
+    ghost_constants(w, store, k);
+  }
   return bytes;
 }
 
-void pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids, char* into) {
-  Writer w{into};
-  for (std::uint32_t b : ids) ghost_fields(w, bodies, b);
-}
-
-void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies) {
+void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, LocalStore& store) {
   Reader r{bytes.data()};
-  for (std::uint32_t b : ids) ghost_fields(r, bodies, b);
-}
-
-void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& local, LocalStore& store) {
-  Reader r{bytes.data()};
-  for (std::uint32_t k : local) ghost_fields(r, store, k);
+  const std::size_t first = grown(store, ids.size());
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    store.global_id[first + k] = ids[k];
+    store.ghost[first + k] = 1;
+    ghost_fields(r, store, first + k);
+    ghost_constants(r, store, first + k);
+  }
 }
 
 std::size_t motion_bytes(bool turning) { return (turning ? 16 : 12) * sizeof(double); }  // 4 vectors (1 quaternion)
@@ -100,6 +128,23 @@ std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32
     owned_fields(w, bodies, b);
   }
   return bytes;
+}
+
+std::vector<char> pack_movers(const LocalStore& store, const std::vector<std::uint32_t>& rows) {
+  std::vector<char> bytes(rows.size() * kMoverBytes);
+  Writer w{bytes.data()};
+  for (std::uint32_t k : rows) mover_fields(w, store, k);
+  return bytes;
+}
+
+void unpack_movers(const std::vector<char>& bytes, LocalStore& store) {
+  Reader r{bytes.data()};
+  const std::size_t n = bytes.size() / kMoverBytes;
+  const std::size_t first = grown(store, n);
+  for (std::size_t k = first; k < first + n; ++k) {
+    store.ghost[k] = 0;
+    mover_fields(r, store, k);
+  }
 }
 
 std::vector<std::uint32_t> unpack_owned(const std::vector<char>& bytes, Bodies& bodies) {

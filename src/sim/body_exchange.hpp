@@ -1,8 +1,10 @@
 #pragma once
-// Body state as bytes between ranks. A ghost parcel carries what the contact stage reads and
-// changes (pose and velocities, 152 bytes a body; at a rebuild) in the order of a GhostPlan
-// list both ranks hold, a motion parcel the same less what the receiver knows (each step); an
-// owned-state record carries all that integration changes (224 bytes and the id), for the gathers that give every rank the whole state (rebuilds, output).
+// Body state as bytes between ranks. At a rebuild a mover's parcel carries all its new owner's
+// store holds of it (state and constants), and a ghost parcel what the contact stage reads
+// and output names (pose, velocities, shape, scale, mass, group, user id) in the order of a
+// GhostPlan list both ranks hold; each step a motion parcel carries the ghosts' motion alone;
+// an owned-state record carries all that integration changes (224 bytes and the id), for the
+// gathers that give every rank the whole state (output, drag and fluid forces).
 #include <cstdint>
 #include <vector>
 
@@ -11,16 +13,25 @@
 
 namespace polydem {
 
-constexpr std::size_t kGhostBytes = 19 * sizeof(double);  // 5 vectors, 1 quaternion
+// A ghost's constants: shape, scale, mass, group, user id (4 + 8 + 8 + 4 + 4 bytes).
+constexpr std::size_t kGhostConstantBytes = 2 * sizeof(double) + 2 * sizeof(int) + sizeof(std::uint32_t);
+// A ghost at a rebuild: 5 vectors, 1 quaternion and its constants (180 bytes).
+constexpr std::size_t kGhostBytes = 19 * sizeof(double) + kGhostConstantBytes;
 constexpr std::size_t kOwnedBytes = sizeof(std::uint32_t) + 28 * sizeof(double);  // id, 8 vectors, 1 quaternion
+// A body changing owner: its owned record, its ghost constants and its inertia (280 bytes).
+constexpr std::size_t kMoverBytes = kOwnedBytes + kGhostConstantBytes + 3 * sizeof(double);
 
-// The ghost state of bodies `ids`, in that order.
-std::vector<char> pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
-void pack_ghosts(const Bodies& bodies, const std::vector<std::uint32_t>& ids, char* into);  // ids.size() x kGhostBytes
-// Writes a parcel of pack_ghosts(…, ids) into the bodies `ids`, or into a rank's local store
-// at the same bodies' local indices `local`.
-void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, Bodies& bodies);
-void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& local, LocalStore& store);
+// The ghost state and constants of a store's rows `rows`, in that order.
+std::vector<char> pack_ghosts(const LocalStore& store, const std::vector<std::uint32_t>& rows);
+// Appends the bodies of a pack_ghosts parcel to `store` as ghosts of global ids `ids` (the
+// parcel's order); their integration state (angular momentum, force, torque) and inertia zero.
+void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32_t>& ids, LocalStore& store);
+
+// The owned bodies at a store's rows `rows` changing owner: everything the store holds of
+// each (global id, integration state, constants).
+std::vector<char> pack_movers(const LocalStore& store, const std::vector<std::uint32_t>& rows);
+// Appends the bodies of a pack_movers parcel to `store` as owned bodies, bit for bit.
+void unpack_movers(const std::vector<char>& bytes, LocalStore& store);
 
 // A step's ghost parcel between rebuilds (the ghosts' motion): the velocities, and the
 // orientation when bodies turn (`turning` false: a spheres-only scene, every orientation the

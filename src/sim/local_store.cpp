@@ -1,6 +1,10 @@
 #include "sim/local_store.hpp"
 
 #include <algorithm>
+#include <numeric>
+#include <type_traits>
+
+#include "sim/body_rows.hpp"
 
 namespace polydem {
 
@@ -27,22 +31,22 @@ void copy_motion(To& to, std::size_t t, const From& from, std::size_t f) {
   to.torque[t] = from.torque[f];
 }
 
+// A new row's value (Eigen's vectors are not zeroed by their constructor): a ghost landed from
+// a parcel keeps zero inertia, angular momentum, force and torque.
+template <class T>
+T blank() {
+  if constexpr (std::is_same_v<T, Vec3>) return Vec3::Zero();
+  else if constexpr (std::is_same_v<T, Quat>) return Quat::Identity();
+  else return T{};
+}
+
 }  // namespace
 
 void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost) {
+  resize(ids.size());
   global_id = std::move(ids);
   ghost = std::move(is_ghost);
   const std::size_t n = global_id.size();
-  shape.resize(n);
-  scale.resize(n);
-  mass.resize(n);
-  inertia.resize(n);
-  group.resize(n);
-  id.resize(n);
-  for (auto* v : {&position, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end, &angular_momentum,
-                  &force, &torque})
-    v->resize(n);
-  orientation.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t g = global_id[k];
     shape[k] = all.shape[g];
@@ -55,10 +59,26 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
   }
 }
 
-void LocalStore::publish(Bodies& all, bool with_ghosts) const {
+void LocalStore::append(const LocalStore& from, const std::vector<std::uint32_t>& rows) {
+  with_arrays(from, [&](auto& to, const auto& at) {
+    for (std::uint32_t r : rows) to.push_back(at[r]);
+  });
+}
+
+void LocalStore::sort_by_id() {
+  std::vector<std::uint32_t> order(size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return global_id[a] < global_id[b]; });
+  with_arrays(*this, [&](auto& v, auto&) { v = subset(v, order); });
+}
+
+void LocalStore::resize(std::size_t n) {
+  with_arrays(*this, [n](auto& v, auto&) { v.resize(n, blank<typename std::decay_t<decltype(v)>::value_type>()); });
+}
+
+void LocalStore::publish(Bodies& all) const {
   for (std::size_t k = 0; k < global_id.size(); ++k)
     if (!ghost[k]) copy_motion(all, global_id[k], *this, k);
-    else if (with_ghosts) copy_pose(all, global_id[k], *this, k);
 }
 
 void LocalStore::pull(const Bodies& all) {

@@ -6,8 +6,9 @@
 // what contacts read (pose, velocities, shape, scale, mass, global id) and output (group, user
 // id), written where its owner's parcel lands (sim/ghost_plan.hpp). The set changes only at
 // list rebuilds. Its fields are named as Bodies', so a rank's writers, energies and checks read
-// it through the same templates (body_rows.hpp). The global Bodies arrays get the owned bodies'
-// state only where a gather reads it (publish).
+// it through the same templates (body_rows.hpp). A rebuild makes the next store from the old
+// one and the parcels that land (sim/rank_migration.hpp); the global Bodies arrays get the owned
+// bodies' state only where a gather reads it (publish).
 #include <cstdint>
 #include <vector>
 
@@ -36,16 +37,30 @@ struct LocalStore {
   // Holds the bodies `ids` of `all` (increasing), ghosts where `is_ghost` is 1, their state
   // (forces included) copied.
   void select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost);
-  // The owned bodies' integration state into `all` at their global ids (before a gather,
-  // output or a rebuild reads the global arrays), and the ghosts' pose and velocities
-  // `with_ghosts` (a rebuild's migration reads a pair's other body); or back from it (pull:
-  // after something wrote them).
-  void publish(Bodies& all, bool with_ghosts = false) const;
+  // A rebuild's store from parcels (sim/rank_migration.hpp): rows added, `from`'s rows `rows`
+  // (every field), then all put in increasing global id.
+  void append(const LocalStore& from, const std::vector<std::uint32_t>& rows);
+  void sort_by_id();
+  void resize(std::size_t n);
+  std::size_t size() const { return global_id.size(); }
+  // The owned bodies' integration state into `all` at their global ids (a gather:
+  // RankContacts::sync_bodies); or back from it (pull: after something wrote them).
+  void publish(Bodies& all) const;
   void pull(const Bodies& all);
   // The local index of the body of global id `g`, which the store holds.
   std::uint32_t local_of(std::uint32_t g) const;
   // The owned bodies' local indices (increasing global id).
   std::vector<std::uint32_t> owned_rows() const;
+  // Calls f(mine, theirs) on each per-body array of this store and of `other` (the same field).
+  template <class Other, class F>
+  void with_arrays(Other& other, F&& f) {
+    f(global_id, other.global_id), f(ghost, other.ghost), f(position, other.position);
+    f(velocity, other.velocity), f(angular_velocity, other.angular_velocity);
+    f(velocity_end, other.velocity_end), f(angular_velocity_end, other.angular_velocity_end);
+    f(orientation, other.orientation), f(angular_momentum, other.angular_momentum), f(shape, other.shape);
+    f(scale, other.scale), f(mass, other.mass), f(inertia, other.inertia), f(group, other.group), f(id, other.id);
+    f(force, other.force), f(torque, other.torque);
+  }
   LocalBodies view() {
     return {&position, &orientation, &velocity, &angular_velocity, &velocity_end, &angular_velocity_end,
             &shape,    &scale,       &mass,     &ghost,            &force,        &torque};

@@ -76,37 +76,39 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   ++cuts_;
   set_load_share(part_loads(cut_, bodies.position, std::vector<double>(bodies.size(), 1.0)));
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
-  adopt(bodies, whole.body_pairs(), whole.driver_pairs());
+  store_.select(bodies, plan_.local, plan_.ghost);
+  adopt(whole.body_pairs(), whole.driver_pairs());
 }
 
-// A rebuild the motion asks for: each rank's owned bodies and ghosts are current, no other;
-// the movers and their histories go to their new owners, then the ghosts to their holders,
-// point to point (sim/rank_migration.hpp).
-void RankContacts::migrate_bodies(Bodies& bodies) {
-  publish(bodies);  // what moves, and the ghosts' centres: a pair's slots go to both owners
-  long bad = -1;
-  for (std::uint32_t b : plan_.owned)  // increasing ids: the first is the smallest
-    if (!bodies.position[b].allFinite()) {
-      bad = b;
-      break;
-    }
-  bad = least_over_ranks(link_, bad);
+// A rebuild the motion asks for: each rank's owned bodies and ghosts are current in its store,
+// no other; the movers, with their constants and histories, go to their new owners, then the
+// ghosts to their holders, point to point (sim/rank_migration.hpp): no read of the global arrays.
+void RankContacts::migrate_bodies() {
+  const long bad = least_over_ranks(link_, first_non_finite_position());
   if (bad >= 0) throw non_finite_position(std::size_t(bad));  // the same message on every rank
-  recut_if_unbalanced(bodies);
-  Handover h = migrate(link_, cut_, plan_.owned, active_slots(engine_->body_pairs(), store_, false),
-                       active_slots(engine_->driver_pairs(), store_, true), bodies);
-  plan_ = share_ghosts(link_, cut_, std::move(h.owned), halo_, bodies);
-  adopt(bodies, h.body_table, h.driver_table);
+  const std::vector<std::uint32_t> owned_rows = store_.owned_rows();
+  recut_if_unbalanced(owned_rows);
+  Handover h = migrate(link_, cut_, store_, active_slots(engine_->body_pairs(), store_, false),
+                       active_slots(engine_->driver_pairs(), store_, true));
+  store_ = std::move(h.owned);
+  plan_ = share_ghosts(link_, cut_, halo_, store_);
+  adopt(h.body_table, h.driver_table);
 }
 
-// Lists this rank's bodies (plan_) and hands their histories over from `body_table` and
-// `driver_table` (global ids; pairs of other bodies are left out).
-void RankContacts::adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table) {
+// The smallest id of an owned body whose centre is not finite, or -1.
+long RankContacts::first_non_finite_position() const {
+  for (std::size_t k = 0; k < store_.size(); ++k)  // increasing ids: the first is the smallest
+    if (!store_.ghost[k] && !store_.position[k].allFinite()) return long(store_.global_id[k]);
+  return -1;
+}
+
+// Lists this rank's bodies (plan_, their state in store_) and hands their histories over from
+// `body_table` and `driver_table` (global ids; pairs of other bodies are left out).
+void RankContacts::adopt(const PairList& body_table, const PairList& driver_table) {
   ghost_local_.clear();
   for (std::size_t k = 0; k < plan_.local.size(); ++k)
     if (plan_.ghost[k]) ghost_local_.push_back(std::uint32_t(k));
-  store_.select(bodies, plan_.local, plan_.ghost);
-  owned_rotors_ = local_rotors(group_rotors(bodies, plan_.owned, shapes_));
+  owned_rotors_ = with_runs(group_rotors(store_, store_.owned_rows(), shapes_));
   size_parcels();
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
   engine_->body_pairs() = localise(body_table, store_.global_id, false);
@@ -145,7 +147,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
       sync_bodies(bodies);  // a resume's first drift moved each rank's bodies of the cut before it
       redistribute(bodies, whole);
     } else {
-      migrate_bodies(bodies);
+      migrate_bodies();
     }
     forced_ = rebuild_asked_ = false;
     ++rebuilds_;
@@ -196,14 +198,6 @@ ForceSums RankContacts::closing_sums() {
   ForceSums sums = engine_->force_sums(store_.view());
   if (gravity_only_) sums.gravity_mass = store_.mass.data(), sums.gravity = gravity_;
   return sums;
-}
-
-// The owned bodies' groups by local index (group_rotors gave global ids: the same order), walked
-// by their runs between the ghosts (no id read a body: +20% of the opening pass's instructions).
-RotorGroups RankContacts::local_rotors(RotorGroups g) const {
-  for (auto* ids : {&g.spheres, &g.isotropic, &g.asymmetric})
-    for (std::size_t& i : *ids) i = store_.local_of(std::uint32_t(i));
-  return with_runs(std::move(g));
 }
 
 void RankContacts::sums_taken() {

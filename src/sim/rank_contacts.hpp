@@ -11,8 +11,9 @@
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
 // reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
-// bodies in its LocalStore (one copy of their state); it keeps arrays for all bodies, which get
-// its owned bodies' state only where they are read (publish: gathers, output, rebuilds).
+// bodies in its LocalStore (one copy of their state), and a rebuild after the first sends and
+// lands bodies store to store; it keeps arrays for all bodies, which get the state only where a
+// gather writes it (sync_bodies: output with probes or fluid, drag and fluid forces, the start).
 #include <memory>
 #include <vector>
 
@@ -66,10 +67,9 @@ class RankContacts {
   bool watch_motion(PointWatch& watch);
   void sums_taken();
   void add_sums();  // the same with no kick: each owned body's sum added to its force
-  // The owned bodies' state into `bodies` (the steps keep them in the store): before a gather
-  // reads `bodies`, and store_from_bodies after something else wrote them (drag and fluid
-  // forces). A rank's own writers and checks read the store (with_output_rows).
-  void publish(Bodies& bodies) const { store_.publish(bodies, true); }
+  // The owned bodies' state back from `bodies` after something else wrote them (drag and fluid
+  // forces, after sync_bodies). A rank's own writers and checks read the store (with_output_rows);
+  // `bodies` gets the state only where a gather writes it (sync_bodies).
   void store_from_bodies(const Bodies& bodies) { store_.pull(bodies); }
   // Whether the next steps share the drivers' reactions (the servo and the driver work of a
   // moving driver read them each step, output only at its rows); when not, only the contact
@@ -152,16 +152,16 @@ class RankContacts {
   bool lists_stale(const Drivers& drivers);
   bool exchange_deciding(const Drivers& drivers, double dt);
   void redistribute(const Bodies& bodies, const ContactEngine& whole);
-  void migrate_bodies(Bodies& bodies);
-  void adopt(const Bodies& bodies, const PairList& body_table, const PairList& driver_table);
+  void migrate_bodies();
+  long first_non_finite_position() const;
+  void adopt(const PairList& body_table, const PairList& driver_table);
   std::vector<std::uint64_t> owned_weights() const;
-  std::vector<double> summed_loads(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
-  void recut_if_unbalanced(const Bodies& bodies);
-  std::vector<char> cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const;
+  std::vector<double> summed_loads(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
+  void recut_if_unbalanced(const std::vector<std::uint32_t>& rows);
+  std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
   void exchange_ghosts(double dt);
   void unpack_parcels(double dt);
-  RotorGroups local_rotors(RotorGroups global) const;
   ForceSums closing_sums();
   void size_parcels();
   void share_results(Drivers& drivers, bool rebuilt);

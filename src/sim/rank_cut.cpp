@@ -29,23 +29,24 @@ std::vector<std::uint64_t> RankContacts::owned_weights() const {
   return w;
 }
 
-// Each part's load under cut_ at the owned bodies' centres now, summed over the ranks (exact: integers).
-std::vector<double> RankContacts::summed_loads(const Bodies& bodies, const std::vector<std::uint64_t>& w) const {
+// Each part's load under cut_ at the owned bodies' centres now (their store rows `rows`), summed over the ranks (exact: integers).
+std::vector<double> RankContacts::summed_loads(const std::vector<std::uint32_t>& rows,
+                                              const std::vector<std::uint64_t>& w) const {
   std::vector<std::uint64_t> mine(link_.ranks(), 0);
-  for (std::size_t k = 0; k < w.size(); ++k) mine[cut_.owner(bodies.position[plan_.owned[k]])] += w[k];
+  for (std::size_t k = 0; k < w.size(); ++k) mine[cut_.owner(store_.position[rows[k]])] += w[k];
   const std::vector<std::uint64_t> all = link_.sum(mine);
   return std::vector<double>(all.begin(), all.end());
 }
 
 // Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
 // bodies change owner); past it, cuts again from a sample of the owned bodies (cut_sample).
-void RankContacts::recut_if_unbalanced(const Bodies& bodies) {
+void RankContacts::recut_if_unbalanced(const std::vector<std::uint32_t>& rows) {
   const std::vector<std::uint64_t> w = owned_weights();
-  std::vector<double> loads = summed_loads(bodies, w);
+  std::vector<double> loads = summed_loads(rows, w);
   if (imbalance(loads) > kRecutImbalance) {
     std::vector<Vec3> x;
     std::vector<double> weight;
-    for (const std::vector<char>& from : link_.all_gather(cut_sample(bodies, w))) {
+    for (const std::vector<char>& from : link_.all_gather(cut_sample(rows, w))) {
       std::size_t at = 0;
       for (const CutPoint& c : read_section<CutPoint>(from, at)) {
         x.push_back(get(c.x));
@@ -53,7 +54,7 @@ void RankContacts::recut_if_unbalanced(const Bodies& bodies) {
       }
     }
     cut_ = cut_domain(x, weight, link_.ranks());
-    loads = summed_loads(bodies, w);
+    loads = summed_loads(rows, w);
     ++cuts_;
   }
   set_load_share(loads);
@@ -62,14 +63,15 @@ void RankContacts::recut_if_unbalanced(const Bodies& bodies) {
 // The owned bodies as runs of consecutive ones (increasing id), each at its first body's
 // centre with the run's weight: at most kCutSample points over all ranks (at least
 // kCutSampleRank a rank), every body itself while they are fewer.
-std::vector<char> RankContacts::cut_sample(const Bodies& bodies, const std::vector<std::uint64_t>& w) const {
-  const std::size_t n = plan_.owned.size();
+std::vector<char> RankContacts::cut_sample(const std::vector<std::uint32_t>& rows,
+                                          const std::vector<std::uint64_t>& w) const {
+  const std::size_t n = rows.size();
   const std::size_t most = std::max<std::size_t>(kCutSampleRank, kCutSample / std::size_t(link_.ranks()));
   const std::size_t run = (n + most - 1) / std::max<std::size_t>(most, 1);  // bodies a point stands for
   std::vector<CutPoint> points;
   for (std::size_t k = 0; k < n; k += run) {
     CutPoint c{};
-    put(c.x, bodies.position[plan_.owned[k]]);
+    put(c.x, store_.position[rows[k]]);
     for (std::size_t m = k; m < std::min(n, k + run); ++m) c.weight += double(w[m]);
     points.push_back(c);
   }

@@ -31,76 +31,77 @@ std::vector<int> near_parts(const DomainCut& cut, int p, double halo) {
 
 }  // namespace
 
-Handover migrate(const RankLink& link, const DomainCut& cut, const std::vector<std::uint32_t>& owned,
-                 const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver, Bodies& bodies) {
+Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
+                 const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver) {
   const int me = link.rank();
-  std::vector<std::vector<std::uint32_t>> movers(link.ranks());
+  const auto owner = [&](std::uint32_t g) { return cut.owner(store.position[store.local_of(g)]); };
+  std::vector<std::vector<std::uint32_t>> movers(link.ranks());  // store rows
   std::vector<std::vector<TableSlot>> body_to(link.ranks()), driver_to(link.ranks());
-  Handover out;
-  for (std::uint32_t b : owned) {
-    const int to = cut.owner(bodies.position[b]);
-    (to == me ? out.owned : movers[to]).push_back(b);
+  std::vector<std::uint32_t> kept;
+  for (std::uint32_t k : store.owned_rows()) {
+    const int to = cut.owner(store.position[k]);
+    (to == me ? kept : movers[to]).push_back(k);
   }
   for (const TableSlot& t : body) {  // a pair to both new owners: each lists it
-    const int to_i = cut.owner(bodies.position[t.i]), to_j = cut.owner(bodies.position[t.j]);
+    const int to_i = owner(t.i), to_j = owner(t.j);
     body_to[to_i].push_back(t);
     if (to_j != to_i) body_to[to_j].push_back(t);
   }
-  for (const TableSlot& t : driver) driver_to[cut.owner(bodies.position[t.i])].push_back(t);
+  for (const TableSlot& t : driver) driver_to[owner(t.i)].push_back(t);
   std::vector<Parcel> parcels;
   for (int q = 0; q < link.ranks(); ++q) {
     if (q == me || (movers[q].empty() && body_to[q].empty() && driver_to[q].empty())) continue;
     Parcel p{q, {}};
-    append_bytes(p.bytes, pack_owned(bodies, movers[q]));
+    append_bytes(p.bytes, pack_movers(store, movers[q]));
     append_section(p.bytes, body_to[q]);
     append_section(p.bytes, driver_to[q]);
     parcels.push_back(std::move(p));
   }
+  Handover out;
+  out.owned.append(store, kept);
   std::vector<TableSlot> body_slots = std::move(body_to[me]), driver_slots = std::move(driver_to[me]);
   for (const Parcel& p : link.deliver(std::move(parcels))) {
     std::size_t at = 0;
-    for (std::uint32_t b : unpack_owned(read_section<char>(p.bytes, at), bodies)) out.owned.push_back(b);
+    unpack_movers(read_section<char>(p.bytes, at), out.owned);
     for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) body_slots.push_back(t);
     for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) driver_slots.push_back(t);
   }
-  std::sort(out.owned.begin(), out.owned.end());
+  out.owned.sort_by_id();
   out.body_table = table_of(std::move(body_slots));  // each pair's slots from one rank: the old owner of i
   out.driver_table = table_of(std::move(driver_slots));
   return out;
 }
 
-GhostPlan share_ghosts(const RankLink& link, const DomainCut& cut, std::vector<std::uint32_t> owned, double halo,
-                       Bodies& bodies) {
+GhostPlan share_ghosts(const RankLink& link, const DomainCut& cut, double halo, LocalStore& store) {
   const int me = link.rank();
   GhostPlan plan;
   plan.send.resize(link.ranks());
   plan.receive.resize(link.ranks());
+  plan.owned = store.global_id;
   const std::vector<int> near = near_parts(cut, me, halo);
-  for (std::uint32_t b : owned)
+  std::vector<std::vector<std::uint32_t>> rows(link.ranks());  // store rows of plan.send
+  for (std::uint32_t k = 0; k < store.size(); ++k)
     for (int q : near)
-      if (cut.distance(q, bodies.position[b]) < halo) plan.send[q].push_back(b);
+      if (cut.distance(q, store.position[k]) < halo) {
+        plan.send[q].push_back(store.global_id[k]);
+        rows[q].push_back(k);
+      }
   std::vector<Parcel> parcels;
   for (int q : near) {
     if (plan.send[q].empty()) continue;
     Parcel p{q, {}};
     append_section(p.bytes, plan.send[q]);
-    append_bytes(p.bytes, pack_ghosts(bodies, plan.send[q]));
+    append_bytes(p.bytes, pack_ghosts(store, rows[q]));
     parcels.push_back(std::move(p));
   }
-  std::vector<std::pair<std::uint32_t, std::uint8_t>> local;  // (id, ghost)
-  for (std::uint32_t b : owned) local.push_back({b, 0});
   for (const Parcel& p : link.deliver(std::move(parcels))) {
     std::size_t at = 0;
     plan.receive[p.rank] = read_section<std::uint32_t>(p.bytes, at);
-    unpack_ghosts(read_section<char>(p.bytes, at), plan.receive[p.rank], bodies);
-    for (std::uint32_t b : plan.receive[p.rank]) local.push_back({b, 1});
+    unpack_ghosts(read_section<char>(p.bytes, at), plan.receive[p.rank], store);
   }
-  std::sort(local.begin(), local.end());
-  for (const auto& [b, ghost] : local) {
-    plan.local.push_back(b);
-    plan.ghost.push_back(ghost);
-  }
-  plan.owned = std::move(owned);
+  store.sort_by_id();
+  plan.local = store.global_id;
+  plan.ghost = store.ghost;
   return plan;
 }
 

@@ -12,28 +12,29 @@
 #include "sim/contact_table.hpp"
 #include "sim/domain_cut.hpp"
 #include "sim/ghost_plan.hpp"
+#include "sim/local_store.hpp"
 #include "sim/rank_link.hpp"
 
 namespace polydem {
 
 // What a rank holds after the migration: its bodies and the histories of their pairs.
 struct Handover {
-  std::vector<std::uint32_t> owned;              // increasing id
-  PairList body_table, driver_table;             // global ids, as table_of lays them out
+  LocalStore owned;                   // the owned bodies kept and landed, increasing id, no ghost
+  PairList body_table, driver_table;  // global ids, as table_of lays them out
 };
 
-// Sends each of `owned` (increasing id, current in `bodies`) whose centre `cut` gives to
-// another rank to it, and each active slot (`body`: the pairs whose lower body this rank owns,
-// partners current in `bodies`; `driver`: its driver pairs) to the new owners of its bodies;
-// writes the bodies that came into `bodies` (a collective).
-Handover migrate(const RankLink& link, const DomainCut& cut, const std::vector<std::uint32_t>& owned,
-                 const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver, Bodies& bodies);
+// Sends each owned body of `store` (its ghosts current too) whose centre `cut` gives to
+// another rank to it, with all the store holds of it, and each active slot (`body`: the pairs
+// whose lower body this rank owns; `driver`: its driver pairs) to the new owners of its
+// bodies (a collective).
+Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
+                 const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver);
 
-// The plan of this rank's `owned` bodies (current in `bodies`): each goes, with its id and
-// ghost state, to the ranks whose box lies within `halo` of it; the ghosts that come are
-// written into `bodies` (a collective). The same plan as plan_ghosts on every body's centre.
-GhostPlan share_ghosts(const RankLink& link, const DomainCut& cut, std::vector<std::uint32_t> owned, double halo,
-                       Bodies& bodies);
+// The plan of this rank's bodies in `store` (owned alone, increasing id): each goes, with its
+// id, ghost state and constants, to the ranks whose box lies within `halo` of it; the ghosts
+// that come join `store`, in id order (a collective). The same plan as plan_ghosts on every
+// body's centre.
+GhostPlan share_ghosts(const RankLink& link, const DomainCut& cut, double halo, LocalStore& store);
 
 // The least of the ranks' `mine` that are not -1 (ids of failing bodies), or -1 (a collective).
 long least_over_ranks(const RankLink& link, long mine);

@@ -135,7 +135,6 @@ void Simulation::contact_stage() {
   if (ranks_) {
     ranks_->compute(bodies, drivers, dt_, *engine_);
     ranks_->add_sums();
-    ranks_->publish(bodies);
   } else {
     engine_->compute(all_owned(bodies), drivers, dt_);
   }
@@ -260,7 +259,7 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->compute(bodies, drivers, dt_, *engine_);
     } else {
       stale = engine_->stale_after_measure(all_owned(bodies), drivers);
-      if (stale) engine_->rebuild(all_owned(bodies), drivers);
+      if (stale) engine_->rebuild(all_owned(bodies), drivers, true);  // region 1 posed the listed bodies
     }
   }
   in_team(team, [&] {
@@ -277,7 +276,6 @@ void Simulation::step(bool leave_kick_open) {
   });
   if (contacts && one_process) engine_->close_forces(all_owned(bodies), drivers);
   if (contacts && !leave_kick_open) sums_taken();
-  if (rank_passes && !leave_kick_open) ranks_->publish(bodies);  // a closed step's state is read
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
   ++step_;
@@ -293,7 +291,6 @@ void Simulation::close_step() {
       kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut(), false);
   });
   sums_taken();
-  if (ranks_) ranks_->publish(bodies);
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the

@@ -97,8 +97,8 @@ class Simulation {
 
   // Distributed runs: `bodies` holds every body's state and engine() every rank's contacts
   // (global ids) only after gather_state(), a collective, called before output, checkpoints and
-  // checks read them; between, a rank's owned bodies are current after a step that closed its
-  // kick (the rank integrates them in its store and publishes them then). Onto rank 0 only
+  // checks read them; between, a rank's bodies are current in its store alone (the rank
+  // integrates them there, and its own writers and checks read them there). Onto rank 0 only
   // (it writes the files), or onto every rank (`onto_every_rank`: tests comparing the ranks).
   bool distributed() const { return bool(ranks_); }
   int rank() const { return link_ ? link_->rank() : 0; }

@@ -10,6 +10,7 @@
 
 #include "integrate/integrate.hpp"
 #include "sim/body_exchange.hpp"
+#include "sim/body_rows.hpp"
 #include "sim/ghost_plan.hpp"
 
 using namespace polydem;
@@ -61,7 +62,10 @@ TEST_CASE("Ghost plans partition the bodies and pair each send list with its rec
   }
 }
 
-TEST_CASE("Ghost and owned parcels carry body state bit for bit") {
+namespace {
+
+// Twelve bodies, every field different per body (constants too), all owned by a store.
+LocalStore twelve_owned() {
   const std::vector<Vec3> x = random_centres(12, 3);
   Bodies from;
   from.resize(x.size());
@@ -75,22 +79,69 @@ TEST_CASE("Ghost and owned parcels carry body state bit for bit") {
     from.angular_momentum[b] = x[b] * 11.0;
     from.force[b] = x[b] / 13.0;
     from.torque[b] = -x[b];
+    from.shape[b] = int(b % 3);
+    from.scale[b] = 1.0 + x[b].x();
+    from.mass[b] = 1e-3 * x[b].y();
+    from.inertia[b] = x[b] * 1e-7;
+    from.group[b] = int(20 - b);
+    from.id[b] = std::uint32_t(1000 + 7 * b);
   }
-  const std::vector<std::uint32_t> ids{1, 4, 5, 11};
-  Bodies to;
-  to.resize(x.size());
+  std::vector<std::uint32_t> all(x.size());
+  for (std::uint32_t b = 0; b < all.size(); ++b) all[b] = b;
+  LocalStore store;
+  store.select(from, all, std::vector<std::uint8_t>(all.size(), 0));
+  return store;
+}
+
+// The store's arrays hold the same bytes as `want`'s, field for field.
+void check_bit_equal(LocalStore& got, const LocalStore& want) {
+  got.with_arrays(want, [](const auto& g, const auto& w) {
+    REQUIRE(g.size() == w.size());
+    CHECK(std::memcmp(g.data(), w.data(), g.size() * sizeof(g[0])) == 0);
+  });
+}
+
+}  // namespace
+
+TEST_CASE("A mover's parcel lands in its new owner's store bit for bit, constants included") {
+  const LocalStore from = twelve_owned();
+  const std::vector<std::uint32_t> rows{1, 4, 5, 11};
+  const std::vector<char> bytes = pack_movers(from, rows);
+  CHECK(bytes.size() == rows.size() * kMoverBytes);
+  LocalStore landed;
+  landed.append(from, {0});  // a body kept: the movers land after it
+  unpack_movers(bytes, landed);
+  LocalStore want;
+  want.append(from, {0, 1, 4, 5, 11});
+  check_bit_equal(landed, want);
+}
+
+TEST_CASE("Ghost and owned parcels carry body state bit for bit") {
+  const LocalStore from = twelve_owned();
+  const std::vector<std::uint32_t> ids{1, 4, 5, 11};  // = their rows
   const std::vector<char> ghosts = pack_ghosts(from, ids);
   CHECK(ghosts.size() == ids.size() * kGhostBytes);
+  LocalStore to;
   unpack_ghosts(ghosts, ids, to);
+  REQUIRE(to.size() == ids.size());
   Bodies owned;
-  owned.resize(x.size());
-  unpack_owned(pack_owned(from, ids), owned);
-  for (std::uint32_t b : ids) {
-    CHECK(std::memcmp(to.position[b].data(), from.position[b].data(), sizeof(Vec3)) == 0);
-    CHECK(to.orientation[b].coeffs() == from.orientation[b].coeffs());
-    CHECK(to.velocity_end[b] == from.velocity_end[b]);
-    CHECK(to.angular_velocity_end[b] == from.angular_velocity_end[b]);
-    CHECK(to.angular_momentum[b] == Vec3::Zero());  // a ghost carries no integration state
+  owned.resize(from.size());
+  unpack_owned(pack_owned(rows_of(from, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}), ids), owned);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const std::uint32_t b = ids[k];
+    CHECK(to.global_id[k] == b);
+    CHECK(to.ghost[k] == 1);
+    CHECK(std::memcmp(to.position[k].data(), from.position[b].data(), sizeof(Vec3)) == 0);
+    CHECK(to.orientation[k].coeffs() == from.orientation[b].coeffs());
+    CHECK(to.velocity_end[k] == from.velocity_end[b]);
+    CHECK(to.angular_velocity_end[k] == from.angular_velocity_end[b]);
+    CHECK(to.shape[k] == from.shape[b]);
+    CHECK(to.scale[k] == from.scale[b]);
+    CHECK(to.mass[k] == from.mass[b]);
+    CHECK(to.group[k] == from.group[b]);
+    CHECK(to.id[k] == from.id[b]);
+    CHECK(to.angular_momentum[k] == Vec3::Zero());  // a ghost carries no integration state
+    CHECK(to.inertia[k] == Vec3::Zero());
     CHECK(owned.angular_momentum[b] == from.angular_momentum[b]);
     CHECK(owned.force[b] == from.force[b]);
     CHECK(owned.torque[b] == from.torque[b]);
