@@ -1,20 +1,20 @@
 #pragma once
-// The onset pushes of a patch whose sub-contacts start at different times within one step
-// (issue 16: a cube landing almost flat, its far edge joining the near one's patch). Each
-// sub-contact's share w_k = x_k / sum(x) (pair_kernel.hpp, patch_weights) then moves on the
-// scale of the join's lag, not of the impact: the near edge carries the whole patch until the
-// far one touches, then hands it half of it. The cells of velocity Verlet sample w_k at the
-// steps only, which misses O(dt) of each share's impulse, the patch's torque. Here the overlaps
-// drift along straight lines over the step (x_j at n+1 less r_j, the closing rate, per second
-// before it; a new one from its touch) and each share's impulse over the step is integrated in
-// closed form, and so is each later cell's while the shares settle (the lag may be shorter
-// than dt). The step adds what the cells miss, as the lone contact's onset push does
-// (second_order.hpp): with f the share, f(n) and f'(n) from the sub-contacts that touched at n
-// (the formula the last step used), the push (a force over dt) is
+// The onset pushes of a patch whose sub-contacts start at different times within one step (issue 16: a cube
+// landing almost flat, its far edge joining the near one's patch). Each sub-contact's share w_k = x_k / sum(x)
+// (pair_kernel.hpp, patch_weights) then moves on the scale of the join's lag, not of the impact: the near edge
+// carries the whole patch until the far one touches, then hands it half of it. The cells of velocity Verlet
+// sample w_k at the steps only, which misses O(dt) of each share's impulse, the patch's torque. Here the overlaps
+// drift along straight lines over the step (x_j at n+1 less r_j, the closing rate, per second before it; a new
+// one from its touch) and each share's impulse over the step is integrated in closed form, and so is each later
+// cell's while the shares settle (the lag may be shorter than dt). The step adds what the cells miss, as the lone
+// contact's onset push does (second_order.hpp): with f the share, f(n) and f'(n) from the sub-contacts that
+// touched at n (the formula the last step used), the push (a force over dt) is
 //   P dt = integral over [n, n+3/2] - f(n) dt/2 - f'(n) dt^2/8 - f(n+1) dt
-//          + sum over m >= 2 of (integral over cell n+m - f(n+m) dt).
-// For one share whose dashpot starts tau before n+1 it is onset_force's g (tau - dt/2). Only
-// the rare step where a pair's contact set changed pays for it.
+//          + sum over m = 2 ... 17 of (integral over cell n+m - f(n+m) dt),
+// the cells ahead ending at the first predicted letting go (patch_window; the cut cell counted in part: continuous
+// in dt). For one share whose dashpot starts tau before n+1 it is onset_force's g (tau - dt/2). Only a region where
+// a sub-contact touched within the step, not all together, pushes (pair_kernel.hpp, patch_pushes); the push is an
+// impulse at n+1, its work booked at once (law.hpp: the dashpot part dissipated, the spring part patch_work).
 #include <algorithm>
 #include <array>
 #include <cmath>
