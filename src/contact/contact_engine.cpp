@@ -109,6 +109,13 @@ constexpr double kSearchExtra = 1.0;
 constexpr double kSpherePassWeight = 1.4;
 constexpr double kWallPairWeight = 4.9;
 constexpr double kPolyhedronPassWeight = 2.9;
+// The first region's work a body, in instructions a step (callgrind, the pour at 1 thread, 400
+// steps from boxfill_t0.1.bin; the kicks and drift: pass_weights): a polyhedron's rebuild check
+// (displacement_bound) and a listed polyhedron's pose (rotation and world vertices).
+constexpr double kMeasureInstructions = 97.0, kPoseInstructions = 400.0;
+// A thread this far above an even share of the first region takes a cut of its own (pass_cut):
+// the settled cubes' walk cut leaves +13% there, the bed's +18%; the pour's +58%.
+constexpr double kOwnPassCut = 1.25;
 // A cut's crossing work in the same units (CrossWeights), from the bed's instructions at 1 and 2
 // threads (callgrind, 300 steps): a foreign pair's kept result ~62 instructions on top of its pair
 // (0.7 of a sphere pair's ~87, 0.2 of a polyhedron pair's ~290), a late term ~20 (0.2; 0.07).
@@ -216,7 +223,7 @@ void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint3
   wait = wait && omp_get_level() > 0;  // a region of its own ends at its own barrier
   in_team(n >= kParallelMinItems, [&] {
     const PoseArrays a = arrays;
-    const auto [first, last] = team_share(some, body_cut());  // the bodies this thread's walk reads most
+    const auto [first, last] = team_share(some, pass_cut());  // the bodies this thread moved
     for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
     if (wait) {
 #pragma omp barrier
@@ -310,16 +317,18 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
-  weigh_bodies();
+  weigh_bodies(!own_pass_cut_);  // the last lists' passes had their own cut: likely these too
   // Cut for the team that will walk the list (forces' region), here on one thread: the loop then
   // meets for no cut (two barriers a rebuild). Another team recuts in the loop.
-  direct_.cut(body_list_, bodies.size() >= kParallelMinItems ? omp_get_max_threads() : 1);
+  const int team = bodies.size() >= kParallelMinItems ? omp_get_max_threads() : 1;
+  direct_.cut(body_list_, team);
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
   if (spheres_only_)
     keep_sphere_poses(bodies, spheres_posed_each_step_ || (settings_.driver.contact_mass && !driver_list_.pairs.empty()));
   else
     mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
+  cut_passes(team);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
   must_rebuild_ = false;
@@ -366,13 +375,43 @@ std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, con
 
 // Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
 // body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
-// between them). Polyhedra's wall pairs are shared as they come.
-void ContactEngine::weigh_bodies() {
+// between them). Polyhedra's wall pairs are shared as they come. `passes` false: the passes have
+// a cut of their own (cut_passes), the walk's weighs its pairs and wall pairs alone.
+void ContactEngine::weigh_bodies(bool passes) {
+  const double sphere = passes ? kSpherePassWeight : 0.0, polyhedron = passes ? kPolyhedronPassWeight : 0.0;
   direct_.body_weight.resize(direct_.sums.size());
   for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
-    direct_.body_weight[b] = spheres_only_ ? float(kSpherePassWeight + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
-                                           : float(kPolyhedronPassWeight);
+    direct_.body_weight[b] = spheres_only_ ? float(sphere + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
+                                           : float(polyhedron);
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
+}
+
+// The first region's own cut where the walk's leaves some thread kOwnPassCut times an even share
+// of its passes or more: below that, a body moved and then walked by one thread stays in its cache.
+void ContactEngine::cut_passes(int threads) {
+  const bool walk_weighed_passes = !std::exchange(own_pass_cut_, false);
+  const std::size_t n = pass_weight_.size();
+  if (threads < 2 || n != direct_.sums.size() || direct_.split.threads != threads) return;
+  std::vector<double> before(n + 1, 0.0);  // instructions a step of the bodies before b
+  std::vector<double> weight(pass_weight_.begin(), pass_weight_.end());
+  if (!spheres_only_) {
+    for (double& w : weight) w += kMeasureInstructions;
+    for (std::uint32_t b : listed_) weight[b] += kPoseInstructions;
+  }
+  for (std::size_t b = 0; b < n; ++b) before[b + 1] = before[b] + weight[b];
+  const std::uint32_t* walk = direct_.split.body_cut.data();
+  double heaviest = 0.0;
+  for (int t = 0; t < threads; ++t) heaviest = std::max(heaviest, before[walk[t + 1]] - before[walk[t]]);
+  if (heaviest < kOwnPassCut * before[n] / threads) return;
+  pass_cut_.assign(threads + 1, std::uint32_t(n));
+  pass_cut_[0] = 0;
+  for (int t = 1; t < threads; ++t)
+    pass_cut_[t] = std::uint32_t(std::lower_bound(before.begin(), before.end(), before[n] * t / threads) - before.begin());
+  pass_threads_ = threads;
+  own_pass_cut_ = true;
+  if (!walk_weighed_passes) return;
+  weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
+  direct_.cut(body_list_, threads);
 }
 
 // A moving driver can reach bodies the lists did not pair it with: how far its surface may have
@@ -402,10 +441,10 @@ void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {
   // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
   if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
-    const auto [first, last] = team_share(position.size(), body_cut());
+    const auto [first, last] = team_share(position.size(), pass_cut());
     for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
-  if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, body_cut());
+  if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut());
 }
 
 void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {

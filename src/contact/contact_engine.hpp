@@ -136,6 +136,13 @@ class ContactEngine {
   // The bodies' cut of the body pairs' loop (pair_split.hpp), for the step's passes over bodies:
   // each thread then moves the bodies of its chunk's pairs as i. None before the first rebuild.
   TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
+  // Per body, its passes' instructions a step (kicks and drift by rotor: pass_weights), for pass_cut.
+  void weigh_passes(std::vector<float> instructions) { pass_weight_ = std::move(instructions); }
+  // The cut of the step's first region (kicks, drift, the rebuild check, the poses; each thread
+  // reads only the bodies it moved): the walk's body cut, or one of its own where that leaves a
+  // thread far above an even share of those passes (a pour: the falling bodies have no pairs, so
+  // all of them go to the last chunk). Set at each rebuild (cut_passes).
+  TeamCut pass_cut() const { return own_pass_cut_ ? TeamCut{pass_cut_.data(), pass_threads_} : body_cut(); }
   // The body pairs' loop cut from the next step on with these shares of its work (per thread,
   // summing to 1), kept instead of following the threads' pace: no result may change (tests).
   void fix_shares(std::vector<double> shares) {
@@ -200,7 +207,8 @@ class ContactEngine {
   void flush_ended(const std::vector<std::uint8_t>* ghost);
   void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range);  // and marks them
-  void weigh_bodies();  // direct_.body_weight, at a rebuild
+  void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
+  void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
 
   const std::vector<Shape>& shapes_;
@@ -239,6 +247,10 @@ class ContactEngine {
   double driver_lever_ = 0.0;              // m, farthest body surface from any driver reference point
   std::vector<std::uint32_t> driver_begin_;  // per body + 1: its driver pairs (pairs_by_body)
   DirectSums direct_;                      // the body pairs' sums, made by their loop
+  std::vector<float> pass_weight_;         // per body, its passes' instructions a step (weigh_passes)
+  std::vector<std::uint32_t> pass_cut_;    // pass_threads_ + 1 bodies (pass_cut), when own_pass_cut_
+  int pass_threads_ = 0;
+  bool own_pass_cut_ = false;
   ContactStats stats_;
   ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy
 };

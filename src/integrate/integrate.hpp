@@ -60,6 +60,9 @@ bool keeps_no_orientation(const Shape& shape, const Vec3& inertia);
 // takes Rotor::sphere (every orientation is integrated).
 RotorGroups group_rotors(const Bodies& b);
 RotorGroups group_rotors(const Bodies& b, const std::vector<Shape>& shapes);
+// Per body, the instructions a step of its opening and closing passes (kicks, drift), by its
+// group: what the contact stage's pass cut weighs (ContactEngine::weigh_passes).
+std::vector<float> pass_weights(const RotorGroups& groups, std::size_t n);
 // The same for the rows `rows` alone of `b` (Bodies, or a rank's LocalStore and its owned
 // bodies' rows), in their order.
 template <class B>

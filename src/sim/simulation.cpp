@@ -96,6 +96,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   Bodies none;
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(many ? none : bodies), cs);
   if (many) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
+  else engine_->weigh_passes(pass_weights(rotors_, bodies.size()));
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
     const MotionSettings& m = drivers.motion(j);
     drivers_move_ |= m.rotates || m.velocity != Vec3::Zero() || m.force || m.pressure;
@@ -213,8 +214,8 @@ void Simulation::step(bool leave_kick_open) {
   const RotorGroups& moved = rotors_;  // a rank's own passes move its owned bodies, in its store
   const bool rank_passes = !one_process && contacts;
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
-  // Each thread moves the bodies whose pairs it walks (one process: the contact stage's cut).
-  const TeamCut cut = contacts && one_process ? engine_->body_cut() : TeamCut{};
+  // Each thread moves the bodies whose pairs it walks, or the passes' own cut (one process: the contact stage's).
+  const TeamCut cut = contacts && one_process ? engine_->pass_cut() : TeamCut{};
   // Nothing but gravity acts: the joined pass makes the forces in registers and, for spheres'
   // lists, runs the rebuild trigger's test on each position it moves (no pass of its own).
   // A rank's pass the same on its owned bodies (only_gravity).
