@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "polydem/math.hpp"
+#include "polydem/release.hpp"
 
 namespace polydem {
 
@@ -35,7 +36,9 @@ struct Bodies {
   // messages name it); the indices follow space (sim/body_order.hpp) or that list.
   std::vector<std::uint32_t> id;
 
-  std::size_t size() const { return position.size(); }
+  // The bodies of the scene: `id` is kept on a distributed run's rank where the state arrays are
+  // dropped (drop_state), so size() stays the scene's N.
+  std::size_t size() const { return id.size(); }
 
   void resize(std::size_t n) {
     position.resize(n, Vec3::Zero());
@@ -54,6 +57,24 @@ struct Bodies {
     group.resize(n, 0);
     for (std::size_t b = id.size(); b < n; ++b) id.push_back(std::uint32_t(b));
     id.resize(n);
+  }
+
+  // A distributed run's rank frees the state arrays (position to torque: 224 B a body of the
+  // scene) once its store holds its own bodies' (RankContacts::redistribute); the constants stay.
+  void drop_state() {
+    release(position), release(orientation), release(velocity), release(angular_velocity);
+    release(velocity_end), release(angular_velocity_end), release(angular_momentum), release(force), release(torque);
+  }
+  bool has_state() const { return position.size() == id.size(); }
+  // The state arrays back at size() rows (zeroed) where dropped: a gather or a checkpoint read writes them.
+  void grow_state() { resize(size()); }
+
+  // Bytes the arrays hold (their capacity): what a rank keeps of the scene's bodies.
+  std::size_t held_bytes() const {
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(position) + bytes(orientation) + bytes(velocity) + bytes(angular_velocity) + bytes(velocity_end) +
+           bytes(angular_velocity_end) + bytes(angular_momentum) + bytes(force) + bytes(torque) + bytes(shape) +
+           bytes(scale) + bytes(mass) + bytes(inertia) + bytes(group) + bytes(id);
   }
 
   // The body indices sorted by user id: the order files list bodies in.

@@ -147,9 +147,7 @@ void warn_unsafe_step(const Simulation& sim) {
 }
 
 void warn_fast_impacts(const Simulation& sim) {
-  if (!sim.scene().forces.contact.present) return;
-  const TimeStepEstimate& t = sim.time_step();
-  const std::string w = fast_impact_warning(sim.bodies, sim.shapes(), sim.drivers, t.kn_particle, t.kn_driver, sim.dt());
+  const std::string& w = sim.fast_impact_warning();
   if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
 }
 
@@ -206,8 +204,9 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
                double(c.collectives) / n, double(c.collective_bytes) / n, double(c.collective_bytes_in) / n);
   if (const RankContacts* r = sim.rank_contacts()) {
     std::fprintf(stderr, "polydem: rank %d of %d: last lists: %zu pairs, %zu candidate feature pairs; %.1f%% of the "
-                 "weight; %zu cuts in %zu rebuilds\n", link.rank(), link.ranks(), r->pairs(), r->candidates(),
-                 100.0 * r->load_share(), r->cuts(), r->rebuilds());
+                 "weight; %zu cuts in %zu rebuilds; the scene's arrays hold %.0f bytes a body\n", link.rank(),
+                 link.ranks(), r->pairs(), r->candidates(), 100.0 * r->load_share(), r->cuts(), r->rebuilds(),
+                 double(sim.bodies.held_bytes()) / double(std::max<std::size_t>(1, sim.bodies.size())));
     const LinkCounts& b = r->rebuild_traffic();  // the share of the totals above spent at rebuilds
     const double k = double(std::max<std::size_t>(1, r->rebuilds()));
     std::fprintf(stderr, "polydem: rank %d of %d: per rebuild: %.3g point-to-point messages, %.4g bytes; %.3g "

@@ -8,10 +8,7 @@ constexpr double kPadding = 0.05;  // of the box's largest side, around it
 
 }  // namespace
 
-Box3 view_box(const Bodies& bodies, const std::vector<Shape>& shapes, const Drivers& drivers) {
-  Box3 box;
-  for (std::size_t b = 0; b < bodies.size(); ++b)
-    box.add(bodies.position[b], shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
+Box3 view_box(Box3 box, const Drivers& drivers) {
   for (std::size_t j = 0; j < drivers.size(); ++j)
     if (drivers[j].active) drivers.bounds(std::uint32_t(j), box);
   if (box.empty()) box.add(Vec3::Zero(), 0.5);  // nothing to frame: a metre about the origin

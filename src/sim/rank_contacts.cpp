@@ -68,8 +68,9 @@ bool RankContacts::lists_stale(const Drivers& drivers) {
 }
 
 // Every rank holds every body and `whole`'s table (the start, a resume, after sync_bodies):
-// each cuts the domain alike, every body weighing the same (no lists yet), and takes its share.
-void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole) {
+// each cuts the domain alike, every body weighing the same (no lists yet), and takes its share
+// into its store, then drops `bodies`' state where allowed (before its lists are built).
+void RankContacts::redistribute(Bodies& bodies, const ContactEngine& whole) {
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
     if (!bodies.position[b].allFinite()) throw non_finite_position(b);
   cut_ = cut_domain(bodies.position, std::vector<double>(bodies.size(), double(kBodyWork)), link_.ranks());
@@ -77,6 +78,7 @@ void RankContacts::redistribute(const Bodies& bodies, const ContactEngine& whole
   set_load_share(part_loads(cut_, bodies.position, std::vector<double>(bodies.size(), 1.0)));
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
   store_.select(bodies, plan_.local, plan_.ghost);
+  if (drop_state_) bodies.drop_state();
   adopt(whole.body_pairs(), whole.driver_pairs());
 }
 
@@ -279,6 +281,7 @@ void RankContacts::size_parcels() {
 }
 
 void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
+  bodies.grow_state();
   store_.publish(bodies);
   const std::vector<char> mine = pack_owned(bodies, plan_.owned);
   const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);

@@ -12,7 +12,7 @@
 // to the ranks that hold them as ghosts, point to point (sim/rank_migration.hpp); a cut again
 // reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
 // bodies in its LocalStore (one copy of their state), and a rebuild after the first sends and
-// lands bodies store to store; it keeps arrays for all bodies, which get the state only where a
+// lands bodies store to store; it keeps the constants of all bodies, and their state only where a
 // gather writes it (sync_bodies: output with probes or fluid, drag and fluid forces, the start).
 #include <memory>
 #include <vector>
@@ -81,11 +81,15 @@ class RankContacts {
   bool stop_seen() const { return stop_seen_; }  // some rank asked before this step's collective
   // Rebuilds at the next step from `whole`'s lists and `bodies` (a checkpoint read: the table
   // and the state on every rank), the store taking its owned bodies' state from `bodies` now
-  // (what reads the state before that step reads the store).
+  // (what reads the state before that step reads the store); where `bodies` holds no state
+  // (dropped), the store is the current one and that step gathers it (sync_bodies).
   void force_rebuild(const Bodies& bodies) {
     forced_ = true;
-    store_.pull(bodies);
+    if (bodies.has_state()) store_.pull(bodies);
   }
+  // After each cut from `bodies` (the start, a resume), `bodies` keeps only the constants
+  // (Bodies::drop_state): set where nothing gathers the state (Simulation::gathers_state).
+  void may_drop_state(bool may) { drop_state_ = may; }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
   // (a checkpoint written: the table went to rank 0 only).
   void rebuild_next_step() { rebuild_asked_ = true; }
@@ -94,7 +98,8 @@ class RankContacts {
   void gather_table(ContactEngine& whole, bool to_root = false) const;
 
   // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
-  // bodies, published and gathered (a collective: output, drag and fluid forces; never a rebuild).
+  // bodies, published and gathered (a collective: output, drag and fluid forces, the start and a
+  // resume); `bodies`' state arrays grown back first where dropped.
   void sync_bodies(Bodies& bodies, bool to_root = false) const;
   // What this rank writes of the state (VTK pieces, checkpoint pieces): the bodies it owns in
   // increasing id and the active slots it answers for (its body pairs whose lower body it owns,
@@ -151,7 +156,7 @@ class RankContacts {
   Requests requests_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
   bool exchange_deciding(const Drivers& drivers, double dt);
-  void redistribute(const Bodies& bodies, const ContactEngine& whole);
+  void redistribute(Bodies& bodies, const ContactEngine& whole);
   void migrate_bodies();
   long first_non_finite_position() const;
   void adopt(const PairList& body_table, const PairList& driver_table);
@@ -189,6 +194,7 @@ class RankContacts {
   bool watched_ = false;  // this step's opening pass ran the trigger's test (watch_motion)
   bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
+  bool drop_state_ = false;  // may_drop_state
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;
   bool stop_asked_ = false, stop_seen_ = false;

@@ -173,12 +173,34 @@ class FluidSeries {
   std::unique_ptr<CsvSeries> csv_;
 };
 
+// m, the box of every body's bounding sphere; distributed runs: each rank's own bodies' (its
+// store's after its first cut, which dropped `bodies`' state), met on rank 0 (a collective).
+Box3 bodies_box(const Simulation& sim) {
+  Box3 box;
+  const RankContacts* r = sim.rank_contacts();
+  if (!r) {
+    for (std::size_t b = 0; b < sim.bodies.size(); ++b) add_body(box, sim.bodies, b, sim.shapes());
+    return box;
+  }
+  r->with_output_rows(sim.bodies, [&](const auto& a, const std::vector<std::uint32_t>& rows) {
+    for (std::uint32_t k : rows) add_body(box, a, k, sim.shapes());
+  });
+  std::vector<char> mine;
+  append_record(mine, box);
+  for (const std::vector<char>& from : sim.link()->gather(mine, 0)) {  // min and max: exact in any order
+    Box3 theirs;
+    std::memcpy(static_cast<void*>(&theirs), from.data(), sizeof theirs);
+    box.add(theirs);
+  }
+  return box;
+}
+
 class OutputWriter {
  public:
   // Rank 0 of a distributed run writes; the others only take part in the gathers.
   OutputWriter(Simulation& sim, const RunOptions& o, OutputProgress progress)
       : sim_(sim), dir_(o.out_dir), io_(sim.rank() == 0), progress_(std::move(progress)),
-        view_box_(view_box(sim.bodies, sim.shapes(), sim.drivers)) {
+        view_box_(view_box(bodies_box(sim), sim.drivers)) {
     if (!io_) return;
     pvd_ = std::make_unique<PvdFiles>(dir_);
     for (const OutputFrame& f : progress_.frames) pvd_->add(f.time, f.files);
@@ -232,7 +254,7 @@ class OutputWriter {
   bool energy_row() {
     if (!sim_.scene().output.csv_every) return false;
     const OutputSettings& out = sim_.scene().output;
-    const bool whole = sim_.external() || !out.flow_probes.empty() || !out.repose_probes.empty() || !sim_.distributed();
+    const bool whole = sim_.gathers_state() || !sim_.distributed();
     if (whole) sim_.gather_state();  // the fluid's row and the probes read every body
     sim_.sum_energy();               // each rank's part of the energies, reduced exactly
     if (!energy_) return whole;

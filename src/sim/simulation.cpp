@@ -120,6 +120,10 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   if (ranks_ && !external_) ranks_->only_gravity(gravity_);
+  if (ranks_) ranks_->may_drop_state(!gathers_state());
+  if (contacts && rank() == 0)  // before a rank's cut drops the state it reads
+    impact_warning_ = polydem::fast_impact_warning(bodies, library_.shapes, drivers, dt_estimate_.kn_particle,
+                                                   dt_estimate_.kn_driver, dt_);
   external_forces();
   ledger.external_work = 0.0;  // forces at t = 0: no step taken, no work done yet
   predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0

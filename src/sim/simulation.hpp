@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "contact/contact_engine.hpp"
@@ -83,6 +84,15 @@ class Simulation {
   EnergyLedger ledger;
   // Drag and fluid operators; null when the scene has none.
   const ExternalForces* external() const { return external_.get(); }
+  // Distributed runs: the run loop gathers every body's state (drag and fluid forces each step,
+  // the fluid's files and flow and repose probes at output); where not, a rank's `bodies` keeps
+  // only the constants after each cut (RankContacts::may_drop_state).
+  bool gathers_state() const {
+    return external_ || !scene_.output.flow_probes.empty() || !scene_.output.repose_probes.empty();
+  }
+  // The set-up's warning of impacts too fast for the contacts' stiffness or dt ("": none; rank 0's,
+  // which prints it): from the bodies' state at the start, which a rank drops after its cut.
+  const std::string& fast_impact_warning() const { return impact_warning_; }
 
   // Checkpoint support: the step counter is part of the state.
   void set_step_index(std::int64_t s) { step_ = s; }
@@ -98,7 +108,8 @@ class Simulation {
   // Distributed runs: `bodies` holds every body's state and engine() every rank's contacts
   // (global ids) only after gather_state(), a collective, called before output, checkpoints and
   // checks read them; between, a rank's bodies are current in its store alone (the rank
-  // integrates them there, and its own writers and checks read them there). Onto rank 0 only
+  // integrates them there, and its own writers and checks read them there), and `bodies` holds
+  // no state at all unless the run gathers it (gathers_state: else dropped at each cut). Onto rank 0 only
   // (it writes the files), or onto every rank (`onto_every_rank`: tests comparing the ranks).
   bool distributed() const { return bool(ranks_); }
   int rank() const { return link_ ? link_->rank() : 0; }
@@ -143,6 +154,7 @@ class Simulation {
   std::unique_ptr<ContactEngine> engine_;
   RotorGroups rotors_;           // spheres turn no orientation, isotropic bodies take one rotation
   TimeStepEstimate dt_estimate_;
+  std::string impact_warning_;  // fast_impact_warning
   double dt_ = 0.0;
   std::int64_t step_ = 0;
   Vec3 gravity_ = Vec3::Zero();  // m/s^2

@@ -25,7 +25,7 @@ done
 # come point to point from the boxes near its own; the cut by measured work keeps each rank's
 # share of the weight near a third, cut again only at some rebuilds; a rebuild sends the movers
 # and the ghosts point to point, no rank gathers the state of all 100 bodies (224 bytes each)
-# (POLYDEM_MPI_COUNTS: three lines per rank).
+# nor keeps it after its first cut (POLYDEM_MPI_COUNTS: three lines per rank).
 POLYDEM_MPI_COUNTS=1 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/counted" --threads 1 > /dev/null 2> "$tmp/counts" ||
   fail "counted pour at -np 3"
 same_outputs "$tmp/pour" "$tmp/counted" "$here/mpi_pour.yaml"
@@ -34,8 +34,9 @@ import re, sys
 text = open(sys.argv[1]).read()
 rows = sorted((int(m[1]), int(m[2]), int(m[3]), int(m[4]), float(m[5])) for m in re.finditer(
     r"rank (\d) of 3: holds (\d+) of 100 bodies \((\d+) owned, (\d+) ghosts\); per step: ([\d.]+) point-to-point", text))
-work = sorted((int(m[1]), int(m[2]), float(m[3]), int(m[4]), int(m[5])) for m in re.finditer(
-    r"rank (\d) of 3: last lists: (\d+) pairs, \d+ candidate feature pairs; ([\d.]+)% of the weight; (\d+) cuts in (\d+) rebuilds", text))
+work = sorted((int(m[1]), int(m[2]), float(m[3]), int(m[4]), int(m[5]), int(m[6])) for m in re.finditer(
+    r"rank (\d) of 3: last lists: (\d+) pairs, \d+ candidate feature pairs; ([\d.]+)% of the weight; (\d+) cuts in "
+    r"(\d+) rebuilds; the scene's arrays hold (\d+) bytes a body", text))
 rebuild = sorted((int(m[1]), float(m[2]), float(m[3])) for m in re.finditer(
     r"rank (\d) of 3: per rebuild: [\d.]+ point-to-point messages, ([\d.e+]+) bytes; [\d.]+ collectives, "
     r"[\d.e+]+ bytes of its own in them, ([\d.e+]+) bytes received", text))
@@ -48,9 +49,12 @@ for rank, held, owned, ghosts, messages in rows:
     assert held == owned + ghosts and held < 100 and ghosts > 0, f"rank {rank} holds {held} bodies"
     assert messages < 2.5, f"rank {rank}: {messages} messages a step"  # 1-2 neighbours, and the rebuilds
 assert abs(sum(w[2] for w in work) - 100.0) < 0.2, work
-for rank, pairs, share, cuts, rebuilds in work:
+for rank, pairs, share, cuts, rebuilds, scene_bytes in work:
     assert pairs > 0 and abs(share - 100.0 / 3) < 100.0 / 3 * 0.1, f"rank {rank}: {share}% of the weight"
     assert 2 <= cuts < rebuilds, f"rank {rank}: {cuts} cuts in {rebuilds} rebuilds"
+    # no probe or drag gathers the state: after the first cut the scene's arrays keep the
+    # constants alone (52 bytes a body: shape, scale, mass, inertia, group, id), not its 224 of state
+    assert scene_bytes <= 52, f"rank {rank}: the scene's arrays hold {scene_bytes} bytes a body"
 print("; ".join(f"rank {r[0]}: {r[2]} owned + {r[3]} ghosts, {r[4]:g} messages a step, {w[2]}% of the weight"
                 for r, w in zip(rows, work)))
 PY

@@ -1,7 +1,8 @@
 // The distributed step without MPI: ranks as threads joined by an in-process link. The pile
 // of 150 cubes and spheres (walls, fast spins, many rebuilds) stepped over 2 and 3 ranks ends
 // on the bits of one process on every rank: bodies, driver reactions, the energy ledger, the
-// contact count and a CSV row's energies (each rank's part, summed exactly: no state gathered).
+// contact count and a CSV row's energies (each rank's part, summed exactly: no state gathered),
+// each rank keeping only the scene's constants after its first cut.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -28,13 +29,16 @@ struct Outcome {
   std::size_t owned = 0, ghosts = 0;  // held by the rank at the last rebuild
   std::size_t cuts = 0;               // rebuilds that cut the domain again
   double share = 0.0;                 // of the weight, at the last rebuild
+  std::size_t scene_bytes = 0;        // the scene's arrays (Bodies) before the gather
 };
 
 Outcome outcome(Simulation& sim) {
   sim.sum_energy();  // a CSV row's energies from each rank's own bodies and pairs: no state gathered
   const EnergyRow row = sim.energy();
+  const std::size_t scene_bytes = sim.bodies.held_bytes();
   sim.gather_state(true);
   Outcome o{sim.bodies, sim.ledger, row, {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
+  o.scene_bytes = scene_bytes;
   if (const RankContacts* r = sim.rank_contacts()) o.cuts = r->cuts(), o.share = r->load_share();
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     o.driver_force.push_back(sim.drivers[j].force);
@@ -88,6 +92,7 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
   const Outcome one = run(p, kSteps, nullptr);
   REQUIRE(one.energy.contacts > 50);  // a pile: 86 at the end (e9e841f: springs start at the touch; 100+ before)
   REQUIRE(one.rebuilds > 5);
+  REQUIRE(one.scene_bytes >= 272 * one.bodies.size());
   for (int n : {2, 3}) {
     ThreadRanks all(n);
     std::vector<Outcome> got(n);
@@ -113,6 +118,10 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
       CHECK(got[r].cuts >= 2);                   // by body counts at the first rebuild, then by the work
       CHECK(got[r].cuts < got[r].rebuilds);      // a balanced cut is kept
       CHECK(got[r].share * n < 1.1);             // no rank's share of the work 10% over the mean
+      // Nothing gathers the state (no probe, drag or fluid): after its first cut a rank keeps the
+      // scene's constants alone (shape, scale, mass, inertia, group, id: 52 bytes a body), its
+      // bodies' state in its store; one process keeps the state too (272 bytes a body).
+      CHECK(got[r].scene_bytes <= 52 * one.bodies.size());
       shares += got[r].share;
     }
     CHECK(owned == one.bodies.size());  // every body moved by exactly one rank
