@@ -3,14 +3,14 @@
 # 0.2 is 11,766 steps, ~1,000 rebuilds; the start-up, ~55e6 instructions, is then under 1%), each at
 # 1 and 2 threads, ROUNDS rounds, printing polydem's own loop time (s, "N steps in X s") and each
 # build's efficiency t(1) / (2 t(2)) a round. A quiet machine's figure: under load it is noise.
-# usage: tools/bench/pour/time_efficiency.sh NEW_POLYDEM OLD_POLYDEM [ROUNDS=5] [UNTIL=0.2] [STATE]
+# usage: tools/bench/pour/time_efficiency.sh NEW_POLYDEM OLD_POLYDEM [ROUNDS=5] [UNTIL=0.2] [STATE: made from the sample when not given]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 new=$1 old=$2 rounds=${3:-5} until=${4:-0.2}
-state=${5:-/work/states/pour20/boxfill_t0.1.bin}
 work=$(mktemp -d)
-sed "s#\.\./\.\./shapes/#$here/../../../shapes/#; s#dt: auto#dt: 8.498501385433668e-06#" \
-  "$here/../../../samples/box-fill/scene.yaml" > "$work/pour.yaml"
+source "$here/state.sh"
+state=${5:-$(pour_state "$(realpath "$new")" "$work")}
+pour_yaml "$work"
 export GOMP_SPINCOUNT=${GOMP_SPINCOUNT:-1000}  # both builds alike (polydem's own default)
 loop_seconds() {  # binary threads
   rm -rf "$work/out"
