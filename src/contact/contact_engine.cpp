@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <numeric>
 #include <utility>
 
 #include "polydem/parallel.hpp"
@@ -393,12 +394,11 @@ void ContactEngine::cut_passes(int threads) {
   const std::size_t n = pass_weight_.size();
   if (threads < 2 || n != direct_.sums.size() || direct_.split.threads != threads) return;
   std::vector<double> before(n + 1, 0.0);  // instructions a step of the bodies before b
-  std::vector<double> weight(pass_weight_.begin(), pass_weight_.end());
-  if (!spheres_only_) {
-    for (double& w : weight) w += kMeasureInstructions;
-    for (std::uint32_t b : listed_) weight[b] += kPoseInstructions;
-  }
-  for (std::size_t b = 0; b < n; ++b) before[b + 1] = before[b] + weight[b];
+  const double measure = spheres_only_ ? 0.0 : kMeasureInstructions;
+  for (std::size_t b = 0; b < n; ++b) before[b + 1] = pass_weight_[b] + measure;
+  if (!spheres_only_)
+    for (std::uint32_t b : listed_) before[b + 1] += kPoseInstructions;
+  std::partial_sum(before.begin(), before.end(), before.begin());
   const std::uint32_t* walk = direct_.split.body_cut.data();
   double heaviest = 0.0;
   for (int t = 0; t < threads; ++t) heaviest = std::max(heaviest, before[walk[t + 1]] - before[walk[t]]);

@@ -219,17 +219,7 @@ void mark_spheres(const B& b, RotorGroups& groups) {
     groups.spheres_in_order &= s[k] == k;
   }
 }
-}  // namespace integrate_detail
 
-template <class B>
-RotorGroups group_rotors(const B& b, const std::vector<std::uint32_t>& rows, const std::vector<Shape>& shapes) {
-  RotorGroups groups;
-  for (std::uint32_t i : rows) integrate_detail::add_rotor(b, i, &shapes, groups);
-  integrate_detail::mark_spheres(b, groups);
-  return groups;
-}
-
-namespace integrate_detail {
 // v += F h/m; L += R^T T h; w from L (an isotropic body: w += T h / I, w = L / I in any frame;
 // a sphere: R the identity). Inlined into the step's passes: a call per body and pass cost ~10%
 // of a kick.
@@ -324,6 +314,14 @@ template <Rotor kRotor, class Arrays>
   }
 }
 }  // namespace integrate_detail
+
+template <class B>
+RotorGroups group_rotors(const B& b, const std::vector<std::uint32_t>& rows, const std::vector<Shape>& shapes) {
+  RotorGroups groups;
+  for (std::uint32_t i : rows) integrate_detail::add_rotor(b, i, &shapes, groups);
+  integrate_detail::mark_spheres(b, groups);
+  return groups;
+}
 
 // kick(b, h, groups) with before(i) run on each body just before its kick (a step's closing
 // kick: the contact forces summed into force[i]): one pass and one barrier for both (none when
