@@ -56,15 +56,17 @@ TEST_CASE("accuracy: a cube landing almost flat, its far edge joining mid-contac
   // The far edge's two vertices join the near edge's patch within a step of the touch (kJoinGap):
   // their start is no onset of the patch's force, but each share moves (patch_push.hpp).
   const double at_auto = cube_join_error(0.1), at_005 = cube_join_error(0.05), at_0025 = cube_join_error(0.025);
+  const double at_03 = cube_join_error(0.3);
   const double order = std::log2(at_auto / at_005), order_fine = std::log2(at_005 / at_0025);
-  std::printf("cube joining edge, worst of 8 touch places: error %.2e at 0.1, %.2e at 0.05, %.2e at 0.025, order %.2f, %.2f\n",
-              at_auto, at_005, at_0025, order, order_fine);
+  std::printf("cube joining edge, worst of 8 touch places: error %.2e at 0.1, %.2e at 0.05, %.2e at 0.025, order %.2f, %.2f; %.2e at 0.3\n",
+              at_auto, at_005, at_0025, order, order_fine, at_03);
   // Measured 9.90e-4 at 0.1, 3.09e-4 at 0.05, 7.34e-5 at 0.025: order 1.68, then 2.07 (acc20's
   // onsets alone: 1.44e-3, 5.04e-4, 1.03e-4, order 1.51). patch_push.hpp integrates the moving
   // shares' impulse; still open (issue 16): the cube turns within the join step, which the drift
   // at v(n+1/2) misses, a first-order angle error ~ lag x touch time (orders 1.2-1.4 at gaps of
   // 5e-8 to 1e-7 m). The 1.8 waits for a position correction of the join step.
   CHECK(at_auto <= 3e-3);
+  CHECK(at_03 <= 0.015);  // the cube rows' goal; measured 3.99e-3
   CHECK(order >= 1.6);
   CHECK(order_fine >= 1.8);
 }

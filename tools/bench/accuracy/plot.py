@@ -2,7 +2,8 @@
 
 usage: plot.py results.csv out.png [reference.csv]
 Also prints, per case, the largest time-step fraction from which every smaller one is below
-1% and 0.1% error, the observed order between neighbouring steps, and against the reference
+1% and 0.1% error, the observed order between neighbouring steps, the least-squares slope over
+errors 1e-4 to 1e-2 (the reference's too), and against the reference
 the wall time from which every smaller step stays within 1e-3. A reference CSV (an earlier commit's run) is drawn dashed in the same colours.
 """
 import csv
@@ -52,6 +53,18 @@ def orders(runs):
             if e0 > 0 and e1 > 1e-5]
 
 
+def slope(runs, low=1e-4, high=1e-2):
+    """Least-squares slope of log error on log dt over the runs whose error is within [low, high]
+    (issue 16's "slope 2 down to 1e-4"), with the step fractions it spans; None under two runs."""
+    window = [(math.log(f), math.log(e)) for f, _, e in runs if low <= e <= high]
+    if len(window) < 2:
+        return None
+    mx = sum(x for x, _ in window) / len(window)
+    my = sum(y for _, y in window) / len(window)
+    fit = sum((x - mx) * (y - my) for x, y in window) / sum((x - mx) ** 2 for x, _ in window)
+    return fit, math.exp(min(window)[0]), math.exp(max(window)[0]), len(window)
+
+
 def main(path, png, reference=None):
     cases, commit = read(path)
     fig, ax = plt.subplots(figsize=(7, 5))
@@ -66,8 +79,15 @@ def main(path, png, reference=None):
             ok = [f for f, _, _ in runs if all(e <= target for g, _, e in runs if g <= f)]
             print(f"{name}: error <= {target:g} for dt/critical <= {max(ok) if ok else 'none'}")
         print(f"{name}: order " + " ".join(f"{f:g}:{o:.1f}" for f, o in orders(runs)))
+        fit = slope(runs)
+        if fit:
+            print(f"{name}: slope {fit[0]:.2f} over errors 1e-4 to 1e-2 (dt/critical {fit[1]:g} to {fit[2]:g}, {fit[3]} runs)")
     if reference:
         old, old_commit = read(reference)
+        for name, runs in old.items():
+            fit = slope(runs)
+            if fit:
+                print(f"{name} at {old_commit}: slope {fit[0]:.2f} over errors 1e-4 to 1e-2 (dt/critical {fit[1]:g} to {fit[2]:g})")
         for name in old.keys() & cases.keys():
             new, before = at_error(cases[name], 1e-3), at_error(old[name], 1e-3)
             if new and before:
