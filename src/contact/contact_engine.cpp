@@ -7,6 +7,7 @@
 #include <numeric>
 #include <utility>
 
+#include "polydem/line_audit.hpp"
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
 #include "contact/candidate_memory.hpp"
@@ -469,8 +470,78 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
   close_forces(bodies, drivers);
 }
 
+#ifdef POLYDEM_LINE_AUDIT
+// The arrays the step's stages touch, named for this step's tables (line_audit.hpp).
+void ContactEngine::name_arrays(const LocalBodies& bodies) const {
+  using audit::name_vector;
+  name_vector(*bodies.position, "bodies.position");
+  name_vector(*bodies.orientation, "bodies.orientation");
+  name_vector(*bodies.velocity, "bodies.velocity");
+  name_vector(*bodies.angular_velocity, "bodies.angular_velocity");
+  name_vector(*bodies.velocity_end, "bodies.velocity_end");
+  name_vector(*bodies.angular_velocity_end, "bodies.angular_velocity_end");
+  name_vector(*bodies.shape, "bodies.shape");
+  name_vector(*bodies.scale, "bodies.scale");
+  name_vector(*bodies.mass, "bodies.mass");
+  name_vector(*bodies.force, "bodies.force");
+  name_vector(*bodies.torque, "bodies.torque");
+  name_vector(posed_, "engine.posed");
+  name_vector(world_vertices_, "engine.world_vertices");
+  name_vector(listed_, "engine.listed");
+  name_vector(bounding_, "engine.bounding");
+  name_vector(core_reach_, "engine.core_reach");
+  name_vector(radius_, "engine.radius");
+  name_vector(trigger_.displacement(), "trigger.displacement");
+  name_vector(driver_begin_, "engine.driver_begin");
+  name_vector(pass_cut_, "engine.pass_cut");
+  for (const auto& [list, prefix] : {std::pair{&body_list_, "body"}, std::pair{&driver_list_, "driver"}}) {
+    const auto named = [&](const auto& v, const char* what) {
+      static thread_local std::string s;  // audit::name keeps its own copy
+      s = std::string(prefix) + "." + what;
+      name_vector(v, s.c_str());
+    };
+    named(list->pairs, "pairs");
+    named(list->slot_begin, "slot_begin");
+    named(list->features, "features");
+    named(list->state_of, "state_of");
+    named(list->slots, "slots");
+    named(list->active, "active");
+    named(list->slot_gap, "slot_gap");
+    named(list->gap_at_build, "gap_at_build");
+    named(list->force_i, "force_i");
+    named(list->torque_i, "torque_i");
+    named(list->torque_j, "torque_j");
+    named(list->touching, "touching");
+    named(list->block_contacts, "block_contacts");
+    named(list->pending, "pending");
+    named(list->block_ended, "block_ended");
+    named(list->linear_steps, "linear_steps");
+    for (std::uint32_t g = 0; g < list->states.size(); g += 256) {
+      const SlotState& first = list->states[g];
+      audit::name(&first, 256 * sizeof(SlotState), (std::string(prefix) + ".states").c_str());
+    }
+  }
+  name_vector(direct_.sums, "direct.sums");
+  name_vector(direct_.foreign, "direct.foreign");
+  name_vector(direct_.pace, "direct.pace");
+  name_vector(direct_.zero, "direct.zero");
+  name_vector(direct_.split.foreign, "split.foreign");
+  name_vector(direct_.split.foreign_side, "split.foreign_side");
+  name_vector(direct_.split.foreign_begin, "split.foreign_begin");
+  name_vector(direct_.split.home_begin, "split.home_begin");
+  name_vector(direct_.split.homes, "split.homes");
+  name_vector(direct_.split.late_begin, "split.late_begin");
+  name_vector(direct_.split.late, "split.late");
+  name_vector(direct_.split.cut, "split.cut");
+  name_vector(direct_.split.body_cut, "split.body_cut");
+}
+#endif
+
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
                            AfterPairs then) {
+#ifdef POLYDEM_LINE_AUDIT
+  if (omp_get_thread_num() == 0) name_arrays(bodies);
+#endif
   if (pose_bodies && !spheres_only_) pose(bodies, listed_);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
@@ -485,6 +556,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                               view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
                               view.mass,              trigger_.displacement().data(),
                               world_vertices_.data(), vertex_offset_.data()};
+    const audit::Scope walk(audit::kWalk);
     with_law(settings_.particle, [&](auto parts) {
       using Parts = decltype(parts);
       all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
@@ -493,6 +565,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
     });
   }
   if (!driver_list_.pairs.empty()) {
+    const audit::Scope driver_pairs(audit::kDriverPairs);
     with_law(settings_.driver, [&](auto parts) {
       using Parts = decltype(parts);
       const LawParams& law = settings_.driver;

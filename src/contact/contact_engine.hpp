@@ -200,6 +200,9 @@ class ContactEngine {
   std::optional<EqualSpheres> equal_spheres(const LocalBodies& bodies) const;
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void reduce_bodies(const LocalBodies& bodies);
+#ifdef POLYDEM_LINE_AUDIT
+  void name_arrays(const LocalBodies& bodies) const;
+#endif
   void reduce_drivers(Drivers& drivers) const;
   void add_totals();
   void flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost);
