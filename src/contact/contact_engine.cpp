@@ -225,8 +225,8 @@ void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint3
   wait = wait && omp_get_level() > 0;  // a region of its own ends at its own barrier
   in_team(n >= kParallelMinItems, [&] {
     const PoseArrays a = arrays;
-    const auto [first, last] = team_share(some, pass_cut());  // the bodies this thread moved
-    for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
+    for (const auto [first, last] : team_shares(some, pass_cut()))  // the bodies this thread moved
+      for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
     if (wait) {
 #pragma omp barrier
     }
@@ -388,6 +388,39 @@ void ContactEngine::weigh_bodies(bool passes) {
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
 }
 
+namespace {
+
+// The passes' cut folded on the walk's body cut `walk` (TeamCut::folded), from `before` (per body + 1,
+// the passes' work of the bodies before it): thread t keeps its walk chunk's bodies, the last one
+// only up to an even share, and the bodies past that are dealt to the threads from the last but
+// one to the first, each up to an even share (thread 0 takes the rest). Returns the heaviest
+// thread's work: a pour's pile, cut by the walk, stays on the cores that walk it (issue 19).
+double fold_cut(const std::uint32_t* walk, const std::vector<double>& before, int threads,
+                std::vector<std::uint32_t>& at) {
+  const std::size_t n = before.size() - 1;
+  const double even = before[n] / threads;
+  auto reach = [&](std::uint32_t from, double work) {  // the body where the work from `from` reaches `work`
+    const auto b = std::lower_bound(before.begin() + from, before.end(), before[from] + work) - before.begin();
+    return std::uint32_t(std::min(std::size_t(b), n));
+  };
+  at.assign(2 * threads + 1, std::uint32_t(n));
+  std::copy(walk, walk + threads, at.begin());
+  at[threads] = at[threads + 1] = reach(walk[threads - 1], even);
+  for (int t = threads - 2; t > 0; --t) {  // thread t's second piece: 2 threads - 1 - t
+    const double need = even - (before[walk[t + 1]] - before[walk[t]]);
+    const std::uint32_t from = at[2 * threads - 1 - t];
+    at[2 * threads - t] = need > 0.0 ? reach(from, need) : from;
+  }
+  double heaviest = 0.0;
+  for (int t = 0; t < threads; ++t) {
+    const int u = 2 * threads - 1 - t;
+    heaviest = std::max(heaviest, before[at[t + 1]] - before[at[t]] + before[at[u + 1]] - before[at[u]]);
+  }
+  return heaviest;
+}
+
+}  // namespace
+
 // The first region's own cut where the walk's leaves some thread kOwnPassCut times an even share
 // of its passes or more: below that, a body moved and then walked by one thread stays in its cache.
 void ContactEngine::cut_passes(int threads) {
@@ -404,15 +437,18 @@ void ContactEngine::cut_passes(int threads) {
   double heaviest = 0.0;
   for (int t = 0; t < threads; ++t) heaviest = std::max(heaviest, before[walk[t + 1]] - before[walk[t]]);
   if (heaviest < kOwnPassCut * before[n] / threads) return;
-  pass_cut_.assign(threads + 1, std::uint32_t(n));
+  if (walk_weighed_passes) {
+    weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
+    direct_.cut(body_list_, threads);
+  }
+  pass_threads_ = threads;
+  own_pass_cut_ = true;
+  pass_folded_ = fold_cut(direct_.split.body_cut.data(), before, threads, pass_cut_) < kOwnPassCut * before[n] / threads;
+  if (pass_folded_) return;
+  pass_cut_.assign(threads + 1, std::uint32_t(n));  // the walk's chunks are uneven in themselves: an even cut
   pass_cut_[0] = 0;
   for (int t = 1; t < threads; ++t)
     pass_cut_[t] = std::uint32_t(std::lower_bound(before.begin(), before.end(), before[n] * t / threads) - before.begin());
-  pass_threads_ = threads;
-  own_pass_cut_ = true;
-  if (!walk_weighed_passes) return;
-  weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
-  direct_.cut(body_list_, threads);
 }
 
 // A moving driver can reach bodies the lists did not pair it with: how far its surface may have
@@ -442,8 +478,8 @@ void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {
   // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
   if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
-    const auto [first, last] = team_share(position.size(), pass_cut());
-    for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
+    for (const auto [first, last] : team_shares(position.size(), pass_cut()))
+      for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
   if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut());
 }

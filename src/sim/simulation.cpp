@@ -278,7 +278,7 @@ void Simulation::step(bool leave_kick_open) {
       using Then = ContactEngine::AfterPairs;
       engine_->forces(local, drivers, dt_, false, leave_kick_open ? Then::region_ends : Then::read_sums);
       const audit::Scope kick(audit::kKick);
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut(), false);
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->pass_cut(), false);
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(0.5 * dt_);
     } else {
@@ -302,7 +302,7 @@ void Simulation::close_step() {
     if (ranks_)
       ranks_->kick_closing(0.5 * dt_);
     else
-      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut(), false);
+      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->pass_cut(), false);
   });
   sums_taken();
 }
