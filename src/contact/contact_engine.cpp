@@ -7,6 +7,7 @@
 #include <numeric>
 #include <utility>
 
+#include "polydem/line_audit.hpp"
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
 #include "contact/candidate_memory.hpp"
@@ -224,8 +225,8 @@ void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint3
   wait = wait && omp_get_level() > 0;  // a region of its own ends at its own barrier
   in_team(n >= kParallelMinItems, [&] {
     const PoseArrays a = arrays;
-    const auto [first, last] = team_share(some, pass_cut());  // the bodies this thread moved
-    for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
+    for (const auto [first, last] : team_shares(some, pass_cut()))  // the bodies this thread moved
+      for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
     if (wait) {
 #pragma omp barrier
     }
@@ -387,6 +388,39 @@ void ContactEngine::weigh_bodies(bool passes) {
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
 }
 
+namespace {
+
+// The passes' cut folded on the walk's body cut `walk` (TeamCut::folded), from `before` (per body + 1,
+// the passes' work of the bodies before it): thread t keeps its walk chunk's bodies, the last one
+// only up to an even share, and the bodies past that are dealt to the threads from the last but
+// one to the first, each up to an even share (thread 0 takes the rest). Returns the heaviest
+// thread's work: a pour's pile, cut by the walk, stays on the cores that walk it (issue 19).
+double fold_cut(const std::uint32_t* walk, const std::vector<double>& before, int threads,
+                std::vector<std::uint32_t>& at) {
+  const std::size_t n = before.size() - 1;
+  const double even = before[n] / threads;
+  auto reach = [&](std::uint32_t from, double work) {  // the body where the work from `from` reaches `work`
+    const auto b = std::lower_bound(before.begin() + from, before.end(), before[from] + work) - before.begin();
+    return std::uint32_t(std::min(std::size_t(b), n));
+  };
+  at.assign(2 * threads + 1, std::uint32_t(n));
+  std::copy(walk, walk + threads, at.begin());
+  at[threads] = at[threads + 1] = reach(walk[threads - 1], even);
+  for (int t = threads - 2; t > 0; --t) {  // thread t's second piece: 2 threads - 1 - t
+    const double need = even - (before[walk[t + 1]] - before[walk[t]]);
+    const std::uint32_t from = at[2 * threads - 1 - t];
+    at[2 * threads - t] = need > 0.0 ? reach(from, need) : from;
+  }
+  double heaviest = 0.0;
+  for (int t = 0; t < threads; ++t) {
+    const int u = 2 * threads - 1 - t;
+    heaviest = std::max(heaviest, before[at[t + 1]] - before[at[t]] + before[at[u + 1]] - before[at[u]]);
+  }
+  return heaviest;
+}
+
+}  // namespace
+
 // The first region's own cut where the walk's leaves some thread kOwnPassCut times an even share
 // of its passes or more: below that, a body moved and then walked by one thread stays in its cache.
 void ContactEngine::cut_passes(int threads) {
@@ -403,15 +437,18 @@ void ContactEngine::cut_passes(int threads) {
   double heaviest = 0.0;
   for (int t = 0; t < threads; ++t) heaviest = std::max(heaviest, before[walk[t + 1]] - before[walk[t]]);
   if (heaviest < kOwnPassCut * before[n] / threads) return;
-  pass_cut_.assign(threads + 1, std::uint32_t(n));
+  if (walk_weighed_passes) {
+    weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
+    direct_.cut(body_list_, threads);
+  }
+  pass_threads_ = threads;
+  own_pass_cut_ = true;
+  pass_folded_ = fold_cut(direct_.split.body_cut.data(), before, threads, pass_cut_) < kOwnPassCut * before[n] / threads;
+  if (pass_folded_) return;
+  pass_cut_.assign(threads + 1, std::uint32_t(n));  // the walk's chunks are uneven in themselves: an even cut
   pass_cut_[0] = 0;
   for (int t = 1; t < threads; ++t)
     pass_cut_[t] = std::uint32_t(std::lower_bound(before.begin(), before.end(), before[n] * t / threads) - before.begin());
-  pass_threads_ = threads;
-  own_pass_cut_ = true;
-  if (!walk_weighed_passes) return;
-  weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
-  direct_.cut(body_list_, threads);
 }
 
 // A moving driver can reach bodies the lists did not pair it with: how far its surface may have
@@ -441,8 +478,8 @@ void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {
   // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
   if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
-    const auto [first, last] = team_share(position.size(), pass_cut());
-    for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
+    for (const auto [first, last] : team_shares(position.size(), pass_cut()))
+      for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
   if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut());
 }
@@ -469,8 +506,78 @@ void ContactEngine::compute(const LocalBodies& bodies, Drivers& drivers, double 
   close_forces(bodies, drivers);
 }
 
+#ifdef POLYDEM_LINE_AUDIT
+// The arrays the step's stages touch, named for this step's tables (line_audit.hpp).
+void ContactEngine::name_arrays(const LocalBodies& bodies) const {
+  using audit::name_vector;
+  name_vector(*bodies.position, "bodies.position");
+  name_vector(*bodies.orientation, "bodies.orientation");
+  name_vector(*bodies.velocity, "bodies.velocity");
+  name_vector(*bodies.angular_velocity, "bodies.angular_velocity");
+  name_vector(*bodies.velocity_end, "bodies.velocity_end");
+  name_vector(*bodies.angular_velocity_end, "bodies.angular_velocity_end");
+  name_vector(*bodies.shape, "bodies.shape");
+  name_vector(*bodies.scale, "bodies.scale");
+  name_vector(*bodies.mass, "bodies.mass");
+  name_vector(*bodies.force, "bodies.force");
+  name_vector(*bodies.torque, "bodies.torque");
+  name_vector(posed_, "engine.posed");
+  name_vector(world_vertices_, "engine.world_vertices");
+  name_vector(listed_, "engine.listed");
+  name_vector(bounding_, "engine.bounding");
+  name_vector(core_reach_, "engine.core_reach");
+  name_vector(radius_, "engine.radius");
+  name_vector(trigger_.displacement(), "trigger.displacement");
+  name_vector(driver_begin_, "engine.driver_begin");
+  name_vector(pass_cut_, "engine.pass_cut");
+  for (const auto& [list, prefix] : {std::pair{&body_list_, "body"}, std::pair{&driver_list_, "driver"}}) {
+    const auto named = [&](const auto& v, const char* what) {
+      static thread_local std::string s;  // audit::name keeps its own copy
+      s = std::string(prefix) + "." + what;
+      name_vector(v, s.c_str());
+    };
+    named(list->pairs, "pairs");
+    named(list->slot_begin, "slot_begin");
+    named(list->features, "features");
+    named(list->state_of, "state_of");
+    named(list->slots, "slots");
+    named(list->active, "active");
+    named(list->slot_gap, "slot_gap");
+    named(list->gap_at_build, "gap_at_build");
+    named(list->force_i, "force_i");
+    named(list->torque_i, "torque_i");
+    named(list->torque_j, "torque_j");
+    named(list->touching, "touching");
+    named(list->block_contacts, "block_contacts");
+    named(list->pending, "pending");
+    named(list->block_ended, "block_ended");
+    named(list->linear_steps, "linear_steps");
+    for (std::uint32_t g = 0; g < list->states.size(); g += 256) {
+      const SlotState& first = list->states[g];
+      audit::name(&first, 256 * sizeof(SlotState), (std::string(prefix) + ".states").c_str());
+    }
+  }
+  name_vector(direct_.sums, "direct.sums");
+  name_vector(direct_.foreign, "direct.foreign");
+  name_vector(direct_.pace, "direct.pace");
+  name_vector(direct_.zero, "direct.zero");
+  name_vector(direct_.split.foreign, "split.foreign");
+  name_vector(direct_.split.foreign_side, "split.foreign_side");
+  name_vector(direct_.split.foreign_begin, "split.foreign_begin");
+  name_vector(direct_.split.home_begin, "split.home_begin");
+  name_vector(direct_.split.homes, "split.homes");
+  name_vector(direct_.split.late_begin, "split.late_begin");
+  name_vector(direct_.split.late, "split.late");
+  name_vector(direct_.split.cut, "split.cut");
+  name_vector(direct_.split.body_cut, "split.body_cut");
+}
+#endif
+
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
                            AfterPairs then) {
+#ifdef POLYDEM_LINE_AUDIT
+  if (omp_get_thread_num() == 0) name_arrays(bodies);
+#endif
   if (pose_bodies && !spheres_only_) pose(bodies, listed_);  // spheres: by measure_motion, where a driver pair reads the pose
   const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
                       bodies.angular_velocity->data(), bodies.velocity_end->data(),
@@ -485,6 +592,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                               view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
                               view.mass,              trigger_.displacement().data(),
                               world_vertices_.data(), vertex_offset_.data()};
+    const audit::Scope walk(audit::kWalk);
     with_law(settings_.particle, [&](auto parts) {
       using Parts = decltype(parts);
       all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
@@ -493,6 +601,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
     });
   }
   if (!driver_list_.pairs.empty()) {
+    const audit::Scope driver_pairs(audit::kDriverPairs);
     with_law(settings_.driver, [&](auto parts) {
       using Parts = decltype(parts);
       const LawParams& law = settings_.driver;

@@ -141,8 +141,9 @@ class ContactEngine {
   // The cut of the step's first region (kicks, drift, the rebuild check, the poses; each thread
   // reads only the bodies it moved): the walk's body cut, or one of its own where that leaves a
   // thread far above an even share of those passes (a pour: the falling bodies have no pairs, so
-  // all of them go to the last chunk). Set at each rebuild (cut_passes).
-  TeamCut pass_cut() const { return own_pass_cut_ ? TeamCut{pass_cut_.data(), pass_threads_} : body_cut(); }
+  // all of them go to the last chunk), folded on the walk's where it can be (TeamCut::folded: each
+  // thread still moves the bodies it walks). Set at each rebuild (cut_passes).
+  TeamCut pass_cut() const { return own_pass_cut_ ? TeamCut{pass_cut_.data(), pass_threads_, pass_folded_} : body_cut(); }
   // The body pairs' loop cut from the next step on with these shares of its work (per thread,
   // summing to 1), kept instead of following the threads' pace: no result may change (tests).
   void fix_shares(std::vector<double> shares) {
@@ -200,6 +201,9 @@ class ContactEngine {
   std::optional<EqualSpheres> equal_spheres(const LocalBodies& bodies) const;
   void mark_listed(std::size_t n_bodies, const std::vector<BodyPair>& body_pairs, const std::vector<BodyPair>& driver_pairs);
   void reduce_bodies(const LocalBodies& bodies);
+#ifdef POLYDEM_LINE_AUDIT
+  void name_arrays(const LocalBodies& bodies) const;
+#endif
   void reduce_drivers(Drivers& drivers) const;
   void add_totals();
   void flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost);
@@ -248,8 +252,9 @@ class ContactEngine {
   std::vector<std::uint32_t> driver_begin_;  // per body + 1: its driver pairs (pairs_by_body)
   DirectSums direct_;                      // the body pairs' sums, made by their loop
   std::vector<float> pass_weight_;         // per body, its passes' instructions a step (weigh_passes)
-  std::vector<std::uint32_t> pass_cut_;    // pass_threads_ + 1 bodies (pass_cut), when own_pass_cut_
+  std::vector<std::uint32_t> pass_cut_;    // pass_threads_ + 1 bodies (pass_cut), when own_pass_cut_; folded: 2 pass_threads_ + 1
   int pass_threads_ = 0;
+  bool pass_folded_ = false;               // pass_cut_ is folded on the walk's (fold_cut)
   bool own_pass_cut_ = false;
   ContactStats stats_;
   ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy

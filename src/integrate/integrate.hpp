@@ -144,16 +144,18 @@ void over_group(const Arrays& arrays, const std::vector<std::size_t>& ids, const
     const Arrays a = arrays;
     const Body each = body;  // a copy: what it holds by value stays in registers too
     const std::size_t* id = ids.data();
-    const auto [first, last] = kWalk == Walk::in_order ? team_share(n, cut) : team_share(ids, cut);
-    if constexpr (kWalk == Walk::runs) {
-      const std::size_t* at = runs->at.data();
-      std::size_t r = std::size_t(std::upper_bound(runs->at.begin(), runs->at.end(), first) - runs->at.begin()) - 1;
-      for (std::size_t k = first; k < last; k = at[++r]) {
-        const std::size_t i0 = runs->first[r] + (k - at[r]), i1 = i0 + (std::min(last, at[r + 1]) - k);
-        for (std::size_t i = i0; i < i1; ++i) each(a, i, RotorPath<kRotor>{});
+    for (const auto [first, last] : kWalk == Walk::in_order ? team_shares(n, cut) : team_shares(ids, cut)) {
+      if constexpr (kWalk == Walk::runs) {
+        if (first == last) continue;
+        const std::size_t* at = runs->at.data();
+        std::size_t r = std::size_t(std::upper_bound(runs->at.begin(), runs->at.end(), first) - runs->at.begin()) - 1;
+        for (std::size_t k = first; k < last; k = at[++r]) {
+          const std::size_t i0 = runs->first[r] + (k - at[r]), i1 = i0 + (std::min(last, at[r + 1]) - k);
+          for (std::size_t i = i0; i < i1; ++i) each(a, i, RotorPath<kRotor>{});
+        }
+      } else {
+        for (std::size_t k = first; k < last; ++k) each(a, kWalk == Walk::in_order ? k : id[k], RotorPath<kRotor>{});
       }
-    } else {
-      for (std::size_t k = first; k < last; ++k) each(a, kWalk == Walk::in_order ? k : id[k], RotorPath<kRotor>{});
     }
     if (wait) {
 #pragma omp barrier

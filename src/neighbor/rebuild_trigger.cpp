@@ -68,13 +68,13 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   if (q_built.empty()) {  // points: radius 0, displacement_bound is |dx|, and no bound is kept
     exceeded = points_exceed(x, limit, cut);
   } else {
-    const auto [first, last] = team_share(n, cut);
-    for (std::size_t i = first; i < last; ++i) {
-      const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
-      displacement_[i] = d;
-      // Written as !(d <= limit) so a NaN state also asks for a rebuild.
-      if (!(d <= limit)) exceeded = true;
-    }
+    for (const auto [first, last] : team_shares(n, cut))
+      for (std::size_t i = first; i < last; ++i) {
+        const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
+        displacement_[i] = d;
+        // Written as !(d <= limit) so a NaN state also asks for a rebuild.
+        if (!(d <= limit)) exceeded = true;
+      }
   }
   // Only ever set: any order gives the same. No barrier here: take_exceeded comes after the
   // region's end (needs_rebuild, ContactEngine::lists_stale, Simulation::step), its barrier.
@@ -84,9 +84,9 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
 // Not inlined: measure with both loops no longer inlines displacement_bound (+12% of its cost, cubes).
 [[gnu::noinline]] bool RebuildTrigger::points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const {
   bool exceeded = false;
-  const auto [first, last] = team_share(x.size(), cut);
-  for (std::size_t i = first; i < last; ++i)
-    if (moved_past(x[i], x_built[i], limit)) exceeded = true;
+  for (const auto [first, last] : team_shares(x.size(), cut))
+    for (std::size_t i = first; i < last; ++i)
+      if (moved_past(x[i], x_built[i], limit)) exceeded = true;
   return exceeded;
 }
 

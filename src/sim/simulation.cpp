@@ -5,6 +5,7 @@
 
 #include "integrate/integrate.hpp"
 #include "polydem/error.hpp"
+#include "polydem/line_audit.hpp"
 #include "polydem/parallel.hpp"
 #include "sim/body_order.hpp"
 #include "sim/build_bodies.hpp"
@@ -227,7 +228,9 @@ void Simulation::step(bool leave_kick_open) {
   PointWatch watch;
   const bool watched =
       from_gravity && (one_process ? engine_->watch_motion(all_owned(bodies), watch) : ranks_->watch_motion(watch));
+  audit::serial(audit::kSerial);
   in_team(team, [&] {
+    const audit::Scope passes(audit::kPasses);
     // The rebuild check reads the bodies of this thread's share of the cut, which its pass moved:
     // no barrier between them when the cut is this team's (the region's end is the one needed).
     const bool wait = cut.threads != omp_get_num_threads();
@@ -264,7 +267,9 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->compute(bodies, drivers, dt_, *engine_);
     } else {
       stale = engine_->stale_after_measure(all_owned(bodies), drivers);
+      audit::serial(audit::kRebuild);
       if (stale) engine_->rebuild(all_owned(bodies), drivers, true);  // region 1 posed the listed bodies
+      audit::serial(audit::kSerial);
     }
   }
   in_team(team, [&] {
@@ -272,19 +277,23 @@ void Simulation::step(bool leave_kick_open) {
       const LocalBodies local = all_owned(bodies);
       using Then = ContactEngine::AfterPairs;
       engine_->forces(local, drivers, dt_, false, leave_kick_open ? Then::region_ends : Then::read_sums);
-      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->body_cut(), false);
+      const audit::Scope kick(audit::kKick);
+      if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->pass_cut(), false);
     } else if (contacts) {
       if (!leave_kick_open) ranks_->kick_closing(0.5 * dt_);
     } else {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
+  audit::serial(audit::kClose);
   if (contacts && one_process) engine_->close_forces(all_owned(bodies), drivers);
+  audit::serial(audit::kSerial);
   if (contacts && !leave_kick_open) sums_taken();
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
   ++step_;
   if (ledger_closes(step_)) close_ledger();
+  audit::step_end();
 }
 
 void Simulation::close_step() {
@@ -293,7 +302,7 @@ void Simulation::close_step() {
     if (ranks_)
       ranks_->kick_closing(0.5 * dt_);
     else
-      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut(), false);
+      kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->pass_cut(), false);
   });
   sums_taken();
 }

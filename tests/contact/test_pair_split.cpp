@@ -298,32 +298,56 @@ TEST_CASE("a cut's crossing work moves it: a star's foreign pairs weighed twice 
   CHECK(crossed.foreign_side.size() == n_pairs - crossed.cut[1]);  // chunk 1's pairs, of the second cut
 }
 
+// Thread t's bodies under `cut` at `threads`, each body's count of takers (ids: every third body).
+struct Taken {
+  std::vector<int> taken, owner, taken_ids;
+};
+Taken take(const std::vector<std::uint32_t>& at, int cut_threads, bool folded, int threads,
+           const std::vector<std::size_t>& ids) {
+  Taken r{std::vector<int>(1000, 0), std::vector<int>(1000, -1), std::vector<int>(ids.size(), 0)};
+#pragma omp parallel num_threads(threads)
+  {
+    for (const auto [first, last] : team_shares(1000, TeamCut{at.data(), cut_threads, folded}))
+      for (std::size_t b = first; b < last; ++b) {
+#pragma omp atomic
+        ++r.taken[b];
+        r.owner[b] = omp_get_thread_num();
+      }
+    for (const auto [first, last] : team_shares(ids, TeamCut{at.data(), cut_threads, folded}))
+      for (std::size_t k = first; k < last; ++k) {
+#pragma omp atomic
+        ++r.taken_ids[k];
+      }
+  }
+  return r;
+}
+
 TEST_CASE("a team's shares of the bodies take each body once, by the cut made for its size", "[pair_split]") {
   const std::vector<std::uint32_t> at = {0, 10, 10, 700, 1000};  // four threads, one with no body
   std::vector<std::size_t> ids;  // every third body
   for (std::size_t b = 0; b < 1000; b += 3) ids.push_back(b);
   for (int threads : {4, 3}) {  // the cut's team, and another (static shares)
-    std::vector<int> taken(1000, 0), owner(1000, -1), taken_ids(ids.size(), 0);
-#pragma omp parallel num_threads(threads)
-    {
-      const auto [first, last] = team_share(1000, TeamCut{at.data(), 4});
-      for (std::size_t b = first; b < last; ++b) {
-#pragma omp atomic
-        ++taken[b];
-        owner[b] = omp_get_thread_num();
-      }
-      const auto [id_first, id_last] = team_share(ids, TeamCut{at.data(), 4});
-      for (std::size_t k = id_first; k < id_last; ++k) {
-#pragma omp atomic
-        ++taken_ids[k];
-      }
-    }
+    const Taken r = take(at, 4, false, threads, ids);
     CAPTURE(threads);
-    CHECK(std::count(taken.begin(), taken.end(), 1) == 1000);
-    CHECK(std::count(taken_ids.begin(), taken_ids.end(), 1) == long(ids.size()));
+    CHECK(std::count(r.taken.begin(), r.taken.end(), 1) == 1000);
+    CHECK(std::count(r.taken_ids.begin(), r.taken_ids.end(), 1) == long(ids.size()));
     if (threads == 4)
       for (int t = 0; t < 4; ++t)
-        for (std::uint32_t b = at[t]; b < at[t + 1]; ++b) CHECK(owner[b] == t);
+        for (std::uint32_t b = at[t]; b < at[t + 1]; ++b) CHECK(r.owner[b] == t);
+  }
+}
+
+TEST_CASE("a folded cut gives thread t pieces t and 2 threads - 1 - t, each body once", "[pair_split]") {
+  const std::vector<std::uint32_t> at = {0, 100, 400, 400, 1000};  // two threads: 0 takes [0, 100) and [400, 1000)
+  std::vector<std::size_t> ids;
+  for (std::size_t b = 0; b < 1000; b += 3) ids.push_back(b);
+  for (int threads : {2, 3}) {  // the cut's team, and another (static shares)
+    const Taken r = take(at, 2, true, threads, ids);
+    CAPTURE(threads);
+    CHECK(std::count(r.taken.begin(), r.taken.end(), 1) == 1000);
+    CHECK(std::count(r.taken_ids.begin(), r.taken_ids.end(), 1) == long(ids.size()));
+    if (threads == 2)
+      for (std::uint32_t b = 0; b < 1000; ++b) CHECK(r.owner[b] == (b >= 100 && b < 400 ? 1 : 0));
   }
 }
 

@@ -129,7 +129,8 @@ TEST_CASE("4,500 cubes and hexagonal prisms in a drum with a servo lid and a bal
 TEST_CASE("A pour: 1,000 prisms falling apart above 400 touching cubes take the passes' own cut, same bits at 1, 2 and 3 threads",
           "[determinism][threads]") {
   // The cubes' pairs cut the walk (the prisms have none), so its body cut would leave every
-  // falling prism's passes to the last thread: ContactEngine::pass_cut evens them instead.
+  // falling prism's passes to the last thread: ContactEngine::pass_cut evens them instead,
+  // folded so that each thread still moves the cubes it walks (TeamCut::folded).
   const Shape cube = cube_shape(0.006, 0.0005), prism = prism_shape(6, 0.0031, 0.006, 0.0005, "prism");
   std::vector<BodySpec> specs;
   for (int k = 0; k < 400; ++k)  // a 20 x 20 layer (7 mm cubes) on the floor, 0.2 mm gaps
@@ -145,9 +146,14 @@ TEST_CASE("A pour: 1,000 prisms falling apart above 400 touching cubes take the 
   omp_set_num_threads(1);
   const TeamCut passes = sim.engine().pass_cut(), walk = sim.engine().body_cut();
   REQUIRE(passes.threads == 2);
-  CHECK(passes.at != walk.at);  // a cut of its own
-  CHECK(passes.at[1] > 400);     // thread 0 moves some of the prisms too
+  CHECK(passes.at != walk.at);  // a cut of its own, folded on the walk's
+  REQUIRE(passes.folded);
   CHECK(walk.at[1] < 400);
+  CHECK(passes.at[1] == walk.at[1]);  // each thread moves the cubes it walks,
+  CHECK(passes.at[2] > 400);          // thread 1 some of the prisms after them,
+  CHECK(passes.at[3] == passes.at[2]);
+  CHECK(passes.at[3] < 1400);         // thread 0 the rest
+  CHECK(passes.at[4] == 1400);
   const std::uint64_t one = run(1, scene, lib, specs, 60).hash;
   CHECK(run(2, scene, lib, specs, 60).hash == one);
   CHECK(run(3, scene, lib, specs, 60).hash == one);
