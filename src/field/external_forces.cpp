@@ -72,11 +72,9 @@ ExactSum ExternalForces::add(const FieldBodies& rows) {
     power_[b] = f.dot(v);
   });
   ExactSum power;  // W
+  power.add_all(power_.data(), rows.size);
   outside_ = 0;
-  for (std::size_t b = 0; b < rows.size; ++b) {
-    power.add(power_[b]);
-    outside_ += outside_flag_[b];
-  }
+  for (std::size_t b = 0; b < rows.size && grid_; ++b) outside_ += outside_flag_[b];
   return power;
 }
 
