@@ -235,8 +235,8 @@ class OutputWriter {
   bool energy_row() {
     if (!sim_.scene().output.csv_every) return false;
     const OutputSettings& out = sim_.scene().output;
-    const bool reads_bodies = fluid_grid() || !out.flow_probes.empty() || !out.repose_probes.empty();
-    if (reads_bodies) sim_.gather_bodies();  // the fluid's row and the probes read every body (rank 0's copy)
+    const bool reads_bodies = sim_.external() || !out.flow_probes.empty() || !out.repose_probes.empty();
+    if (reads_bodies) sim_.gather_bodies();  // fluid.csv and the probes read every body (rank 0's copy)
     sim_.sum_energy();                        // each rank's part of the energies, reduced exactly
     const std::size_t outside = sim_.bodies_outside_grid();  // a collective too
     if (energy_) write_rows(outside);
