@@ -37,6 +37,10 @@ class ExactSum {
     digit_[k + 2] += (std::int64_t(w >> 64) ^ sign) - sign;
     if (++terms_ == kTermsBeforeCarry) carry();
   }
+  // The same sum as add() of each of x[0..n), ~3x fewer instructions a term: the terms'
+  // mantissas are first summed as integers by sign and exponent, then each exponent's total
+  // is added once (a long run of terms: drag and fluid forces' power, one a body a step).
+  void add_all(const double* x, std::size_t n);
   void add(const ExactSum& o);
   // The sum rounded to the nearest double (once; a subnormal total may round twice).
   double value() const;
@@ -48,6 +52,8 @@ class ExactSum {
   // Each term adds less than 2^32 to a digit: 2^30 of them leave an int64 room to spare.
   static constexpr std::int64_t kTermsBeforeCarry = std::int64_t(1) << 30;
   void add_special(double x);
+  // Adds or takes (`negative`) v 2^(max(exponent, 1) - 1075), v < 2^63: add_all's bin totals.
+  void add_scaled(std::uint64_t v, int exponent, bool negative);
   void carry();  // digits below the top into [0, 2^32)
 
   std::array<std::int64_t, kDigits> digit_{};

@@ -8,6 +8,8 @@
 #include <optional>
 #include <vector>
 
+#include "contact/exact_sum.hpp"
+#include "field/field_bodies.hpp"
 #include "field/fluid_grid.hpp"
 #include "field/void_fraction.hpp"
 #include "polydem/bodies.hpp"
@@ -21,23 +23,27 @@ class ExternalForces {
   // Whether `forces` holds an operator this class applies.
   static bool wanted(const FieldSettings& forces);
 
-  // Reads the fluid grid (InputError at the scene key for a bad file).
+  // Reads the fluid grid (InputError at the scene key for a bad file); set for `bodies`' rows.
   ExternalForces(const FieldSettings& forces, const std::vector<Shape>& shapes, const Bodies& bodies);
 
-  // Adds each operator's force to bodies.force; returns their power sum_b f_b . v_b (W),
-  // summed in body order.
-  double add(Bodies& bodies);
+  // The per-row constants (volume, drag area) for `rows`: before the first add() on other
+  // rows than the last ones (a rank's store after a rebuild).
+  void set_rows(const FieldBodies& rows);
+  // Adds each operator's force to each owned row's force; returns their power
+  // sum_b f_b . v_b (W), summed exactly: the same bits however the rows are split among
+  // threads and ranks (each rank sums its own, the ranks' words are added).
+  ExactSum add(const FieldBodies& rows);
+  double add(Bodies& bodies) { return add(field_rows(bodies)).value(); }  // one process: every body
 
   const FluidGrid* grid() const { return grid_ ? &*grid_ : nullptr; }
-  // Bodies whose centre was outside the grid at the last add(): no grid force acts on them.
+  // Owned rows whose centre was outside the grid at the last add(): no grid force acts on them.
   std::size_t outside() const { return outside_; }
-  // The void fraction field now; empty without a void_fraction operator.
+  // The void fraction field now (every body: a distributed run gathers them first); empty
+  // without a void_fraction operator.
   std::optional<VoidFractionField> void_fraction(const Bodies& bodies) const;
-  // Vs per body at the last add(), m^3.
-  const std::vector<double>& solid_volumes() const { return vs_; }
 
  private:
-  Vec3 grid_force(const Bodies& bodies, std::size_t b) const;
+  Vec3 grid_force(const FieldBodies& rows, std::size_t b) const;
 
   FieldSettings::Quadratic quadratic_{};
   bool quadratic_on_ = false;
@@ -47,9 +53,10 @@ class ExternalForces {
   Vec3 gravity_ = Vec3::Zero();                // m/s^2
   std::optional<FluidGrid> grid_;
   std::unique_ptr<VoidFraction> void_fraction_;
-  std::vector<double> volume_, area_;          // per body: m^3, and pi r^2 of the equivalent sphere (m^2)
-  std::vector<double> vs_;                     // per body, m^3
-  std::vector<double> power_;                  // per body, W
+  const std::vector<Shape>& shapes_;
+  std::vector<double> volume_, area_;          // per row: m^3, and pi r^2 of the equivalent sphere (m^2)
+  std::vector<double> vs_;                     // per row, m^3
+  std::vector<double> power_;                  // per row, W
   std::vector<std::uint8_t> outside_flag_;
   std::size_t outside_ = 0;
 };

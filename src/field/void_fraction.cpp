@@ -70,27 +70,28 @@ VoidFraction::VoidFraction(const std::vector<Shape>& shapes, int samples, double
 }
 
 template <class Fn>
-void VoidFraction::for_samples(const Bodies& bodies, std::size_t b, const Fn& fn) const {
-  const std::vector<Vec3>& pts = samples_[bodies.shape[b]];
-  const double scale = bodies.scale[b];
-  const double share = volume_[bodies.shape[b]] * scale * scale * scale / double(pts.size());  // m^3
-  const Mat3 R = bodies.orientation[b].toRotationMatrix() * scale;
-  for (const Vec3& p : pts) fn(bodies.position[b] + R * p, share);
+void VoidFraction::for_samples(const FieldBodies& rows, std::size_t b, const Fn& fn) const {
+  const std::vector<Vec3>& pts = samples_[rows.shape[b]];
+  const double scale = rows.scale[b];
+  const double share = volume_[rows.shape[b]] * scale * scale * scale / double(pts.size());  // m^3
+  const Mat3 R = rows.orientation[b].toRotationMatrix() * scale;
+  for (const Vec3& p : pts) fn(rows.position[b] + R * p, share);
 }
 
-void VoidFraction::particle_volumes(const FluidGrid& grid, const Bodies& bodies, std::vector<double>& vs) const {
-  vs.resize(bodies.size());
+void VoidFraction::particle_volumes(const FluidGrid& grid, const FieldBodies& rows, std::vector<double>& vs) const {
+  vs.resize(rows.size);
   const Vec3 lo = grid.origin, hi = grid.origin + grid.spacing.cwiseProduct(grid.cells.cast<double>());
-  parallel_for(bodies.size(), [&](std::size_t b) {
-    const double reach = reach_[bodies.shape[b]] * bodies.scale[b];
-    const Vec3& x = bodies.position[b];
+  parallel_for(rows.size, [&](std::size_t b) {
+    if (!rows.owned(b)) return;
+    const double reach = reach_[rows.shape[b]] * rows.scale[b];
+    const Vec3& x = rows.position[b];
     if ((x.array() - reach > lo.array()).all() && (x.array() + reach < hi.array()).all()) {
-      const double s = bodies.scale[b];
-      vs[b] = volume_[bodies.shape[b]] * s * s * s;  // wholly inside: no sampling needed
+      const double s = rows.scale[b];
+      vs[b] = volume_[rows.shape[b]] * s * s * s;  // wholly inside: no sampling needed
       return;
     }
     double v = 0.0;
-    for_samples(bodies, b, [&](const Vec3& p, double share) { if (grid.locate(p)) v += share; });
+    for_samples(rows, b, [&](const Vec3& p, double share) { if (grid.locate(p)) v += share; });
     vs[b] = v;
   });
 }
@@ -99,8 +100,9 @@ VoidFractionField VoidFraction::field(const FluidGrid& grid, const Bodies& bodie
   VoidFractionField f;
   f.alpha.assign(grid.size(), 1.0);
   const double cell = grid.cell_volume();
-  for (std::size_t b = 0; b < bodies.size(); ++b)  // in order: the floor makes the result order-dependent
-    for_samples(bodies, b, [&](const Vec3& p, double share) {
+  const FieldBodies rows = field_rows(bodies);
+  for (std::size_t b = 0; b < rows.size; ++b)  // in order: the floor makes the result order-dependent
+    for_samples(rows, b, [&](const Vec3& p, double share) {
       const std::optional<Index3> c = grid.locate(p);
       if (!c) return;
       double& alpha = f.alpha[grid.index(*c)];

@@ -4,6 +4,7 @@
 // fixed lattice inside the rounded body, every point carrying an equal share of the volume.
 #include <vector>
 
+#include "field/field_bodies.hpp"
 #include "field/fluid_grid.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/shape.hpp"
@@ -27,16 +28,21 @@ class VoidFraction {
  public:
   VoidFraction(const std::vector<Shape>& shapes, int samples, double alpha_min);
 
-  // Vs of each body: its volume x the share of its sample points inside the grid.
-  void particle_volumes(const FluidGrid& grid, const Bodies& bodies, std::vector<double>& vs) const;
+  // Vs of each owned row: its volume x the share of its sample points inside the grid (a
+  // ghost's is left as it was).
+  void particle_volumes(const FluidGrid& grid, const FieldBodies& rows, std::vector<double>& vs) const;
+  void particle_volumes(const FluidGrid& grid, const Bodies& bodies, std::vector<double>& vs) const {
+    particle_volumes(grid, field_rows(bodies), vs);
+  }
 
   // alpha = 1 - (solid volume in the cell) / (cell volume), bodies taken in index order; a cell
-  // that would fall below alpha_min stays at alpha_min and the rest goes to `excess`.
+  // that would fall below alpha_min stays at alpha_min and the rest goes to `excess`. Reads
+  // every body: a distributed run's output gathers them first.
   VoidFractionField field(const FluidGrid& grid, const Bodies& bodies) const;
 
  private:
   template <class Fn>
-  void for_samples(const Bodies& bodies, std::size_t b, const Fn& fn) const;
+  void for_samples(const FieldBodies& rows, std::size_t b, const Fn& fn) const;
   std::vector<std::vector<Vec3>> samples_;  // per shape
   std::vector<double> volume_;              // per shape, m^3 at unit scale
   std::vector<double> reach_;               // per shape, m: bounding radius at unit scale

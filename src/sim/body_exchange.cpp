@@ -130,6 +130,16 @@ std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32
   return bytes;
 }
 
+std::vector<char> pack_owned(const LocalStore& store, const std::vector<std::uint32_t>& rows) {
+  std::vector<char> bytes(rows.size() * kOwnedBytes);
+  Writer w{bytes.data()};
+  for (std::uint32_t k : rows) {
+    w.field(store.global_id[k]);
+    owned_fields(w, store, k);
+  }
+  return bytes;
+}
+
 std::vector<char> pack_movers(const LocalStore& store, const std::vector<std::uint32_t>& rows) {
   std::vector<char> bytes(rows.size() * kMoverBytes);
   Writer w{bytes.data()};

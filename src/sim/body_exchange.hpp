@@ -50,6 +50,8 @@ void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, doub
 
 // The integration state of bodies `ids` with their ids.
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);
+// The same records of a store's rows `rows`, each with its global id (a gather from the store).
+std::vector<char> pack_owned(const LocalStore& store, const std::vector<std::uint32_t>& rows);
 // Writes each record of a pack_owned parcel into its body; returns their ids, in parcel order.
 std::vector<std::uint32_t> unpack_owned(const std::vector<char>& bytes, Bodies& bodies);
 

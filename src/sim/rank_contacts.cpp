@@ -78,7 +78,7 @@ void RankContacts::redistribute(Bodies& bodies, const ContactEngine& whole) {
   set_load_share(part_loads(cut_, bodies.position, std::vector<double>(bodies.size(), 1.0)));
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
   store_.select(bodies, plan_.local, plan_.ghost);
-  if (drop_state_) bodies.drop_state();
+  bodies.drop_state();
   adopt(whole.body_pairs(), whole.driver_pairs());
 }
 
@@ -281,12 +281,21 @@ void RankContacts::size_parcels() {
 }
 
 void RankContacts::sync_bodies(Bodies& bodies, bool to_root) const {
+  const std::vector<char> mine = pack_owned(store_, store_.owned_rows());
+  const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);
+  if (all.empty()) return;  // not rank 0 of a gather to it: no state grown here
   bodies.grow_state();
   store_.publish(bodies);
-  const std::vector<char> mine = pack_owned(bodies, plan_.owned);
-  const std::vector<std::vector<char>> all = to_root ? link_.gather(mine, 0) : link_.all_gather(mine);
   for (int r = 0; r < int(all.size()); ++r)
     if (r != link_.rank()) unpack_owned(all[r], bodies);
+}
+
+double RankContacts::add_external(ExternalForces& forces) {
+  FieldBodies rows = field_rows(store_);
+  rows.ghost = store_.ghost.data();
+  if (std::exchange(external_rows_, rebuilds_) != rebuilds_) forces.set_rows(rows);  // the store changes at rebuilds only
+  const std::vector<std::uint64_t> words = link_.sum(forces.add(rows).words());  // integers: exact in any order
+  return ExactSum::from_words(words.data(), std::uint64_t(link_.ranks())).value();
 }
 
 std::vector<std::uint32_t> RankContacts::output_bodies() const {

@@ -13,11 +13,13 @@
 // reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
 // bodies in its LocalStore (one copy of their state), and a rebuild after the first sends and
 // lands bodies store to store; it keeps the constants of all bodies, and their state only where a
-// gather writes it (sync_bodies: output with probes or fluid, drag and fluid forces, the start).
+// gather writes it (sync_bodies: the start and a resume; rank 0 at output with probes or fluid).
+// Drag and fluid forces act on each rank's owned bodies in its store (add_external).
 #include <memory>
 #include <vector>
 
 #include "contact/contact_engine.hpp"
+#include "field/external_forces.hpp"
 #include "integrate/integrate.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/domain_cut.hpp"
@@ -67,10 +69,9 @@ class RankContacts {
   bool watch_motion(PointWatch& watch);
   void sums_taken();
   void add_sums();  // the same with no kick: each owned body's sum added to its force
-  // The owned bodies' state back from `bodies` after something else wrote them (drag and fluid
-  // forces, after sync_bodies). A rank's own writers and checks read the store (with_output_rows);
-  // `bodies` gets the state only where a gather writes it (sync_bodies).
-  void store_from_bodies(const Bodies& bodies) { store_.pull(bodies); }
+  // Drag and fluid forces on the owned bodies, in the store; returns their power over every
+  // rank (W), summed exactly (a collective: one sum of ExactSum::kWords words, no body sent).
+  double add_external(ExternalForces& forces);
   // Whether the next steps share the drivers' reactions (the servo and the driver work of a
   // moving driver read them each step, output only at its rows); when not, only the contact
   // count, and the drivers keep their last reactions.
@@ -87,9 +88,11 @@ class RankContacts {
     forced_ = true;
     if (bodies.has_state()) store_.pull(bodies);
   }
-  // After each cut from `bodies` (the start, a resume), `bodies` keeps only the constants
-  // (Bodies::drop_state): set where nothing gathers the state (Simulation::gathers_state).
-  void may_drop_state(bool may) { drop_state_ = may; }
+  // `bodies`' state arrays freed again where a rank keeps only the constants (after its first
+  // cut), once what a gather gave rank 0 was read (output of probes and the fluid).
+  void release_state(Bodies& bodies) const {
+    if (engine_) bodies.drop_state();
+  }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
   // (a checkpoint written: the table went to rank 0 only).
   void rebuild_next_step() { rebuild_asked_ = true; }
@@ -98,8 +101,9 @@ class RankContacts {
   void gather_table(ContactEngine& whole, bool to_root = false) const;
 
   // Gives every rank (or rank 0 only, `to_root`) every body's state: each rank's owned
-  // bodies, published and gathered (a collective: output, drag and fluid forces, the start and a
-  // resume); `bodies`' state arrays grown back first where dropped.
+  // bodies, published and gathered (a collective: the start and a resume on every rank; output
+  // of probes and the fluid on rank 0); `bodies`' state arrays grown back first where dropped,
+  // on the ranks that receive.
   void sync_bodies(Bodies& bodies, bool to_root = false) const;
   // What this rank writes of the state (VTK pieces, checkpoint pieces): the bodies it owns in
   // increasing id and the active slots it answers for (its body pairs whose lower body it owns,
@@ -194,7 +198,7 @@ class RankContacts {
   bool watched_ = false;  // this step's opening pass ran the trigger's test (watch_motion)
   bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
-  bool drop_state_ = false;  // may_drop_state
+  std::size_t external_rows_ = ~std::size_t(0);  // the rebuild whose store add_external's constants are for
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;
   bool stop_asked_ = false, stop_seen_ = false;

@@ -153,10 +153,10 @@ class FluidSeries {
     for (int g : groups_) columns.push_back("vz_group_" + std::to_string(g));
     csv_ = std::make_unique<CsvSeries>(path, columns, append, resumed_at(sim));
   }
-  void row() {
-    const ExternalForces& ext = *sim_.external();
-    const auto vf = ext.void_fraction(sim_.bodies);
-    std::vector<double> values{sim_.time(), double(ext.outside()), vf ? vf->excess : 0.0};
+  // `outside`: Simulation::bodies_outside_grid (a collective every rank takes part in).
+  void row(std::size_t outside) {
+    const auto vf = sim_.external()->void_fraction(sim_.bodies);
+    std::vector<double> values{sim_.time(), double(outside), vf ? vf->excess : 0.0};
     std::vector<double> vz(groups_.size(), 0.0), count(groups_.size(), 0.0);
     for (std::size_t b = 0; b < sim_.bodies.size(); ++b) {
       const auto g = std::lower_bound(groups_.begin(), groups_.end(), sim_.bodies.group[b]) - groups_.begin();
@@ -221,13 +221,43 @@ class OutputWriter {
   void frame() {
     const bool pieces = sim_.distributed();  // each rank writes its own bodies and contacts
     const bool contacts = sim_.scene().output.contacts;
-    const bool fluid = sim_.external() && sim_.external()->grid();
-    if (fluid) sim_.gather_state();  // the void fraction reads every body
+    const bool fluid = fluid_grid();
+    if (fluid) sim_.gather_bodies();  // the void fraction reads every body (rank 0's copy)
     const std::int64_t n = progress_.frame++;  // on every rank: the pieces carry it
     const std::string bodies = numbered("bodies", n, pieces ? "pvtu" : "vtu");
     const std::string lines = numbered("contacts", n, pieces ? "pvtp" : "vtp");
     if (pieces) write_rank_pieces(bodies, contacts ? lines : "");
-    if (!io_) return;
+    if (io_) write_frame(n, bodies, lines, fluid);
+    if (fluid) sim_.release_bodies();
+  }
+
+  // Returns whether the contact table is whole on this process (one process: check_overlaps).
+  bool energy_row() {
+    if (!sim_.scene().output.csv_every) return false;
+    const OutputSettings& out = sim_.scene().output;
+    const bool reads_bodies = sim_.external() || !out.flow_probes.empty() || !out.repose_probes.empty();
+    if (reads_bodies) sim_.gather_bodies();  // fluid.csv and the probes read every body (rank 0's copy)
+    sim_.sum_energy();                        // each rank's part of the energies, reduced exactly
+    const std::size_t outside = sim_.bodies_outside_grid();  // a collective too
+    if (energy_) write_rows(outside);
+    if (reads_bodies) sim_.release_bodies();
+    return !sim_.distributed();
+  }
+
+  std::string checkpoint(Simulation& sim) {
+    const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
+    if (sim.distributed()) write_checkpoint_pieces(path, sim, progress_);  // a collective
+    else write_checkpoint(path, sim, progress_);
+    sim.force_rebuild(false);  // the resumed run rebuilds here too: same lists, same bits
+    return path;
+  }
+
+ private:
+  bool fluid_grid() const { return sim_.external() && sim_.external()->grid(); }
+
+  // Rank 0's files of frame n: the bodies (one process), drivers, contacts and fluid grid.
+  void write_frame(std::int64_t n, const std::string& bodies, const std::string& lines, bool fluid) {
+    const bool pieces = sim_.distributed(), contacts = sim_.scene().output.contacts;
     OutputFrame f{sim_.time(), {bodies}};
     if (!pieces)
       write_bodies_vtu(dir_ + "/" + bodies, sim_.bodies, sim_.shapes(), sim_.scene().output.rounded,
@@ -250,16 +280,10 @@ class OutputWriter {
     progress_.frames.push_back(f);
   }
 
-  // Returns whether the state was gathered (one process: always whole).
-  bool energy_row() {
-    if (!sim_.scene().output.csv_every) return false;
-    const OutputSettings& out = sim_.scene().output;
-    const bool whole = sim_.gathers_state() || !sim_.distributed();
-    if (whole) sim_.gather_state();  // the fluid's row and the probes read every body
-    sim_.sum_energy();               // each rank's part of the energies, reduced exactly
-    if (!energy_) return whole;
+  // Rank 0's CSV rows: energy, the fluid's, the drivers', the probes'.
+  void write_rows(std::size_t outside) {
     const EnergyRow e = sim_.energy();
-    if (fluid_) fluid_->row();
+    if (fluid_) fluid_->row(outside);
     energy_->row({sim_.time(), e.kinetic, e.rotational, e.elastic, e.dissipated, e.gravity_work, e.driver_work,
                   double(e.contacts), e.external_work, e.elastic_parts.normal, e.elastic_parts.tangential,
                   e.elastic_parts.rolling, e.dissipated_dashpot, e.dissipated_sliding, e.dissipated_rolling,
@@ -271,18 +295,8 @@ class OutputWriter {
                               d.torque.z(), x.x(), x.y(), x.z()});
     }
     probes_->row();
-    return whole;
   }
 
-  std::string checkpoint(Simulation& sim) {
-    const std::string path = dir_ + "/" + numbered("checkpoint", sim.step_index(), "bin");
-    if (sim.distributed()) write_checkpoint_pieces(path, sim, progress_);  // a collective
-    else write_checkpoint(path, sim, progress_);
-    sim.force_rebuild(false);  // the resumed run rebuilds here too: same lists, same bits
-    return path;
-  }
-
- private:
   // STEM_NNNNNN_pK.vtu and .vtp: each rank's owned bodies and the contacts it answers for;
   // rank 0 adds the .pvtu and .pvtp (`contacts`: none when empty) naming every piece.
   void write_rank_pieces(const std::string& bodies, const std::string& contacts) {
@@ -537,7 +551,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
       if (!c.overlap.empty()) overlaps.set_warned();
     }
     if (vtk.due(sim.time(), dt)) writer.frame();
-    if (csv.due(sim.time(), dt) && writer.energy_row()) check_overlaps();  // distributed: its pairs on rank 0 if gathered
+    if (csv.due(sim.time(), dt) && writer.energy_row()) check_overlaps();  // distributed: check_state's
     if (ckpt.due(sim.time(), dt) && s != last_step) writer.checkpoint(sim);
     const std::optional<bool> seen = sim.stop_seen();  // in the step's collective: every rank stops at the same step
     const bool interrupted = seen ? *seen : sim.any_rank(g_interrupted);  // else a collective of its own

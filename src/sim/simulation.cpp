@@ -121,7 +121,6 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   if (ranks_ && !external_) ranks_->only_gravity(gravity_);
-  if (ranks_) ranks_->may_drop_state(!gathers_state());
   if (contacts && rank() == 0)  // before a rank's cut drops the state it reads
     impact_warning_ = polydem::fast_impact_warning(bodies, library_.shapes, drivers, dt_estimate_.kn_particle,
                                                    dt_estimate_.kn_driver, dt_);
@@ -195,6 +194,19 @@ void Simulation::external_forces() {
   if (external_) ledger.external_work += external_->add(bodies) * dt_;
 }
 
+// Drag and fluid forces of this step (W): each rank's on the bodies it moves (its store), their
+// power summed exactly over the ranks; one process, or ranks without a contact stage (each
+// moves every body), on `bodies`.
+double Simulation::external_power() {
+  external_split_ = ranks_ && scene_.forces.contact.present;
+  return external_split_ ? ranks_->add_external(*external_) : external_->add(bodies);
+}
+
+std::size_t Simulation::bodies_outside_grid() const {
+  if (!external_) return 0;
+  return external_split_ ? std::size_t(link_->sum({external_->outside()}).at(0)) : external_->outside();
+}
+
 // Particles get -force and -torque (about the centre) of each driver.
 void Simulation::driver_work_half() {
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
@@ -253,11 +265,8 @@ void Simulation::step(bool leave_kick_open) {
   });
   if (close_last) sums_taken();
   drivers.advance(time(), dt_);
-  // Drag and fluid forces read every body (the void fraction, the power summed in id order).
-  if (external_ && !one_process) ranks_->sync_bodies(bodies);
   // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
-  if (external_) ledger.external_work += external_->add(bodies) * dt_;
-  if (external_ && rank_passes) ranks_->store_from_bodies(bodies);  // the owned bodies' forces
+  if (external_) ledger.external_work += external_power() * dt_;
   bool stale = false;
   if (contacts) {
     // Driver work over the step by the trapezoid rule, as the kicks apply it (law.hpp): half

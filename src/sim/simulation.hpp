@@ -84,12 +84,9 @@ class Simulation {
   EnergyLedger ledger;
   // Drag and fluid operators; null when the scene has none.
   const ExternalForces* external() const { return external_.get(); }
-  // Distributed runs: the run loop gathers every body's state (drag and fluid forces each step,
-  // the fluid's files and flow and repose probes at output); where not, a rank's `bodies` keeps
-  // only the constants after each cut (RankContacts::may_drop_state).
-  bool gathers_state() const {
-    return external_ || !scene_.output.flow_probes.empty() || !scene_.output.repose_probes.empty();
-  }
+  // Bodies whose centre is outside the fluid grid (no grid force on them) at the last step, over
+  // every rank (a collective in distributed runs).
+  std::size_t bodies_outside_grid() const;
   // The set-up's warning of impacts too fast for the contacts' stiffness or dt ("": none; rank 0's,
   // which prints it): from the bodies' state at the start, which a rank drops after its cut.
   const std::string& fast_impact_warning() const { return impact_warning_; }
@@ -109,9 +106,17 @@ class Simulation {
   // (global ids) only after gather_state(), a collective, called before output, checkpoints and
   // checks read them; between, a rank's bodies are current in its store alone (the rank
   // integrates them there, and its own writers and checks read them there), and `bodies` holds
-  // no state at all unless the run gathers it (gathers_state: else dropped at each cut). Onto rank 0 only
+  // no state at all after its first cut (dropped). Onto rank 0 only
   // (it writes the files), or onto every rank (`onto_every_rank`: tests comparing the ranks).
+  // gather_bodies: the state alone onto rank 0 (the other ranks grow nothing), for output
+  // that reads every body (probes, the fluid's rows and files); release_bodies frees it after.
   bool distributed() const { return bool(ranks_); }
+  void gather_bodies() {
+    if (ranks_) ranks_->sync_bodies(bodies, true);
+  }
+  void release_bodies() {
+    if (ranks_) ranks_->release_state(bodies);
+  }
   int rank() const { return link_ ? link_->rank() : 0; }
   void gather_state(bool onto_every_rank = false);
   // The smallest index of a body whose state is not finite, or -1; distributed runs: each rank
@@ -143,6 +148,7 @@ class Simulation {
 
  private:
   void external_forces();
+  double external_power();
   void driver_work_half();
   void contact_stage();
   void sums_taken();
@@ -164,6 +170,7 @@ class Simulation {
   StateEnergy summed_;                   // distributed runs: at the last sum_energy
   bool drivers_move_ = false;            // a driver translates, turns or is a servo
   bool kick_open_ = false;               // the last step's closing kick is still to apply (step)
+  bool external_split_ = false;          // the last drag and fluid forces acted on each rank's own bodies
 };
 
 // Index of the first body whose state is not finite, or -1.

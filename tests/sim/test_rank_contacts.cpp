@@ -2,7 +2,8 @@
 // of 150 cubes and spheres (walls, fast spins, many rebuilds) stepped over 2 and 3 ranks ends
 // on the bits of one process on every rank: bodies, driver reactions, the energy ledger, the
 // contact count and a CSV row's energies (each rank's part, summed exactly: no state gathered),
-// each rank keeping only the scene's constants after its first cut.
+// each rank keeping only the scene's constants after its first cut; the same with drag and
+// fluid forces (each rank's on its own bodies, their work summed exactly over the ranks).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -30,15 +31,21 @@ struct Outcome {
   std::size_t cuts = 0;               // rebuilds that cut the domain again
   double share = 0.0;                 // of the weight, at the last rebuild
   std::size_t scene_bytes = 0;        // the scene's arrays (Bodies) before the gather
+  std::size_t outside = 0;            // bodies outside the fluid grid (drag and fluid scenes)
+  std::vector<double> alpha;          // the void fraction per cell, from the gathered bodies
 };
 
 Outcome outcome(Simulation& sim) {
   sim.sum_energy();  // a CSV row's energies from each rank's own bodies and pairs: no state gathered
   const EnergyRow row = sim.energy();
   const std::size_t scene_bytes = sim.bodies.held_bytes();
+  const std::size_t outside = sim.bodies_outside_grid();  // a collective
   sim.gather_state(true);
   Outcome o{sim.bodies, sim.ledger, row, {}, {}, sim.rebuilds(), sim.owned_bodies(), sim.ghost_bodies()};
   o.scene_bytes = scene_bytes;
+  o.outside = outside;
+  if (sim.external())
+    if (const auto vf = sim.external()->void_fraction(sim.bodies)) o.alpha = vf->alpha;
   if (const RankContacts* r = sim.rank_contacts()) o.cuts = r->cuts(), o.share = r->load_share();
   for (std::size_t j = 0; j < sim.drivers.size(); ++j) {
     o.driver_force.push_back(sim.drivers[j].force);
@@ -82,6 +89,24 @@ void require_same(const Outcome& a, const Outcome& b) {
   CHECK(same_bits(a.energy.kinetic, b.energy.kinetic));
   CHECK(same_bits(a.energy.rotational, b.energy.rotational));
   CHECK(same_bits(a.energy.gravity_work, b.energy.gravity_work));
+  CHECK(same_bits(a.ledger.external_work, b.ledger.external_work));
+  CHECK(a.outside == b.outside);
+  CHECK(same_bits(a.alpha, b.alpha));
+}
+
+// Each of n thread ranks' outcome of `steps` steps of the pile.
+std::vector<Outcome> over_ranks(const Pile& p, int steps, int n) {
+  ThreadRanks all(n);
+  std::vector<Outcome> got(n);
+  std::vector<std::thread> ranks;
+  for (int r = 0; r < n; ++r)
+    ranks.emplace_back([&, r] {
+      const ThreadLink link(all, r);
+      got[r] = run(p, steps, &link, n == 3);  // 3 ranks: kicks left open, as the run loop leaves them
+    });
+  for (std::thread& t : ranks) t.join();
+  CHECK_FALSE(all.mismatch);
+  return got;
 }
 
 }  // namespace
@@ -94,16 +119,7 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
   REQUIRE(one.rebuilds > 5);
   REQUIRE(one.scene_bytes >= 272 * one.bodies.size());
   for (int n : {2, 3}) {
-    ThreadRanks all(n);
-    std::vector<Outcome> got(n);
-    std::vector<std::thread> ranks;
-    for (int r = 0; r < n; ++r)
-      ranks.emplace_back([&, r] {
-        const ThreadLink link(all, r);
-        got[r] = run(p, kSteps, &link, n == 3);  // 3 ranks: kicks left open, as the run loop leaves them
-      });
-    for (std::thread& t : ranks) t.join();
-    CHECK_FALSE(all.mismatch);
+    const std::vector<Outcome> got = over_ranks(p, kSteps, n);
     std::size_t owned = 0, held = 0, fewest = one.bodies.size();
     double shares = 0.0;
     for (int r = 0; r < n; ++r) {
@@ -128,6 +144,40 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
     CHECK(shares == Approx(1.0).epsilon(1e-12));
     CHECK(held < std::size_t(n) * one.bodies.size());  // 272 of 300 at 2 ranks, 361 of 450 at 3: not replicated
     CHECK(fewest < one.bodies.size());  // an end box holds its share and the ghosts near its cut
+  }
+}
+
+TEST_CASE("Drag and fluid forces over 2 and 3 thread ranks act on each rank's bodies with one process's bits") {
+  // The pile in air drag and a water grid over its lower half (friction against a slow flow,
+  // buoyancy, the void fraction): bodies leave and enter the grid, some straddle its faces.
+  Pile p;
+  p.scene.forces.quadratic = ForceSettings::Quadratic{0.38, 0.05};
+  ForceSettings::FluidField f;
+  f.grid_min = Vec3(-0.05, -0.05, 0.0);
+  f.grid_max = Vec3(0.05, 0.05, 0.05);
+  f.cells = Eigen::Vector3i(5, 5, 3);
+  f.velocity = Vec3(0.2, 0.0, 0.0);
+  f.rho = 1000.0;
+  f.nu = 1e-6;
+  p.scene.forces.fluid = f;
+  p.scene.forces.fluid_friction = ForceSettings::FluidFriction{"", 50.0};
+  p.scene.forces.archimedes = true;
+  p.scene.forces.void_fraction = ForceSettings::VoidFraction{0.3, 4};
+  const int kSteps = 400;
+  const Outcome one = run(p, kSteps, nullptr);
+  REQUIRE(one.ledger.external_work < 0.0);  // the drag takes energy out: the exact sum has terms
+  REQUIRE(one.outside > 0);
+  REQUIRE(one.outside < one.bodies.size());
+  REQUIRE(one.rebuilds > 5);
+  for (int n : {2, 3}) {
+    const std::vector<Outcome> got = over_ranks(p, kSteps, n);
+    for (int r = 0; r < n; ++r) {
+      INFO(n << " ranks, rank " << r);
+      require_same(one, got[r]);
+      // The forces read no other rank's body: after its first cut a rank keeps the scene's
+      // constants alone (52 bytes a body), as where nothing acts but gravity.
+      CHECK(got[r].scene_bytes <= 52 * one.bodies.size());
+    }
   }
 }
 
