@@ -38,13 +38,14 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
   return s;
 }
 
-// Every contact takes the linear law's exact step (contact/law/exact_linear.hpp): the step is
-// on, the laws are linear and damped, and every body is a sphere (its pair mass is its point's).
+// The law's contacts take its exact step (contact/law/exact_linear.hpp) where their dashpot's
+// mass is fixed: the step is on, the law linear and damped.
+bool exact_law(const LawParams& law) { return law.exact_step && law.normal == NormalModel::linear && law.alpha_n > 0.0; }
+
+// Every contact takes the linear law's exact step: the laws are exact and every body is a
+// sphere (its pair mass is its point's).
 bool exact_everywhere(const ContactSettings& cs, const Bodies& bodies, const std::vector<Shape>& shapes,
                       bool drivers) {
-  auto exact_law = [](const LawParams& law) {
-    return law.exact_step && law.normal == NormalModel::linear && law.alpha_n > 0.0;
-  };
   if (bodies.size() == 0 || !exact_law(cs.particle) || (drivers && !exact_law(cs.driver))) return false;
   for (std::size_t b = 0; b < bodies.size(); ++b)
     if (!shapes[bodies.shape[b]].is_sphere()) return false;
@@ -59,11 +60,15 @@ ImpactModel impact_model(const ContactSettings& cs, const Bodies& bodies, const 
   ImpactModel model;
   model.exact = exact_everywhere(cs, bodies, shapes, drivers);
   for (std::size_t b = 0; b < bodies.size(); ++b) model.polyhedra |= !shapes[bodies.shape[b]].is_sphere();
+  bool any_law = false, every_contact_mass = true;  // damping_mass: contact on every law taken, stepped exactly
   for (const LawParams* law : {bodies.size() > 1 ? &cs.particle : nullptr, drivers ? &cs.driver : nullptr}) {
     if (!law) continue;
     model.hertz |= law->normal == NormalModel::hertz;
     model.friction |= law->mu > 0.0 && (law->kt > 0.0 || law->normal == NormalModel::hertz);
+    any_law = true;
+    every_contact_mass &= law->contact_mass && exact_law(*law);
   }
+  model.contact_mass = any_law && every_contact_mass;
   return model;
 }
 

@@ -12,6 +12,10 @@ namespace polydem {
 struct ImpactModel {
   bool exact = false;      // every contact takes the linear law's exact step: its sphere-wall rows
   bool polyhedra = false;  // a body is not a sphere: the cube landings (flat, tilted, corner)
+  // Every law the polyhedra's contacts take steps its dashpot exactly on the contact point's
+  // mass (damping_mass: contact, linear, damped): the cube landings under it. A scene mixing
+  // both dashpot masses keeps the pair's-mass landings, the larger at every step.
+  bool contact_mass = false;
   bool hertz = false;      // a law is Hertz: its sphere-wall rows (en 0.1-0.9)
   bool friction = false;   // a law has mu > 0 and kt > 0: the oblique impact's rows
 };
@@ -28,8 +32,9 @@ constexpr double kAutoAccuracy = 1e-3;
 // The fraction of the critical step `dt: auto` takes: kAutoAccuracy's by the exact step's
 // sphere-wall rows where every contact takes the exact step (0.181), by the Hertz rows for
 // spheres under a Hertz law (0.167), by the cube landings where a body is a polyhedron (0.0654,
-// 0.1 before session 27), else kAutoFraction (sim/time_step.hpp). The oblique impact's rows are
-// left out of all three, as friction's error is the tangential spring's.
+// 0.1 before session 27; 0.117 under damping_mass: contact), else kAutoFraction
+// (sim/time_step.hpp). The oblique impact's rows are left out of all three, as friction's error
+// is the tangential spring's.
 double auto_fraction(ImpactModel model);
 
 // The largest fraction of the critical step (at most kUnsafeFraction) whose expected error

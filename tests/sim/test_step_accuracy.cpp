@@ -56,6 +56,26 @@ TEST_CASE("step accuracy: dt: auto keeps 1e-3 by the cube landings for polyhedra
   CHECK(auto_fraction({.polyhedra = true, .friction = true}) == f);
 }
 
+// damping_mass: contact (kCubesContactMass): the tilted cube binds, 1e-3 between 0.115 and 0.12.
+TEST_CASE("step accuracy: dt: auto keeps 1e-3 by the contact-mass cube landings under damping_mass: contact", "[step_accuracy]") {
+  const ImpactModel contact{.polyhedra = true, .contact_mass = true}, pair{.polyhedra = true};
+  const double f = auto_fraction(contact);
+  CHECK(expected_restitution_error(f, contact) == Approx(kAutoAccuracy).epsilon(1e-9));
+  CHECK(f > 0.115);
+  CHECK(f < 0.12);
+  CHECK(auto_fraction({.polyhedra = true, .contact_mass = true, .friction = true}) == f);
+  CHECK(auto_fraction(pair) == Approx(0.0654).margin(0.0005));  // the pair's mass: unchanged
+  // Spheres do not read it: the flag only picks the polyhedra's table.
+  CHECK(auto_fraction({.exact = true, .contact_mass = true}) == auto_fraction(kExact));
+  // A scene mixing both masses keeps the pair's table: the larger at every step.
+  for (double g = 1e-3; g <= 0.5; g *= 1.05) {
+    INFO("dt = " << g << " x critical");
+    CHECK(expected_restitution_error(g, pair) > expected_restitution_error(g, contact));
+  }
+  CHECK(impact_error_note(f, 1.0, contact) ==
+        "expected restitution error of an impact at this step: 1.0e-03 (0.117 x critical; cube landings, contact mass)");
+}
+
 TEST_CASE("step accuracy: dt: auto keeps 1e-3 by the Hertz rows for spheres under Hertz", "[step_accuracy]") {
   const ImpactModel hertz{.hertz = true};
   const double f = auto_fraction(hertz);
@@ -100,7 +120,9 @@ TEST_CASE("step accuracy: without the exact step, accuracy inverts the scene's m
 
 TEST_CASE("step accuracy: a scene's model is the largest of its cases' and inverts", "[step_accuracy]") {
   const ImpactModel models[] = {kExact, {.exact = true, .friction = true}, {.polyhedra = true},
-                                {.polyhedra = true, .friction = true}, {.hertz = true}, {.friction = true}};
+                                {.polyhedra = true, .friction = true}, {.polyhedra = true, .contact_mass = true},
+                                {.polyhedra = true, .contact_mass = true, .friction = true}, {.hertz = true},
+                                {.friction = true}};
   for (const ImpactModel& m : models) {
     ImpactModel without_friction = m;
     without_friction.friction = false;

@@ -112,7 +112,7 @@ TEST_CASE("accuracy: the exact step's error model", "[.accuracy_model]") {
   }
 }
 
-// The polyhedra, Hertz and friction models (sim/step_accuracy.cpp's kCubes, kHertz, kOblique):
+// The polyhedra, Hertz and friction models (sim/step_accuracy.cpp's kCubes, kCubesContactMass, kHertz, kOblique):
 // at each fraction the largest error of the model's cases measured there, at any smaller
 // fraction (the model must not fall as the step grows) and up to the next fraction, rounded up
 // in the third digit. The worst touch place's error jumps between neighbouring steps: the cubes
@@ -133,6 +133,8 @@ TEST_CASE("accuracy: the polyhedra, Hertz and friction models", "[.accuracy_mode
   };
   const Model models[] = {
       {"kCubes", [](double f) { return std::max({cube_flat_error(f), cube_tilted_error(f), cube_corner_error(f, false, true)}); }},
+      {"kCubesContactMass",  // the same landings with the wall's law under damping_mass: contact
+       [](double f) { return std::max({cube_flat_error(f, 8, true), cube_tilted_error(f, 8, true), cube_corner_error(f, true, true)}); }},
       {"kHertz", [](double f) { return std::max({hertz_impact(f, 0.1), hertz_impact(f, 0.5), hertz_impact(f, 0.9)}); }},
       {"kOblique", [](double f) { return oblique_impact_worst_phase(f); }, 100000}};
   for (const auto& [name, worst, per_unit] : models) {

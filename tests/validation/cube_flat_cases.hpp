@@ -10,6 +10,7 @@
 // step (gap = phase x v0 dt + 1 nm), the worst returned.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "accuracy_cases.hpp"
 
@@ -54,12 +55,14 @@ inline double cube_flat_error(double fraction, int phases = 8, bool contact_mass
 }
 
 // Tilted: max(|vz' - ref|, half side x |w' - ref|) / v0 against the landing at 0.002 x
-// critical (computed once), worst of `phases` touch places.
-inline double cube_tilted_error(double fraction, int phases = 8) {
-  static const CubeRebound ref = cube_face_landing(0.002, kTilt, kTiltSpeed, 0.0);
+// critical under the same dashpot mass (computed once per mass), worst of `phases` touch places.
+inline double cube_tilted_error(double fraction, int phases = 8, bool contact_mass = false) {
+  static std::optional<CubeRebound> refs[2];  // once per dashpot mass, when first asked
+  if (!refs[contact_mass]) refs[contact_mass] = cube_face_landing(0.002, kTilt, kTiltSpeed, 0.0, contact_mass);
+  const CubeRebound ref = *refs[contact_mass];
   double worst = 0.0;
   for (int k = 0; k < phases; ++k) {
-    const CubeRebound r = cube_face_landing(fraction, kTilt, kTiltSpeed, double(k) / phases);
+    const CubeRebound r = cube_face_landing(fraction, kTilt, kTiltSpeed, double(k) / phases, contact_mass);
     worst = std::max(worst, std::max(std::abs(r.vz - ref.vz), 0.5 * kCubeSide * std::abs(r.spin - ref.spin)) / kTiltSpeed);
   }
   return worst;
