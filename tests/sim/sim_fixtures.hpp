@@ -107,11 +107,11 @@ inline bool run_through_impact(Simulation& sim, int max_steps) {
   return touched;
 }
 
-// Whether two arrays hold the same bytes (bitwise determinism checks).
+// Whether two arrays hold the same bytes (bitwise determinism checks; empty ones have no data to compare).
 template <class T>
 bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(static_cast<const void*>(a.data()), static_cast<const void*>(b.data()),
-                                             a.size() * sizeof(T)) == 0;
+  return a.size() == b.size() && (a.empty() || std::memcmp(static_cast<const void*>(a.data()), static_cast<const void*>(b.data()),
+                                             a.size() * sizeof(T)) == 0);
 }
 
 }  // namespace polydem::test
