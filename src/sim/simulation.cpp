@@ -129,9 +129,9 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0
   if (contacts) {
     contact_stage();
-    // No step taken: its energies are not counted (the ledger starts at zero).
+    // No step taken: its energies are not counted (the ledger starts at zero), its turns not taken.
     if (ranks_) ranks_->drop_energy();
-    else engine_->take_energy(nullptr);
+    else engine_->take_energy(nullptr), engine_->take_turns(nullptr);
   }
 }
 
@@ -210,6 +210,7 @@ void Simulation::driver_work_half() {
 // contact stage runs between the regions, exchanges and all, and each rank moves the bodies it owns.
 void Simulation::step(bool leave_kick_open) {
   const bool contacts = scene_.forces.contact.present;
+  if (kick_open_ && turns_left()) close_step();  // the turns follow the closing kick (rare)
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
   // The bodies this rank moves (all without a contact stage: nothing to cut); a rebuild in
@@ -280,7 +281,7 @@ void Simulation::step(bool leave_kick_open) {
     }
   });
   if (contacts && one_process) engine_->close_forces(all_owned(bodies), drivers);
-  if (contacts && !leave_kick_open) sums_taken();
+  if (contacts && !leave_kick_open) sums_taken(), turn_bodies_left();
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
   ++step_;
@@ -296,6 +297,16 @@ void Simulation::close_step() {
       kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->body_cut(), false);
   });
   sums_taken();
+  turn_bodies_left();
+}
+
+bool Simulation::turns_left() const { return ranks_ ? ranks_->turns_left() : engine_->turns_left(); }
+
+void Simulation::turn_bodies_left() {
+  if (ranks_) return ranks_->turn_owned();
+  if (!engine_->turns_left()) return;
+  const double work = turn_bodies(bodies, engine_->take_turns(nullptr), library_.shapes);  // J
+  engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work});
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the
