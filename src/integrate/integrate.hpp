@@ -400,11 +400,11 @@ void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, 
 // w, an asymmetric one's w made anew); a body that keeps no orientation (a sphere) is left
 // alone. Where a patch's shares moved within a step the drift, at v(n+1/2), missed the turn they
 // made within it (issue 16: pair_kernel.hpp, PairTurn). Called after the step's closing kick:
-// returns the work the turn does against the torque then (J, -torque . angle to first order:
-// what the springs gain), for the ledger's patch work. B: Bodies or a rank's LocalStore.
-template <class B, class Turns>
-double turn_bodies(B& b, const Turns& turns, const std::vector<Shape>& shapes) {
-  double work = 0.0;  // J
+// `book(work)` takes each body's work against the torque then (J, -torque . angle to first
+// order: what the springs gain), one term a body so that an exact sum gives any rank count's
+// bits, for the ledger's patch work. B: Bodies or a rank's LocalStore.
+template <class B, class Turns, class Book>
+void turn_bodies(B& b, const Turns& turns, const std::vector<Shape>& shapes, const Book& book) {
   for (const auto& t : turns) {
     const std::size_t i = t.body;
     if (keeps_no_orientation(shapes[b.shape[i]], b.inertia[i])) continue;
@@ -417,9 +417,8 @@ double turn_bodies(B& b, const Turns& turns, const std::vector<Shape>& shapes) {
     free_rotor::renormalize(q);
     b.angular_momentum[i] = q.conjugate() * momentum;
     if (!is_isotropic(b.inertia[i])) b.angular_velocity[i] = q * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
-    work -= b.torque[i].dot(angle);
+    book(-b.torque[i].dot(angle));
   }
-  return work;
 }
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).

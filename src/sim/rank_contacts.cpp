@@ -372,8 +372,8 @@ void RankContacts::drop_energy() {
 
 void RankContacts::turn_owned() {
   if (!turns_left()) return;
-  const double work = turn_bodies(store_, engine_->take_turns(&store_.ghost), shapes_);  // J
-  engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work});
+  turn_bodies(store_, engine_->take_turns(&store_.ghost), shapes_,
+              [&](double work) { engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work}); });  // J
 }
 
 std::size_t RankContacts::pairs() const {

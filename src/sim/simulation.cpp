@@ -305,8 +305,8 @@ bool Simulation::turns_left() const { return ranks_ ? ranks_->turns_left() : eng
 void Simulation::turn_bodies_left() {
   if (ranks_) return ranks_->turn_owned();
   if (!engine_->turns_left()) return;
-  const double work = turn_bodies(bodies, engine_->take_turns(nullptr), library_.shapes);  // J
-  engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work});
+  turn_bodies(bodies, engine_->take_turns(nullptr), library_.shapes,
+              [&](double work) { engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work}); });  // J
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the
