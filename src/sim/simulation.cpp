@@ -210,7 +210,6 @@ void Simulation::driver_work_half() {
 // contact stage runs between the regions, exchanges and all, and each rank moves the bodies it owns.
 void Simulation::step(bool leave_kick_open) {
   const bool contacts = scene_.forces.contact.present;
-  if (kick_open_ && turns_left()) close_step();  // the turns follow the closing kick (rare)
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
   // The bodies this rank moves (all without a contact stage: nothing to cut); a rebuild in
@@ -284,6 +283,9 @@ void Simulation::step(bool leave_kick_open) {
   if (contacts && !leave_kick_open) sums_taken(), turn_bodies_left();
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
+  // Turns follow the closing kick in this step, as with the kick closed: their work falls in the
+  // same ledger period whether the kicks are left open or not (rare: a patch's shares moved).
+  if (kick_open_ && turns_left()) close_step();
   ++step_;
   if (ledger_closes(step_)) close_ledger();
 }
