@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 #include "polydem/line_audit.hpp"
@@ -579,9 +580,16 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   if (omp_get_thread_num() == 0) name_arrays(bodies);
 #endif
   if (pose_bodies && !spheres_only_) pose(bodies, listed_);  // spheres: by measure_motion, where a driver pair reads the pose
-  const BodyView view{posed_.data(), bodies.position->data(), radius_.data(), bodies.velocity->data(),
-                      bodies.angular_velocity->data(), bodies.velocity_end->data(),
-                      bodies.angular_velocity_end->data(), bodies.mass->data(), any_sphere_};
+  const BodyView view{posed_.data(),
+                      bodies.position->data(),
+                      radius_.data(),
+                      bodies.velocity->data(),
+                      bodies.angular_velocity->data(),
+                      bodies.velocity_end->data(),
+                      bodies.angular_velocity_end->data(),
+                      bodies.mass->data(),
+                      any_sphere_,
+                      &turns_};
   // Both pair loops end without a barrier: the one after them is kept only where the region
   // reads their results (the sums) before its end.
   if (spheres_only_) {
@@ -635,6 +643,29 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
 #pragma omp barrier
   }
   if (then == AfterPairs::sum_bodies) reduce_bodies(bodies);
+}
+
+std::vector<BodyTurn> ContactEngine::take_turns(const std::vector<std::uint8_t>* ghost) {
+  struct Share {
+    std::uint32_t body, kind, other;  // kind 0: j a driver, 1: i's partner body j, 2: j's partner body i
+    Vec3 moment;                      // N m s^2
+  };
+  std::vector<Share> shares;
+  const auto owned = [&](std::uint32_t b) { return !ghost || !(*ghost)[b]; };
+  for (const PairTurn& t : turns_) {
+    if (owned(t.i)) shares.push_back({t.i, t.driver ? 0u : 1u, t.j, t.moment_i});
+    if (!t.driver && owned(t.j)) shares.push_back({t.j, 2u, t.i, t.moment_j});
+  }
+  turns_.clear();
+  std::sort(shares.begin(), shares.end(), [](const Share& a, const Share& b) {
+    return std::tie(a.body, a.kind, a.other) < std::tie(b.body, b.kind, b.other);
+  });
+  std::vector<BodyTurn> turns;
+  for (const Share& s : shares) {
+    if (turns.empty() || turns.back().body != s.body) turns.push_back({s.body, Vec3::Zero()});
+    turns.back().moment += s.moment;
+  }
+  return turns;
 }
 
 void ContactEngine::close_forces(const LocalBodies& bodies, Drivers& drivers) {

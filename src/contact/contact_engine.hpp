@@ -164,6 +164,12 @@ class ContactEngine {
   }
   bool records_contacts() const { return record_contacts_; }
 
+  // The turns the pair loops left this step (PairTurn, pair_kernel.hpp: rare, where a patch's
+  // shares moved within the step), summed per owned body over its pairs in the order of their
+  // local indices (global id order: any decomposition's and thread count's bits), then cleared.
+  std::vector<BodyTurn> take_turns(const std::vector<std::uint8_t>* ghost);
+  bool turns_left() const { return !turns_.empty(); }
+
   const ContactStats& stats() const { return stats_; }
   double skin() const { return settings_.skin; }  // m
   // The energy ledger's share of the contacts (J, by mechanism): each pair sums its own in
@@ -258,6 +264,7 @@ class ContactEngine {
   bool own_pass_cut_ = false;
   ContactStats stats_;
   ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy
+  std::vector<PairTurn> turns_;            // left by this step's pair loops, in no set order (take_turns)
 };
 
 inline ForceSums ContactEngine::force_sums(const LocalBodies& bodies) {

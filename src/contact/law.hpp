@@ -251,6 +251,8 @@ template <class Normal, bool kLone>
       out.patch_dashpot = std::max(-c * vn_e, 0.0) * k.patch_push->dashpot;
       if (c > 0.0) out.patch_spring = Normal::spring(law, k.r_star, 1.0, k.patch_push->spring);
       out.push = out.patch_dashpot + out.patch_spring;
+      const double spring_moment = c > 0.0 ? Normal::spring(law, k.r_star, 1.0, k.patch_push->spring_moment) : 0.0;
+      k.patch_push->moment = std::max(-c * vn_e, 0.0) * k.patch_push->dashpot_moment + spring_moment;  // N s^2
       if (f_last > 0.0 && u <= 0.0) out.push += release_force(f_last, u, dt);  // its clamp lets go as well
     } else if (overlap > 0.0 && h.gap >= 0.0 && vn < 0.0 && k.patch_depth >= 0.0) {
       const OnsetForce onset = onset_force(std::max(overlap, k.patch_depth), vn, std::max(-nu_w * vn_e, 0.0), spring, dt);

@@ -15,6 +15,26 @@
 
 namespace polydem {
 
+// The first moment about n+1 (N m s^2, about each body's centre) of the torques that the
+// impulses at the steps miss where a patch's shares moved within the step (patch_push.hpp): the
+// step's drift, at v(n+1/2), misses the turn they made within it, an angle error of O(lag dt)
+// (issue 16: a cube landing almost flat). Each body turns by I^-1 moment after the step
+// (ContactEngine::take_turns, integrate.hpp's turn_bodies), as the impulses' true timing would
+// have turned it. Torques only: the forces' same moment, shifting the centres, moved the
+// almost-flat landing's error by 1.4% at 0.1 x critical (4.15e-4 -> 4.10e-4), and a rank drifts
+// its ghosts' centres itself (body_exchange.hpp) where their orientations come from their owners.
+struct PairTurn {
+  std::uint32_t i, j;
+  bool driver;               // j is a driver: it takes no turn
+  Vec3 moment_i, moment_j;   // N m s^2, world
+};
+
+// A body's summed PairTurn moments (N m s^2, world), by its local index.
+struct BodyTurn {
+  std::uint32_t body;
+  Vec3 moment;
+};
+
 // What a pair kernel needs to know about body i (the particle side of every pair).
 struct BodyView {
   const PosedBody* posed;   // per body, posed for this step
@@ -26,6 +46,7 @@ struct BodyView {
   const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;       // kg
   bool any_sphere = true;   // some body is a sphere: else no body pair takes the exact step (no shape read per pair)
+  std::vector<PairTurn>* turns = nullptr;  // where a pair whose patch pushed leaves its turn (rare)
 };
 // Every body of the contact stage the same sphere: one radius (m) and mass (kg) for all.
 struct EqualSpheres {
@@ -122,7 +143,7 @@ struct PairScratch {
   std::vector<double> patch_mass;     // kg, damping_mass: contact on a patch (patch_dashpot_masses)
   std::vector<double> patch_depth;    // m, per found contact: ContactKinematics::patch_depth (patch_onsets)
   bool onsets = false;                // patch_depth is set for this pair (rare: the contact set changed)
-  std::vector<PatchPush> patch_push;  // per found contact where `onsets` and the band is 0 (patch_pushes)
+  mutable std::vector<PatchPush> patch_push;  // per found contact where `onsets` and the band is 0 (patch_pushes); the law sets each one's moment
   std::vector<std::uint8_t> pushing;  // per found contact: its region's shares move, patch_push is its push
   std::vector<PatchDrift> all_drift;  // the pair's sub-contacts over the step (patch_pushes)
   std::vector<PatchDrift> drift;      // one region's of them
@@ -466,6 +487,23 @@ template <class Parts, class Partner>
   totals.contacts = int(scratch.found.size());
 }
 
+// Pair p's PairTurn from its pushing sub-contacts' moments (the law's), appended to `turns`.
+template <class Partner>
+[[gnu::noinline]] void leave_turn(const BodyView& bodies, const Partner& partner, BodyPair p, const PairScratch& scratch,
+                                  std::vector<PairTurn>& turns) {
+  const Vec3 xi = bodies.position[p.i], xj = partner.center(p.j);  // m
+  PairTurn turn{p.i, p.j, partner.shape(p.j) == nullptr, Vec3::Zero(), Vec3::Zero()};
+  for (std::size_t c = 0; c < scratch.found.size(); ++c) {
+    if (!scratch.pushing[c]) continue;
+    const ContactPoint& g = scratch.found[c].geometry;
+    const Vec3 impulse_moment = scratch.patch_push[c].moment * g.normal;  // N s^2, on i
+    turn.moment_i += (g.point - xi).cross(impulse_moment);
+    turn.moment_j -= (g.point - xj).cross(impulse_moment);
+  }
+#pragma omp critical(polydem_pair_turns)
+  turns.push_back(turn);
+}
+
 template <class Parts, class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
                        const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
@@ -504,6 +542,7 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
     }
   }
   apply_law<Parts>(law, dt, bodies, partner, list, k, scratch, r_star, totals);
+  if (scratch.pushes && bodies.turns) [[unlikely]] leave_turn(bodies, partner, p, scratch, *bodies.turns);
   return totals;
 }
 

@@ -397,6 +397,32 @@ void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, 
   over_rotor_groups(b, groups, one, cut, wait);
 }
 
+// Turns body t.body by I_world^-1 t.moment (rad; t.moment in N m s^2, world) for each t of
+// `turns` (ContactEngine::take_turns), keeping its world angular momentum (an isotropic body its
+// w, an asymmetric one's w made anew); a body that keeps no orientation (a sphere) is left
+// alone. Where a patch's shares moved within a step the drift, at v(n+1/2), missed the turn they
+// made within it (issue 16: pair_kernel.hpp, PairTurn). Called after the step's closing kick:
+// `book(work)` takes each body's work against the torque then (J, -torque . angle to first
+// order: what the springs gain), one term a body so that an exact sum gives any rank count's
+// bits, for the ledger's patch work. B: Bodies or a rank's LocalStore.
+template <class B, class Turns, class Book>
+void turn_bodies(B& b, const Turns& turns, const std::vector<Shape>& shapes, const Book& book) {
+  for (const auto& t : turns) {
+    const std::size_t i = t.body;
+    if (keeps_no_orientation(shapes[b.shape[i]], b.inertia[i])) continue;
+    Quat& q = b.orientation[i];
+    const Vec3 angle = q * (q.conjugate() * t.moment).cwiseQuotient(b.inertia[i]);  // rad, world
+    const double size = angle.norm();
+    if (!(size > 0.0)) continue;
+    const Vec3 momentum = q * b.angular_momentum[i];  // kg m^2/s, world
+    q = Quat(Eigen::AngleAxisd(size, angle / size)) * q;
+    free_rotor::renormalize(q);
+    b.angular_momentum[i] = q.conjugate() * momentum;
+    if (!is_isotropic(b.inertia[i])) b.angular_velocity[i] = q * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
+    book(-b.torque[i].dot(angle));
+  }
+}
+
 // angular_velocity from angular_momentum and orientation (after the caller sets them).
 void update_angular_velocity(Bodies& b);
 

@@ -376,7 +376,13 @@ StateEnergy RankContacts::state_energy(const Bodies& bodies, const Drivers& driv
 
 void RankContacts::drop_energy() {
   taken_ = ExactEnergy{};
-  if (engine_) engine_->take_energy(nullptr);
+  if (engine_) engine_->take_energy(nullptr), engine_->take_turns(nullptr);
+}
+
+void RankContacts::turn_owned() {
+  if (!turns_left()) return;
+  turn_bodies(store_, engine_->take_turns(&store_.ghost), shapes_,
+              [&](double work) { engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work}); });  // J
 }
 
 std::size_t RankContacts::pairs() const {

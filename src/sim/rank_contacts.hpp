@@ -68,6 +68,11 @@ class RankContacts {
   // owned bodies (points: spheres' lists; a ghost's owner answers for it). Outside any team.
   bool watch_motion(PointWatch& watch);
   void sums_taken();
+  // After a closing kick: turns the owned bodies as this rank's pair loops asked (ContactEngine::
+  // take_turns, integrate.hpp's turn_bodies), its work booked with the ended contacts' energies;
+  // the ghosts' copies turn with their owners' next motion parcel.
+  void turn_owned();
+  bool turns_left() const { return engine_ && engine_->turns_left(); }
   void add_sums();  // the same with no kick: each owned body's sum added to its force
   // Drag and fluid forces on the owned bodies, in the store; returns their power over every
   // rank (W), summed exactly (a collective: one sum of ExactSum::kWords words, no body sent).

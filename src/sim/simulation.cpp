@@ -134,9 +134,9 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   predict_end_velocities(bodies, 0.0, rotors_);  // full-step velocities at t = 0
   if (contacts) {
     contact_stage();
-    // No step taken: its energies are not counted (the ledger starts at zero).
+    // No step taken: its energies are not counted (the ledger starts at zero), its turns not taken.
     if (ranks_) ranks_->drop_energy();
-    else engine_->take_energy(nullptr);
+    else engine_->take_energy(nullptr), engine_->take_turns(nullptr);
   }
 }
 
@@ -302,9 +302,12 @@ void Simulation::step(bool leave_kick_open) {
   audit::serial(audit::kClose);
   if (contacts && one_process) engine_->close_forces(all_owned(bodies), drivers);
   audit::serial(audit::kSerial);
-  if (contacts && !leave_kick_open) sums_taken();
+  if (contacts && !leave_kick_open) sums_taken(), turn_bodies_left();
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
+  // Turns follow the closing kick in this step, as with the kick closed: their work falls in the
+  // same ledger period whether the kicks are left open or not (rare: a patch's shares moved).
+  if (kick_open_ && turns_left()) close_step();
   ++step_;
   if (ledger_closes(step_)) close_ledger();
   audit::step_end();
@@ -319,6 +322,16 @@ void Simulation::close_step() {
       kick_after(bodies, 0.5 * dt_, rotors_, closing_sums(), engine_->pass_cut(), false);
   });
   sums_taken();
+  turn_bodies_left();
+}
+
+bool Simulation::turns_left() const { return ranks_ ? ranks_->turns_left() : engine_->turns_left(); }
+
+void Simulation::turn_bodies_left() {
+  if (ranks_) return ranks_->turn_owned();
+  if (!engine_->turns_left()) return;
+  turn_bodies(bodies, engine_->take_turns(nullptr), library_.shapes,
+              [&](double work) { engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work}); });  // J
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the

@@ -152,6 +152,8 @@ class Simulation {
   void driver_work_half();
   void contact_stage();
   void sums_taken();
+  void turn_bodies_left();  // after a closing kick: the turns the pair loops left (ContactEngine::take_turns)
+  bool turns_left() const;
   ForceSums closing_sums();  // one process: the sums a closing pass adds (from gravity where nothing else acts)
   StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 

@@ -44,9 +44,13 @@ struct ContactHistory {
 };
 
 // A sub-contact's push where its patch's contact set changed within the step (patch_push.hpp):
-// per unit of its dashpot's force (-) and, times kn, its spring's (m).
+// per unit of its dashpot's force (-) and, times kn, its spring's (m); the first moments about
+// n+1 that the impulses at the steps miss, per the same units (s^2, m s^2); and, set by the law,
+// that moment of its normal force (N s^2): what turns the bodies after the step (pair_kernel.hpp).
 struct PatchPush {
-  double dashpot, spring;
+  double dashpot = 0.0, spring = 0.0;                // -, m
+  double dashpot_moment = 0.0, spring_moment = 0.0;  // s^2, m s^2
+  double moment = 0.0;                               // N s^2
 };
 
 struct ContactKinematics {
@@ -75,7 +79,7 @@ struct ContactKinematics {
   double patch_depth = 0.0;
   // The linear law's end-of-step dashpot takes this push instead of its onset's where set (null:
   // the pair's contact set did not change, or a lone contact).
-  const PatchPush* patch_push = nullptr;
+  PatchPush* patch_push = nullptr;  // its `moment` written by the law
 };
 
 struct ContactForce {
