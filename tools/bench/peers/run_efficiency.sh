@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
-# Two builds alternated on the peers' settled sphere bed (run_peers.sh makes it once): each at 1
-# thread, 2 threads and `mpirun -np 2` (1 thread a rank), ROUNDS rounds of STEPS steps, printing
-# polydem's own loop time (s, no start-up). Efficiency = t(1 thread) / (2 t(2)).
+# Two builds alternated on a settled bed: each at 1 thread, 2 threads and `mpirun -np 2` (1 thread
+# a rank), ROUNDS rounds of STEPS steps, printing polydem's own loop time (s, no start-up).
+# Efficiency = t(1 thread) / (2 t(2)). SCENE=spheres (default): the peers' bed, made once by
+# run_peers.sh; SCENE=cubes: tools/bench/cubes.yaml's settled pile, made once by run_bench.sh.
 # A build before 27b641a spins as libgomp does by default: run both under GOMP_SPINCOUNT=1000.
-# usage: tools/bench/peers/run_efficiency.sh NEW_POLYDEM OLD_POLYDEM [ROUNDS] [STEPS]   (5, 10000)
+# usage: [SCENE=cubes] tools/bench/peers/run_efficiency.sh NEW_POLYDEM OLD_POLYDEM [ROUNDS] [STEPS]   (5, 10000)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 new=$1 old=$2 rounds=${3:-5} steps=${4:-10000}
-state=build/bench/peers/polydem
-[ -f "$state/settled.bin" ] || { echo "no $state/settled.bin: run tools/bench/peers/run_peers.sh first" >&2; exit 1; }
-until=$(python3 -c "print($(tail -1 "$state/energy.csv" | cut -d, -f1) + $steps * 1e-5)")
+case ${SCENE:-spheres} in
+  spheres) state=build/bench/peers/polydem scene=tools/bench/peers/spheres.yaml maker=run_peers.sh ;;
+  cubes) state=build/bench/cubes scene=tools/bench/cubes.yaml maker=run_bench.sh ;;
+  *) echo "SCENE is spheres or cubes, not '$SCENE'" >&2; exit 1 ;;
+esac
+[ -f "$state/settled.bin" ] || { echo "no $state/settled.bin: run tools/bench/$maker first" >&2; exit 1; }
+dt=$("$new" check "$scene" | awk '/chosen time step/ {print $4}')  # s
+until=$(python3 -c "print($(tail -1 "$state/energy.csv" | cut -d, -f1) + $steps * $dt)")
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+out=build/bench/efficiency
 loop_seconds() {  # launcher and binary (unquoted: words), threads
-  rm -rf build/bench/peers/efficiency
-  $1 run tools/bench/peers/spheres.yaml --out build/bench/peers/efficiency --resume "$state/settled.bin" --force \
+  rm -rf "$out"
+  $1 run "$scene" --out "$out" --resume "$state/settled.bin" --force \
     --until "$until" --threads "$2" --fixed-threads 2>&1 | sed -n 's/.* steps in \([0-9.]*\) s.*/\1/p' | head -1
 }
 mpi="mpirun -np 2 --bind-to none"
