@@ -124,6 +124,19 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
   searched_ = near.size() - recalled_;
 }
 
+void CandidateMemory::relabel(const std::vector<std::uint32_t>& was, const std::vector<std::uint32_t>& now) {
+  std::vector<std::int64_t> to(was.size(), -1);  // an old local index's new one, -1 when gone
+  for (std::size_t a = 0, b = 0; a < was.size(); ++a) {
+    while (b < now.size() && now[b] < was[a]) ++b;
+    if (b < now.size() && now[b] == was[a]) to[a] = std::int64_t(b);
+  }
+  std::vector<std::int64_t> kept;  // as remember() reads it: every kept pair's old search
+  for (std::size_t e = 0; e < searches_.size(); ++e)
+    if (to[searches_.pairs[e].i] >= 0 && to[searches_.pairs[e].j] >= 0) kept.push_back(std::int64_t(e));
+  remember(kept, {});
+  for (BodyPair& p : searches_.pairs) p = {std::uint32_t(to[p.i]), std::uint32_t(to[p.j])};
+}
+
 void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) {
   const auto source = [&](std::size_t k, std::size_t& e) -> const PairSearches& {
     if (from[k] >= 0) {

@@ -42,6 +42,10 @@ class CandidateMemory {
             double range, PairList& list);
   // Forgets every search: the bodies' indices or shapes changed.
   void clear() { searches_ = PairSearches{}; }
+  // Renumbers the searches for a new set of local bodies (a rank's after a migration): `was`
+  // and `now` give each local index's global id, both increasing, so the kept pairs stay sorted.
+  // Pairs with a body no longer local are dropped.
+  void relabel(const std::vector<std::uint32_t>& was, const std::vector<std::uint32_t>& now);
   std::size_t searched() const { return searched_; }  // pairs searched anew by the last find
   std::size_t recalled() const { return recalled_; }  // pairs whose search was kept
 

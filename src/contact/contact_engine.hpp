@@ -193,6 +193,8 @@ class ContactEngine {
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }
   PairList& driver_pairs() { return driver_list_; }
+  // The body pairs' last searches: a rank hands them to the engine of its next bodies (relabelled).
+  CandidateMemory& searches() { return memory_; }
 
  private:
   // The bodies `some` (increasing: listed_ or some of it), each thread its share of the cut.

@@ -92,9 +92,14 @@ void RankContacts::migrate_bodies() {
   recut_if_unbalanced(owned_rows);
   Handover h = migrate(link_, cut_, store_, active_slots(engine_->body_pairs(), store_, false),
                        active_slots(engine_->driver_pairs(), store_, true));
+  const std::vector<std::uint32_t> was = std::move(store_.global_id);
   store_ = std::move(h.owned);
   plan_ = share_ghosts(link_, cut_, halo_, store_);
+  // The pairs still local keep their searches: a pile's rebuild searches only its movers again.
+  CandidateMemory searches = std::move(engine_->searches());
+  searches.relabel(was, store_.global_id);
   adopt(h.body_table, h.driver_table);
+  engine_->searches() = std::move(searches);
 }
 
 // The smallest id of an owned body whose centre is not finite, or -1.

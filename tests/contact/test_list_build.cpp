@@ -162,6 +162,53 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
   omp_set_num_threads(threads_before);
 }
 
+TEST_CASE("remembered searches relabelled to a rank's next bodies give the list a new search gives") {
+  const std::vector<Shape> shapes = {make_cube(0.5, 0.05), make_octahedron(0.6, 0.04), make_tetrahedron(0.4, 0.05)};
+  const double range = 0.05, extra = 0.05;  // m
+  std::vector<Posed> all = random_bodies(shapes, 60);  // indexed by global id
+  // A rank's local bodies before and after a migration: increasing ids, some left, some new.
+  std::vector<std::uint32_t> was, now;
+  for (std::uint32_t g = 0; g < all.size(); ++g) {
+    if (g % 4 != 3) was.push_back(g);
+    if (g % 5 != 4) now.push_back(g);
+  }
+  const auto search = [&](CandidateMemory& memory, const std::vector<std::uint32_t>& ids) {
+    std::vector<PosedBody> posed;
+    std::vector<Vec3> x;
+    std::vector<Quat> q;
+    std::vector<double> reach;  // m, the farthest core vertex
+    for (std::uint32_t g : ids) {
+      posed.push_back(all[g].body());
+      x.push_back(all[g].position);
+      q.push_back(all[g].q);
+      double r = 0.0;
+      for (const Vec3& v : all[g].shape->vertices) r = std::max(r, all[g].scale * v.norm());
+      reach.push_back(r);
+    }
+    const std::vector<BodyPair> near = near_pairs(posed, range);
+    const PairList want = reference(near, posed, range);
+    PairList got;
+    memory.find(near, posed, {x.data(), q.data(), reach.data()}, range, got);
+    CHECK(same_bytes(got.pairs, want.pairs));
+    CHECK(same_bytes(got.slot_begin, want.slot_begin));
+    CHECK(keys(got.features) == keys(want.features));
+    CHECK(same_bytes(got.slot_gap, want.slot_gap));
+    CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+    return near;
+  };
+  CandidateMemory memory(extra);
+  search(memory, was);
+  for (Posed& b : all) b = Posed(*b.shape, b.scale, b.position + Vec3(0.004, -0.003, 0.002), b.q);  // all moved alike
+  memory.relabel(was, now);
+  const std::vector<BodyPair> near = search(memory, now);
+  // No pair moved relative to itself: every pair of two bodies local before kept its search.
+  const auto was_local = [&](std::uint32_t k) { return std::binary_search(was.begin(), was.end(), now[k]); };
+  const auto both = std::count_if(near.begin(), near.end(), [&](BodyPair p) { return was_local(p.i) && was_local(p.j); });
+  CHECK(both > 0);
+  CHECK(memory.recalled() == std::size_t(both));
+  CHECK(memory.searched() == near.size() - std::size_t(both));  // the new bodies' pairs
+}
+
 TEST_CASE("a gap rounded to a float is the float std::nextafter gives below it, on both sides of 0") {
   // gap_below steps the float's bits itself: it must be the nearest float <= the gap, as before.
   const float inf = std::numeric_limits<float>::infinity();
