@@ -20,10 +20,14 @@ struct CutPoint {
 
 }  // namespace
 
-// Each owned body's weight from the last lists (this rank counted them): its own step as one
-// candidate feature pair (2 halves) plus the candidates of its pairs (work: counted on both sides).
+// Each owned body's weight from the last lists (this rank counted them): its own step (a
+// sphere's as one candidate feature pair, a polyhedron's as four) plus the candidates of its
+// pairs (work: counted on both sides).
 std::vector<std::uint64_t> RankContacts::owned_weights() const {
-  std::vector<std::uint64_t> w(plan_.owned.size(), kBodyWork);
+  const std::vector<std::uint32_t> rows = store_.owned_rows();
+  std::vector<std::uint64_t> w(rows.size());
+  for (std::size_t k = 0; k < w.size(); ++k)
+    w[k] = shapes_[std::size_t(store_.shape[rows[k]])].is_sphere() ? kBodyWork : kPolyhedronWork;
   if (owned_work_.size() == w.size())
     for (std::size_t k = 0; k < w.size(); ++k) w[k] += owned_work_[k];
   return w;
