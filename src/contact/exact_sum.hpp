@@ -55,6 +55,7 @@ class ExactSum {
   // Adds or takes (`negative`) v 2^(max(exponent, 1) - 1075), v < 2^63: add_all's bin totals.
   void add_scaled(std::uint64_t v, int exponent, bool negative);
   void carry();  // digits below the top into [0, 2^32)
+  static void carry_digits(std::int64_t* d, int count);  // d[0..count-1) into [0, 2^32), the rest into d[count - 1]
 
   std::array<std::int64_t, kDigits> digit_{};
   std::int64_t terms_ = 0;                        // added since the last carry
