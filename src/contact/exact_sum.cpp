@@ -1,6 +1,7 @@
 #include "contact/exact_sum.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -46,6 +47,42 @@ void ExactSum::add_all(const double* x, std::size_t n) {
     for (unsigned e = lo; e <= hi; ++e)
       if (const std::int64_t v = std::exchange(bins[e], 0)) add_scaled(v < 0 ? -std::uint64_t(v) : std::uint64_t(v), int(e), v < 0);
   }
+}
+
+// Ogita, Rump and Oishi's Sum2 in two lanes (even and odd terms: packed instructions): exact =
+// the lanes' sums + sum e_i (TwoSum's errors, exact); c their rounded sums. Met, the bound is
+// below (n^2 / 4 + n) eps^2 sum |x| (1 + o(1)), eps = 2^-53; hi + lo = the lanes' s + c exactly.
+// hi is the rounded exact sum when |lo| + that bound stays inside half hi's smaller gap.
+double ExactSum::rounded_sum(const double* x, std::size_t n) {
+  using Lanes = double __attribute__((vector_size(16)));  // two doubles: SSE2's packed instructions
+  using LaneBits = std::int64_t __attribute__((vector_size(16)));
+  const LaneBits magnitude = {std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::max()};
+  Lanes s = {0.0, 0.0}, c = {0.0, 0.0}, a = {0.0, 0.0};  // running sums, their errors' sums, sums of |x|
+  auto add = [&](Lanes v) {
+    const Lanes t = s + v, z = t - s;
+    c += (s - (t - z)) + (v - z);
+    s = t;
+    a += (Lanes)((LaneBits)v & magnitude);
+  };
+  std::size_t i = 0;
+  for (Lanes v; i + 1 < n; i += 2) {
+    std::memcpy(&v, x + i, sizeof v);
+    add(v);
+  }
+  if (i < n) add(Lanes{x[i], 0.0});
+  const double sum = s[0] + s[1], z0 = sum - s[0], e = (s[0] - (sum - z0)) + (s[1] - z0);
+  const double err = c[0] + c[1] + e, a_all = a[0] + a[1];
+  const double hi = sum + err, z = hi - sum, lo = (sum - (hi - z)) + (err - z);
+  const double bound = 2.0 * (double(n) * double(n) * 0x1p-105 * a_all);  // 4 n^2 eps^2 sum |x|: above the bound
+  // No overflow, no bound or gap below the normal range (a NaN or infinity fails the first test).
+  const bool plain = a_all <= 0x1p900 && std::abs(hi) >= 0x1p-900 && n < (std::size_t(1) << 20);
+  if (plain) {
+    const double gap = std::abs(hi) - std::nextafter(std::abs(hi), 0.0);  // exact: the smaller of hi's two
+    if (std::abs(lo) + bound <= 0.5 * gap * (1.0 - 0x1p-40)) return hi;
+  }
+  ExactSum exact;
+  exact.add_all(x, n);
+  return exact.value();
 }
 
 void ExactSum::add_scaled(std::uint64_t v, int exponent, bool negative) {

@@ -41,6 +41,10 @@ class ExactSum {
   // mantissas are first summed as integers by sign and exponent, then each exponent's total
   // is added once (a long run of terms: drag and fluid forces' power, one a body a step).
   void add_all(const double* x, std::size_t n);
+  // The sum of x[0..n) rounded once, the double add_all then value() gives, in ~3x fewer
+  // instructions a term: a compensated sum whose error bound shows it rounds to that double,
+  // else (near a tie, heavy cancellation, extreme exponents) the exact sum. One process's power.
+  static double rounded_sum(const double* x, std::size_t n);
   void add(const ExactSum& o);
   // The sum rounded to the nearest double (once; a subnormal total may round twice).
   double value() const;
