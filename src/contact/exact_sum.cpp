@@ -1,6 +1,7 @@
 #include "contact/exact_sum.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -17,18 +18,18 @@ void ExactSum::add(const ExactSum& o) {
 
 namespace {
 
-// add_all's integer sums by exponent and sign (2 x 2048), zero between its calls; 32 KB a thread.
-thread_local std::array<std::uint64_t, 4096> t_bins{};
+// add_all's signed integer sums by exponent, zero between its calls; 16 KB a thread.
+thread_local std::array<std::int64_t, 2048> t_bins{};
 
 }  // namespace
 
 void ExactSum::add_all(const double* x, std::size_t n) {
   constexpr std::size_t kChunk = 1024;  // each term adds below 2^53 to its bin: 2^10 of them stay below 2^63
   constexpr std::uint64_t kMantissa = (std::uint64_t(1) << 52) - 1;
-  std::uint64_t* bins = t_bins.data();
+  std::int64_t* bins = t_bins.data();
   for (std::size_t at = 0; at < n;) {
     const std::size_t end = std::min(n, at + kChunk);
-    unsigned lo = 4096, hi = 0;  // the bins used in this chunk
+    unsigned lo = 2048, hi = 0;  // the exponents used in this chunk
     for (; at < end; ++at) {
       const std::uint64_t u = std::bit_cast<std::uint64_t>(x[at]);
       if (u << 1 == 0) continue;  // +-0
@@ -37,14 +38,51 @@ void ExactSum::add_all(const double* x, std::size_t n) {
         add_special(x[at]);
         continue;
       }
-      const unsigned bin = exponent << 1 | unsigned(u >> 63);
-      bins[bin] += (u & kMantissa) | std::uint64_t(exponent != 0) << 52;  // a subnormal has no leading 1
-      lo = std::min(lo, bin);
-      hi = std::max(hi, bin);
+      const std::int64_t m = std::int64_t((u & kMantissa) | std::uint64_t(exponent != 0) << 52);  // a subnormal has no leading 1
+      const std::int64_t sign = -std::int64_t(u >> 63);  // 0 or -1: (m ^ sign) - sign negates
+      bins[exponent] += (m ^ sign) - sign;
+      lo = std::min(lo, exponent);
+      hi = std::max(hi, exponent);
     }
-    for (unsigned b = lo; b <= hi; ++b)
-      if (bins[b]) add_scaled(std::exchange(bins[b], 0), int(b >> 1), b & 1);
+    for (unsigned e = lo; e <= hi; ++e)
+      if (const std::int64_t v = std::exchange(bins[e], 0)) add_scaled(v < 0 ? -std::uint64_t(v) : std::uint64_t(v), int(e), v < 0);
   }
+}
+
+// Ogita, Rump and Oishi's Sum2 in two lanes (even and odd terms: packed instructions): exact =
+// the lanes' sums + sum e_i (TwoSum's errors, exact); c their rounded sums. Met, the bound is
+// below (n^2 / 4 + n) eps^2 sum |x| (1 + o(1)), eps = 2^-53; hi + lo = the lanes' s + c exactly.
+// hi is the rounded exact sum when |lo| + that bound stays inside half hi's smaller gap.
+double ExactSum::rounded_sum(const double* x, std::size_t n) {
+  using Lanes = double __attribute__((vector_size(16)));  // two doubles: SSE2's packed instructions
+  using LaneBits = std::int64_t __attribute__((vector_size(16)));
+  const LaneBits magnitude = {std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::max()};
+  Lanes s = {0.0, 0.0}, c = {0.0, 0.0}, a = {0.0, 0.0};  // running sums, their errors' sums, sums of |x|
+  auto add = [&](Lanes v) {
+    const Lanes t = s + v, z = t - s;
+    c += (s - (t - z)) + (v - z);
+    s = t;
+    a += (Lanes)((LaneBits)v & magnitude);
+  };
+  std::size_t i = 0;
+  for (Lanes v; i + 1 < n; i += 2) {
+    std::memcpy(&v, x + i, sizeof v);
+    add(v);
+  }
+  if (i < n) add(Lanes{x[i], 0.0});
+  const double sum = s[0] + s[1], z0 = sum - s[0], e = (s[0] - (sum - z0)) + (s[1] - z0);
+  const double err = c[0] + c[1] + e, a_all = a[0] + a[1];
+  const double hi = sum + err, z = hi - sum, lo = (sum - (hi - z)) + (err - z);
+  const double bound = 2.0 * (double(n) * double(n) * 0x1p-105 * a_all);  // 4 n^2 eps^2 sum |x|: above the bound
+  // No overflow, no bound or gap below the normal range (a NaN or infinity fails the first test).
+  const bool plain = a_all <= 0x1p900 && std::abs(hi) >= 0x1p-900 && n < (std::size_t(1) << 20);
+  if (plain) {
+    const double gap = std::abs(hi) - std::nextafter(std::abs(hi), 0.0);  // exact: the smaller of hi's two
+    if (std::abs(lo) + bound <= 0.5 * gap * (1.0 - 0x1p-40)) return hi;
+  }
+  ExactSum exact;
+  exact.add_all(x, n);
+  return exact.value();
 }
 
 void ExactSum::add_scaled(std::uint64_t v, int exponent, bool negative) {
@@ -63,35 +101,48 @@ void ExactSum::add_special(double x) {
   else ++neg_inf_;
 }
 
-void ExactSum::carry() {
-  for (int k = 0; k + 1 < kDigits; ++k) {
-    const std::int64_t c = digit_[k] >> 32;  // floor: the digit left in [0, 2^32)
-    digit_[k] -= c * (std::int64_t(1) << 32);
-    digit_[k + 1] += c;
+void ExactSum::carry_digits(std::int64_t* d, int count) {
+  for (int k = 0; k + 1 < count; ++k) {
+    const std::int64_t c = d[k] >> 32;  // floor: the digit left in [0, 2^32)
+    d[k] -= c * (std::int64_t(1) << 32);
+    d[k + 1] += c;
   }
+}
+
+void ExactSum::carry() {
+  carry_digits(digit_.data(), kDigits);
   terms_ = 1;  // digits below 2^32, as after one term
 }
 
+// Normalises only the digits in use (a run's terms span a few of the 67) and the two above
+// them that its carries can reach; the rounding sees the same integer as a full carry's.
 double ExactSum::value() const {
   if (nan_ || (pos_inf_ && neg_inf_)) return std::numeric_limits<double>::quiet_NaN();
   if (pos_inf_ || neg_inf_) return pos_inf_ ? std::numeric_limits<double>::infinity()
                                             : -std::numeric_limits<double>::infinity();
-  ExactSum s = *this;
-  s.carry();  // one integer, one set of digits: the rounding below sees only the value
-  const bool negative = s.digit_[kDigits - 1] < 0;
+  int high = kDigits - 1, low = 0;
+  while (high >= 0 && digit_[high] == 0) --high;
+  if (high < 0) return 0.0;
+  while (digit_[low] == 0) ++low;
+  // A digit below 2^63 carries below 2^31 + 1 into the next, which carries 0 or -1 into the one above.
+  const int count = std::min(high + 2, kDigits - 1) - low + 1;
+  std::array<std::int64_t, kDigits> d{};  // digit low + i
+  std::copy(digit_.begin() + low, digit_.begin() + high + 1, d.begin());
+  carry_digits(d.data(), count);
+  const bool negative = d[count - 1] < 0;
   if (negative) {
-    for (std::int64_t& d : s.digit_) d = -d;
-    s.carry();
+    for (int i = 0; i < count; ++i) d[i] = -d[i];
+    carry_digits(d.data(), count);
   }
-  int top = kDigits - 1;
-  while (top >= 0 && s.digit_[top] == 0) --top;
+  int top = count - 1;
+  while (top >= 0 && d[top] == 0) --top;
   if (top < 0) return 0.0;
-  auto digit = [&](int k) { return k >= 0 ? static_cast<unsigned __int128>(s.digit_[k]) : 0; };
+  auto digit = [&](int k) { return k >= 0 ? static_cast<unsigned __int128>(d[k]) : 0; };
   const unsigned __int128 bits = digit(top) << 64 | digit(top - 1) << 32 | digit(top - 2);
   bool sticky = false;  // a bit below the three top digits: decides a tie
-  for (int k = 0; k < top - 2; ++k) sticky |= s.digit_[k] != 0;
-  const std::uint64_t high = std::uint64_t(bits >> 64);
-  const int lead = high ? 64 + std::bit_width(high) - 1 : std::bit_width(std::uint64_t(bits)) - 1;
+  for (int k = 0; k < top - 2; ++k) sticky |= d[k] != 0;
+  const std::uint64_t lead_word = std::uint64_t(bits >> 64);
+  const int lead = lead_word ? 64 + std::bit_width(lead_word) - 1 : std::bit_width(std::uint64_t(bits)) - 1;
   const int shift = lead - 63;  // keep 64 bits: 11 below the double's 53 round it, sticky in the last
   std::uint64_t m;
   if (shift >= 0) {
@@ -100,7 +151,7 @@ double ExactSum::value() const {
   } else {
     m = std::uint64_t(bits) << -shift;
   }
-  const double r = std::ldexp(double(m | std::uint64_t(sticky)), 32 * (top - 2) - 1074 + shift);
+  const double r = std::ldexp(double(m | std::uint64_t(sticky)), 32 * (low + top - 2) - 1074 + shift);
   return negative ? -r : r;
 }
 

@@ -41,6 +41,10 @@ class ExactSum {
   // mantissas are first summed as integers by sign and exponent, then each exponent's total
   // is added once (a long run of terms: drag and fluid forces' power, one a body a step).
   void add_all(const double* x, std::size_t n);
+  // The sum of x[0..n) rounded once, the double add_all then value() gives, in ~3x fewer
+  // instructions a term: a compensated sum whose error bound shows it rounds to that double,
+  // else (near a tie, heavy cancellation, extreme exponents) the exact sum. One process's power.
+  static double rounded_sum(const double* x, std::size_t n);
   void add(const ExactSum& o);
   // The sum rounded to the nearest double (once; a subnormal total may round twice).
   double value() const;
@@ -55,6 +59,7 @@ class ExactSum {
   // Adds or takes (`negative`) v 2^(max(exponent, 1) - 1075), v < 2^63: add_all's bin totals.
   void add_scaled(std::uint64_t v, int exponent, bool negative);
   void carry();  // digits below the top into [0, 2^32)
+  static void carry_digits(std::int64_t* d, int count);  // d[0..count-1) into [0, 2^32), the rest into d[count - 1]
 
   std::array<std::int64_t, kDigits> digit_{};
   std::int64_t terms_ = 0;                        // added since the last carry

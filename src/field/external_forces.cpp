@@ -55,7 +55,7 @@ Vec3 ExternalForces::grid_force(const FieldBodies& rows, std::size_t b) const {
   return f;
 }
 
-ExactSum ExternalForces::add(const FieldBodies& rows) {
+void ExternalForces::apply(const FieldBodies& rows) {
   const bool grid_forces = grid_ && (friction_cx_ || pressure_ || viscous_ || archimedes_);
   if (grid_forces && void_fraction_) void_fraction_->particle_volumes(*grid_, rows, vs_);
   parallel_for(rows.size, [&](std::size_t b) {
@@ -71,11 +71,20 @@ ExactSum ExternalForces::add(const FieldBodies& rows) {
     rows.force[b] += f;
     power_[b] = f.dot(v);
   });
-  ExactSum power;  // W
-  power.add_all(power_.data(), rows.size);
   outside_ = 0;
   for (std::size_t b = 0; b < rows.size && grid_; ++b) outside_ += outside_flag_[b];
+}
+
+ExactSum ExternalForces::add(const FieldBodies& rows) {
+  apply(rows);
+  ExactSum power;  // W
+  power.add_all(power_.data(), rows.size);
   return power;
+}
+
+double ExternalForces::add(Bodies& bodies) {
+  apply(field_rows(bodies));
+  return ExactSum::rounded_sum(power_.data(), bodies.size());
 }
 
 std::optional<VoidFractionField> ExternalForces::void_fraction(const Bodies& bodies) const {

@@ -33,7 +33,8 @@ class ExternalForces {
   // sum_b f_b . v_b (W), summed exactly: the same bits however the rows are split among
   // threads and ranks (each rank sums its own, the ranks' words are added).
   ExactSum add(const FieldBodies& rows);
-  double add(Bodies& bodies) { return add(field_rows(bodies)).value(); }  // one process: every body
+  // One process, every body: the power rounded (ExactSum::rounded_sum, add()'s value()).
+  double add(Bodies& bodies);
 
   const FluidGrid* grid() const { return grid_ ? &*grid_ : nullptr; }
   // Owned rows whose centre was outside the grid at the last add(): no grid force acts on them.
@@ -44,6 +45,7 @@ class ExternalForces {
 
  private:
   Vec3 grid_force(const FieldBodies& rows, std::size_t b) const;
+  void apply(const FieldBodies& rows);  // the forces; each row's power in power_
 
   FieldSettings::Quadratic quadratic_{};
   bool quadratic_on_ = false;

@@ -45,12 +45,26 @@ SurfaceFit repose_angle(const Bodies& bodies, const DrumSection& drum, double co
 // Mean diameter of the spheres of the same volume as the bodies (m); 0 without bodies.
 double mean_equivalent_diameter(const Bodies& bodies, const std::vector<Shape>& shapes);
 
-// The probes of a scene, each with its NAME.csv; a resumed run appends and takes the flow
-// rate's previous row from the file.
+// A rank's part of a reading, met on rank 0 (one gather a row; no body state sent): each body
+// past a flow plane by global id, so rank 0 sums their masses in id order as one process does,
+// and each column's highest centre, the highest of the ranks' kept (the lowest id on a tie).
+struct FlowTerm {
+  std::uint32_t body = 0;  // global id
+  double mass = 0.0;       // kg
+};
+struct ColumnTop {
+  long column = 0;
+  std::uint32_t body = 0;  // global id
+  double h = 0.0, y = 0.0;  // m, across and up the section
+};
+
+// The probes of a scene, each with its NAME.csv (written by the process that writes, `io`); a
+// resumed run appends and takes the flow rate's previous row from the file.
 class Probes {
  public:
-  Probes(const Simulation& sim, const std::string& dir, bool resume);
-  void row();  // one row of every probe at the current time
+  Probes(const Simulation& sim, const std::string& dir, bool resume, bool io = true);
+  // One row of every probe at the current time (distributed runs: a collective of every rank).
+  void row();
 
  private:
   struct Flow {
@@ -65,8 +79,12 @@ class Probes {
     double column = 0.0;  // m
   };
   DrumSection section(const Repose& r) const;
+  // Each probe's part from this process's bodies, then from every rank's on the writing one.
+  std::vector<char> measure() const;
+  std::vector<char> met(const std::vector<char>& mine) const;
 
   const Simulation& sim_;
+  bool io_;
   std::vector<Flow> flows_;
   std::vector<Repose> reposes_;
 };

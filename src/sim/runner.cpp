@@ -201,6 +201,8 @@ class OutputWriter {
   OutputWriter(Simulation& sim, const RunOptions& o, OutputProgress progress)
       : sim_(sim), dir_(o.out_dir), io_(sim.rank() == 0), progress_(std::move(progress)),
         view_box_(view_box(bodies_box(sim), sim.drivers)) {
+    // output.probes: flow.csv, angle.csv (every rank measures its own bodies)
+    probes_ = std::make_unique<Probes>(sim, dir_, !o.resume.empty(), io_);
     if (!io_) return;
     pvd_ = std::make_unique<PvdFiles>(dir_);
     for (const OutputFrame& f : progress_.frames) pvd_->add(f.time, f.files);
@@ -211,7 +213,6 @@ class OutputWriter {
                                  "elastic_rolling", "dissipated_dashpot", "dissipated_sliding", "dissipated_rolling",
                                  "patch_work"}, !o.resume.empty(), resumed_at(sim));
     if (sim.external()) fluid_ = std::make_unique<FluidSeries>(sim, dir_ + "/fluid.csv", !o.resume.empty());
-    probes_ = std::make_unique<Probes>(sim, dir_, !o.resume.empty());  // output.probes: flow.csv, angle.csv
     for (std::size_t j = 0; j < sim.drivers.size(); ++j)  // force and torque the particles exert on it
       driver_series_.push_back(std::make_unique<CsvSeries>(dir_ + "/driver_" + sim.drivers.name(std::uint32_t(j)) + ".csv",
           std::vector<std::string>{"time", "fx", "fy", "fz", "tx", "ty", "tz", "x", "y", "z"}, !o.resume.empty(),
@@ -234,12 +235,12 @@ class OutputWriter {
   // Returns whether the contact table is whole on this process (one process: check_overlaps).
   bool energy_row() {
     if (!sim_.scene().output.csv_every) return false;
-    const OutputSettings& out = sim_.scene().output;
-    const bool reads_bodies = sim_.external() || !out.flow_probes.empty() || !out.repose_probes.empty();
-    if (reads_bodies) sim_.gather_bodies();  // fluid.csv and the probes read every body (rank 0's copy)
+    const bool reads_bodies = sim_.external() != nullptr;
+    if (reads_bodies) sim_.gather_bodies();  // fluid.csv reads every body (rank 0's copy)
     sim_.sum_energy();                        // each rank's part of the energies, reduced exactly
     const std::size_t outside = sim_.bodies_outside_grid();  // a collective too
     if (energy_) write_rows(outside);
+    probes_->row();                           // each rank's part of the probes, met on rank 0
     if (reads_bodies) sim_.release_bodies();
     return !sim_.distributed();
   }
@@ -280,7 +281,7 @@ class OutputWriter {
     progress_.frames.push_back(f);
   }
 
-  // Rank 0's CSV rows: energy, the fluid's, the drivers', the probes'.
+  // Rank 0's CSV rows: energy, the fluid's, the drivers'.
   void write_rows(std::size_t outside) {
     const EnergyRow e = sim_.energy();
     if (fluid_) fluid_->row(outside);
@@ -294,7 +295,6 @@ class OutputWriter {
       driver_series_[j]->row({sim_.time(), d.force.x(), d.force.y(), d.force.z(), d.torque.x(), d.torque.y(),
                               d.torque.z(), x.x(), x.y(), x.z()});
     }
-    probes_->row();
   }
 
   // STEM_NNNNNN_pK.vtu and .vtp: each rank's owned bodies and the contacts it answers for;

@@ -115,3 +115,98 @@ TEST_CASE("exact sum: add_all's binned terms give add's sum, word for word", "[c
   CHECK(binned.words() == one_by_one.words());
   CHECK(std::isinf(binned.value()));
 }
+
+namespace {
+
+// An independent reference: Shewchuk's exact partials and their correctly rounded total, as
+// Python's math.fsum computes it (exact while no partial overflows: exponents below ~1000 here).
+double fsum(const std::vector<double>& terms) {
+  std::vector<double> partials;
+  for (double x : terms) {
+    std::size_t used = 0;
+    for (double y : partials) {
+      if (std::abs(x) < std::abs(y)) std::swap(x, y);
+      const double hi = x + y, lo = y - (hi - x);  // hi + lo == x + y exactly
+      if (lo != 0.0) partials[used++] = lo;
+      x = hi;
+    }
+    partials.resize(used);
+    partials.push_back(x);
+  }
+  std::size_t n = partials.size();
+  if (n == 0) return 0.0;
+  double hi = partials[--n], lo = 0.0;
+  while (n > 0) {
+    const double x = hi, y = partials[--n];
+    hi = x + y;
+    lo = y - (hi - x);
+    if (lo != 0.0) break;
+  }
+  // hi + lo rounded half-even; the partials below lo decide a tie
+  if (n > 0 && ((lo < 0 && partials[n - 1] < 0) || (lo > 0 && partials[n - 1] > 0))) {
+    const double y = lo * 2, x = hi + y;
+    if (y == x - hi) hi = x;
+  }
+  return hi;
+}
+
+}  // namespace
+
+TEST_CASE("exact sum: value() of runs of a few exponents, of wide runs and of cancellations, against fsum", "[contact][energy]") {
+  // A step's power: tens of terms within a few digits of each other; value() normalises only the
+  // digits in use, so the runs sit anywhere in the range, the subnormals and the top included.
+  std::mt19937_64 rng(19);
+  auto term = [&](int centre, int spread) {
+    const double m = double(rng() >> 11) * 0x1.0p-53 * (rng() & 1 ? 1 : -1);
+    return std::ldexp(m, centre + int(rng() % (2 * spread + 1)) - spread);
+  };
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int n = 1 + int(rng() % 120);
+    const int spread = trial % 3 == 0 ? 400 : int(rng() % 70);
+    const int centre = std::clamp(int(rng() % 2100) - 1074, -1074 + spread, 990 - spread);
+    std::vector<double> terms;
+    for (int k = 0; k < n; ++k) terms.push_back(term(centre, spread));
+    if (trial % 4 == 1)  // cancel most of it: the total lies digits below the terms
+      for (int k = 0; k < n; ++k) terms.push_back(-terms[k] * (k % 5 ? 1.0 : 1.0 - 0x1p-52));
+    if (trial % 5 == 2) terms.push_back(-fsum(terms));  // the remainder below the rounding alone
+    std::shuffle(terms.begin(), terms.end(), rng);
+    ExactSum one_by_one, binned;
+    for (double x : terms) one_by_one.add(x);
+    binned.add_all(terms.data(), terms.size());
+    const double reference = fsum(terms);
+    INFO("trial " << trial << ", " << terms.size() << " terms about 2^" << centre);
+    CHECK(same_bits(one_by_one.value(), reference));
+    CHECK(same_bits(binned.value(), reference));
+    CHECK(same_bits(ExactSum::rounded_sum(terms.data(), terms.size()), reference));
+  }
+  // Near the top of the range the carries reach the last digit.
+  const double big = std::ldexp(1.0, 1021);
+  CHECK(exact({big, big, big, -std::ldexp(1.0, 970)}) == std::nextafter(3 * big, 0.0));  // one ulp below
+  CHECK(exact({-big, -big, -big, std::ldexp(1.0, 969)}) == -3 * big);  // a tie: to even
+}
+
+TEST_CASE("exact sum: rounded_sum gives value()'s double where a compensated sum cannot tell", "[contact][energy]") {
+  auto rounded = [](std::vector<double> terms) { return ExactSum::rounded_sum(terms.data(), terms.size()); };
+  const double tie = std::ldexp(1.0, -53);  // half an ulp of 1: the compensated sum sits on the tie
+  CHECK(same_bits(rounded({1.0, tie}), 1.0));
+  CHECK(same_bits(rounded({1.0, tie, std::ldexp(1.0, -200)}), std::nextafter(1.0, 2.0)));
+  CHECK(same_bits(rounded({1e100, 1.0, -1e100}), 1.0));  // all but the error cancels
+  CHECK(same_bits(rounded({0.1, 0.2, -0.3}), 0x1p-55));
+  CHECK(same_bits(rounded({2.5, -2.5}), 0.0));  // +0, as value()
+  CHECK(same_bits(rounded({}), 0.0));
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  CHECK(same_bits(rounded({tiny, tiny, tiny, -tiny}), 2 * tiny));
+  CHECK(same_bits(rounded({DBL_MAX, DBL_MAX, -DBL_MAX}), DBL_MAX));  // a compensated sum overflows
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK(same_bits(rounded({1.0, inf}), inf));
+  CHECK(std::isnan(rounded({inf, -inf})));
+  // A short run of like terms (a step's drag power): the compensated path, exact to the bit.
+  std::mt19937_64 rng(23);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<double> terms;
+    for (int k = 0; k < 75; ++k) terms.push_back(-std::ldexp(double(rng() >> 11), -60 - int(rng() % 20)));
+    ExactSum e;
+    e.add_all(terms.data(), terms.size());
+    CHECK(same_bits(rounded(terms), e.value()));
+  }
+}
