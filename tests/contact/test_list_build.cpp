@@ -162,6 +162,24 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
   omp_set_num_threads(threads_before);
 }
 
+TEST_CASE("a driver pair's candidates sorted in place are the pair's features in key order") {
+  const std::vector<Shape> shapes = {make_cube(0.5, 0.05), make_octahedron(0.6, 0.04), make_tetrahedron(0.4, 0.05)};
+  const std::vector<Posed> bodies = random_bodies(shapes, 30);
+  std::vector<PosedBody> posed;
+  for (const Posed& b : bodies) posed.push_back(b.body());
+  std::size_t unsorted = 0;  // pairs whose search gave the keys out of order: the sort is exercised
+  for (const BodyPair& p : near_pairs(posed, 0.3)) {
+    std::vector<FeaturePair> found;
+    candidate_features(posed[p.i], posed[p.j], 0.3, found);
+    std::vector<std::uint64_t> want = keys(found);
+    unsorted += !std::is_sorted(want.begin(), want.end());
+    std::sort(want.begin(), want.end());
+    sort_by_key(found);
+    CHECK(keys(found) == want);
+  }
+  CHECK(unsorted > 0);
+}
+
 TEST_CASE("a gap rounded to a float is the float std::nextafter gives below it, on both sides of 0") {
   // gap_below steps the float's bits itself: it must be the nearest float <= the gap, as before.
   const float inf = std::numeric_limits<float>::infinity();
