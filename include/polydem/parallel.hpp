@@ -41,11 +41,15 @@ inline void barrier_unless_own_region(bool own_region) {
   }
 }
 
+// Items of a thousand instructions or more (a polyhedron's driver candidates, ~800 a wall pair,
+// callgrind on the pour): fewer of them already pay for waking the threads.
+constexpr std::size_t kParallelMinHeavyItems = 16;
+
 template <class Fn>
-void parallel_for(std::size_t n, const Fn& fn) {
+void parallel_for(std::size_t n, const Fn& fn, std::size_t min_items = kParallelMinItems) {
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   const bool own_region = omp_get_level() == 0;
-  in_team(n >= kParallelMinItems, [&] {
+  in_team(n >= min_items, [&] {
 #pragma omp for schedule(static) nowait
     for (std::size_t k = 0; k < n; ++k) fn(k);
     barrier_unless_own_region(own_region);

@@ -1,6 +1,7 @@
 #include "contact/contact_engine.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -112,6 +113,9 @@ constexpr double kSearchExtra = 1.0;
 constexpr double kSpherePassWeight = 1.4;
 constexpr double kWallPairWeight = 4.9;
 constexpr double kPolyhedronPassWeight = 2.9;
+// A polyhedron-driver pair in the same units: ~670 instructions a pair-step against a polyhedron
+// pair unit's ~290 (callgrind, the pour at 1 thread, 400 steps from boxfill_t0.1.bin).
+constexpr double kPolyhedronDriverPairWeight = 2.3;
 // The first region's work a body, in instructions a step (callgrind, the pour at 1 thread, 400
 // steps from boxfill_t0.1.bin; the kicks and drift: pass_weights): a polyhedron's rebuild check
 // (displacement_bound) and a listed polyhedron's pose (rotation and world vertices).
@@ -309,10 +313,11 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   direct_.reset(bodies.size());
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
-  parallel_for_dynamic(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run
+  parallel_for(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run, sorted
     const std::uint32_t i = fresh_d.pairs[k].i;
     drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, range_d, per_pair[k]);
-  });
+    sort_by_key(per_pair[k]);
+  }, kParallelMinHeavyItems);  // a pour's ~200 pairs: 6.5% of its serial work when on one thread (issue 19)
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_driver_slots(per_pair, fresh_d);
   size_slots(fresh_d);
@@ -360,32 +365,36 @@ std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, con
     drivers_at_build_.push_back({drivers[j], drivers[j].active});
     centers.push_back(drivers.center(j));
   }
-  std::vector<std::uint8_t> is_near(n * m);
   std::vector<double> lever(n, 0.0);  // m, per body: the max is exact in any order
+  std::vector<std::vector<BodyPair>> found(omp_get_max_threads());  // a thread's run of bodies' pairs
   const std::vector<Vec3>& position = *bodies.position;
-  parallel_for(n, [&](std::size_t i) {
-    for (const Vec3& c : centers) lever[i] = std::max(lever[i], (position[i] - c).norm() + bounding_[i]);
-    if (!bodies.owned(i)) return;  // zeros: a ghost's driver contacts are its owner's
-    for (std::uint32_t j = 0; j < m; ++j) is_near[i * m + j] = drivers.near(j, position[i], bounding_[i] + range);
+  assert(omp_get_level() == 0);  // a region of its own (rebuild's serial stretch): `found` is shared
+  in_team(n >= kParallelMinItems, [&] {  // the pairs gathered here too: ~120,000 instructions a pour's rebuild
+    const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
+    std::vector<BodyPair>& mine = found[t];
+    for (std::uint32_t i = std::uint32_t(n * t / threads); i < n * (t + 1) / threads; ++i) {
+      for (const Vec3& c : centers) lever[i] = std::max(lever[i], (position[i] - c).norm() + bounding_[i]);
+      if (!bodies.owned(i)) continue;  // a ghost's driver contacts are its owner's
+      for (std::uint32_t j = 0; j < m; ++j)
+        if (drivers.near(j, position[i], bounding_[i] + range)) mine.push_back({i, j});
+    }
   });
   driver_lever_ = lever.empty() ? 0.0 : *std::max_element(lever.begin(), lever.end());  // 0 with no driver
-  std::vector<BodyPair> pairs;
-  for (std::uint32_t i = 0; i < n; ++i)
-    for (std::uint32_t j = 0; j < m; ++j)
-      if (is_near[i * m + j]) pairs.push_back({i, j});
+  std::vector<BodyPair> pairs;  // the threads' runs in order: (body, driver) order
+  for (const std::vector<BodyPair>& run : found) pairs.insert(pairs.end(), run.begin(), run.end());
   return pairs;
 }
 
-// Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
-// body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
-// between them). Polyhedra's wall pairs are shared as they come. `passes` false: the passes have
-// a cut of their own (cut_passes), the walk's weighs its pairs and wall pairs alone.
+// Each body's passes and driver pairs, in body pairs apart (split_pairs' unit), so the body cut
+// of the walk shares the passes too and evens out the walk and the driver pairs, which follow
+// the walk's cut (no barrier between them). `passes` false: the passes have a cut of their own
+// (cut_passes), the walk's weighs its pairs and driver pairs alone.
 void ContactEngine::weigh_bodies(bool passes) {
-  const double sphere = passes ? kSpherePassWeight : 0.0, polyhedron = passes ? kPolyhedronPassWeight : 0.0;
+  const double pass = passes ? (spheres_only_ ? kSpherePassWeight : kPolyhedronPassWeight) : 0.0;
+  const double driver_pair = spheres_only_ ? kWallPairWeight : kPolyhedronDriverPairWeight;
   direct_.body_weight.resize(direct_.sums.size());
   for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
-    direct_.body_weight[b] = spheres_only_ ? float(sphere + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
-                                           : float(polyhedron);
+    direct_.body_weight[b] = float(pass + driver_pair * (driver_begin_[b + 1] - driver_begin_[b]));
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
 }
 
@@ -626,17 +635,15 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
           return sphere_wall_forces<Parts>(law, band_driver_, dt, view, drivers, driver_list_, k, scratch, sizes, at_rest);
         return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
       };
-      // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
-      // also even out the body pairs' walk, which ends without a barrier).
+      // Each thread takes its walk's bodies' driver pairs (weighed into the walk's cut,
+      // weigh_bodies): their state stays in the core that walks their body pairs (issue 19).
       if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
         even_pair_forces(driver_list_,
                          WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
                                                            sizes, at_rest},
                          driver_begin_.data(), body_cut());
-      else if (spheres_only_)
-        even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
       else
-        all_pair_forces<true>(driver_list_, kernel);
+        even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
     });
   }
   if (then != AfterPairs::region_ends) {

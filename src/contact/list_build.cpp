@@ -1,5 +1,6 @@
 #include "contact/list_build.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -123,18 +124,24 @@ void size_results(PairList& list, bool pair_steps) {
   list.pending = std::move(pending);
 }
 
+void sort_by_key(std::vector<FeaturePair>& candidates) {
+  thread_local std::vector<std::uint32_t> order;
+  sorted_by_key(candidates, order);
+  if (order.empty()) return;
+  thread_local std::vector<FeaturePair> sorted;
+  sorted.clear();
+  for (std::uint32_t c : order) sorted.push_back(candidates[c]);
+  candidates.swap(sorted);
+}
+
 void fill_driver_slots(const std::vector<std::vector<FeaturePair>>& per_pair, PairList& list) {
   list.slot_begin.assign(per_pair.size() + 1, 0);
   for (std::size_t k = 0; k < per_pair.size(); ++k)
     list.slot_begin[k + 1] = list.slot_begin[k] + std::uint32_t(per_pair[k].size());
   list.features.resize(list.slot_begin.back());
   list.slot_gap.assign(list.slot_begin.back(), -std::numeric_limits<float>::infinity());
-  parallel_for_dynamic(per_pair.size(), [&](std::size_t k) {
-    thread_local std::vector<std::uint32_t> order;
-    sorted_by_key(per_pair[k], order);
-    for (std::size_t r = 0; r < per_pair[k].size(); ++r)
-      list.features[list.slot_begin[k] + r] = per_pair[k][order.empty() ? r : order[r]];
-  });
+  for (std::size_t k = 0; k < per_pair.size(); ++k)  // a copy a slot: no region worth waking
+    std::copy(per_pair[k].begin(), per_pair[k].end(), list.features.begin() + list.slot_begin[k]);
 }
 
 }  // namespace polydem

@@ -78,8 +78,11 @@ void size_slots(PairList& list);
 // is freed (a rebuild's peak held both, 98 bytes a pair). pair_steps: PairList::resize_results'.
 void size_results(PairList& list, bool pair_steps = true);
 
-// Lays out per-pair candidate lists as the slots of a driver list, each run sorted by key,
-// gaps -inf (never skipped: drivers move).
+// Sorts one pair's candidates by key in place (the order sorted_by_key gives).
+void sort_by_key(std::vector<FeaturePair>& candidates);
+
+// Lays out per-pair candidate lists, each sorted by key (sort_by_key), as the slots of a driver
+// list, gaps -inf (never skipped: drivers move).
 void fill_driver_slots(const std::vector<std::vector<FeaturePair>>& per_pair, PairList& list);
 
 }  // namespace polydem

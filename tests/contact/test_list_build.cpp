@@ -209,6 +209,26 @@ TEST_CASE("remembered searches relabelled to a rank's next bodies give the list 
   CHECK(memory.searched() == near.size() - std::size_t(both));  // the new bodies' pairs
 }
 
+TEST_CASE("a driver pair's candidates sorted in place are the pair's features in key order") {
+  const std::vector<Shape> shapes = {make_cube(0.5, 0.05), make_octahedron(0.6, 0.04), make_tetrahedron(0.4, 0.05)};
+  const std::vector<Posed> bodies = random_bodies(shapes, 30);
+  std::vector<PosedBody> posed;
+  for (const Posed& b : bodies) posed.push_back(b.body());
+  std::mt19937_64 rng(11);
+  std::size_t unsorted = 0;  // runs shuffled out of key order (a driver's search gives any order)
+  for (const BodyPair& p : near_pairs(posed, 0.3)) {
+    std::vector<FeaturePair> found;
+    candidate_features(posed[p.i], posed[p.j], 0.3, found);
+    std::shuffle(found.begin(), found.end(), rng);
+    std::vector<std::uint64_t> want = keys(found);
+    unsorted += !std::is_sorted(want.begin(), want.end());
+    std::sort(want.begin(), want.end());
+    sort_by_key(found);
+    CHECK(keys(found) == want);
+  }
+  CHECK(unsorted > 10);
+}
+
 TEST_CASE("a gap rounded to a float is the float std::nextafter gives below it, on both sides of 0") {
   // gap_below steps the float's bits itself: it must be the nearest float <= the gap, as before.
   const float inf = std::numeric_limits<float>::infinity();
