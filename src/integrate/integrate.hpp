@@ -320,8 +320,8 @@ template <Rotor kRotor, class Arrays>
 // close_and_start_step's pass for body i when it turns: the closing kick (kick_after's, with
 // before(i)), the turn (turn_body, its work -torque . angle in `turn`), then start_body.
 template <Rotor kRotor, class Arrays, class Before>
-[[gnu::noinline]] void close_turn_and_start(const Arrays& a, std::size_t i, double h, double dt, const Vec3& gravity,
-                                            const Before& before, PassTurn& turn) {
+[[gnu::noinline]] void turn_between_kicks(const Arrays& a, std::size_t i, double h, double dt, const Vec3& gravity,
+                                          const Before& before, PassTurn& turn) {
   before(i);
   kick_body<kRotor>(a, i, h);
   const std::optional<Vec3> angle = turn_body(a.orientation[i], a.angular_momentum[i], a.angular_velocity[i],
@@ -402,7 +402,7 @@ void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, 
     constexpr Rotor kRotor = decltype(rotor)::value;
     if constexpr (Turns::kAny && kRotor != Rotor::sphere) {  // a sphere's orientation stays the identity
       if (PassTurn* turn = turns.at(i)) {  // rare: a patch's shares moved in the last step
-        integrate_detail::close_turn_and_start<kRotor>(a, i, h, dt, gravity, before, *turn);
+        integrate_detail::turn_between_kicks<kRotor>(a, i, h, dt, gravity, before, *turn);
         moved(i, a.position[i]);
         return;
       }

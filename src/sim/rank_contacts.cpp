@@ -11,6 +11,7 @@
 #include "sim/contact_table.hpp"
 #include "sim/rank_energy.hpp"
 #include "sim/rank_migration.hpp"
+#include "sim/turned_pass.hpp"
 
 namespace polydem {
 
@@ -184,14 +185,10 @@ void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_,
 void RankContacts::close_and_start(double h, double dt, const Vec3& gravity, const PointWatch* watch) {
   if (watch)
     close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums(), {}, *watch);
-  else if (gravity_only_ && !kept_turns_.empty())
-    close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums(), {}, NoWatch{}, true,
-                               kept_turns_.pass());
+  else if (!kept_turns_.empty())
+    close_turn_and_start(store_, h, dt, owned_rotors_, gravity, closing_sums(), gravity_only_, kept_turns_.pass());
   else if (gravity_only_)
     close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums());
-  else if (!kept_turns_.empty())
-    close_and_start_step(store_, h, dt, owned_rotors_, gravity, closing_sums(), {}, NoWatch{}, true,
-                         kept_turns_.pass());
   else
     close_and_start_step(store_, h, dt, owned_rotors_, gravity, closing_sums());
 }

@@ -9,6 +9,7 @@
 #include "polydem/parallel.hpp"
 #include "sim/body_order.hpp"
 #include "sim/build_bodies.hpp"
+#include "sim/turned_pass.hpp"
 
 namespace polydem {
 
@@ -257,14 +258,11 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->close_and_start(0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
     else if (watched)  // points (spheres' lists): no turns
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
-    else if (from_gravity && turning)
-      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait,
-                                 kept_turns_.pass());
+    else if (close_last && turning)
+      close_turn_and_start(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), from_gravity, kept_turns_.pass(),
+                           cut, wait);
     else if (from_gravity)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
-    else if (close_last && turning)
-      close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait,
-                           kept_turns_.pass());
     else if (close_last)
       close_and_start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (rank_passes)
