@@ -70,7 +70,7 @@ class RankContacts {
   bool watch_motion(PointWatch& watch);
   void sums_taken();
   // After a closing kick: turns the owned bodies as this rank's pair loops asked (ContactEngine::
-  // take_turns, integrate.hpp's turn_bodies), its work booked with the ended contacts' energies;
+  // take_turns, integrate/turn_table.hpp's turn_bodies), its work booked with the ended contacts' energies;
   // the ghosts' copies turn with their owners' next motion parcel.
   void turn_owned();
   bool turns_left() const { return engine_ && engine_->turns_left(); }

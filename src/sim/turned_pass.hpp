@@ -1,8 +1,7 @@
 #pragma once
 // close_and_start_step with the last step's turns (integrate/turn_table.hpp), in a unit of its
-// own: beside the passes in simulation.cpp its instances took GCC's unit growth budget, which
-// then outlined the free rotor and Eigen's q * v from the passes without turns (+3.5% of the
-// pour's joined pass).
+// own: beside the passes in simulation.cpp and rank_contacts.cpp its instances would move what
+// GCC inlines in theirs (its unit growth limit). Here that limit is raised (CMakeLists.txt).
 #include "contact/contact_engine.hpp"
 #include "integrate/integrate.hpp"
 #include "integrate/pass_turn.hpp"
