@@ -185,6 +185,9 @@ class ContactEngine {
   // The ended contacts' sum alone (the pairs keep theirs: a rank's rebuild, a checkpoint).
   ExactEnergy& flushed() { return flushed_; }
   const ExactEnergy& flushed() const { return flushed_; }
+  // A body's work against its torque in a join step's turn (J, integrate/turn_table.hpp): patch
+  // work, which the net dissipation counts negative.
+  void book_turn(double work) { flushed_.add(EnergyParts{-work, 0.0, 0.0, work}); }
   // J, stored in the springs of the active contacts now (from their histories: output steps
   // only), over this process's lists, summed exactly (any split over ranks gives one sum);
   // `ghost` as above.

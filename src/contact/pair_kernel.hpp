@@ -19,7 +19,7 @@ namespace polydem {
 // impulses at the steps miss where a patch's shares moved within the step (patch_push.hpp): the
 // step's drift, at v(n+1/2), misses the turn they made within it, an angle error of O(lag dt)
 // (issue 16: a cube landing almost flat). Each body turns by I^-1 moment after the step
-// (ContactEngine::take_turns, integrate.hpp's turn_bodies), as the impulses' true timing would
+// (ContactEngine::take_turns, integrate/turn_table.hpp's turn_bodies), as the impulses' true timing would
 // have turned it. Torques only: the forces' same moment, shifting the centres, moved the
 // almost-flat landing's error by 1.4% at 0.1 x critical (4.15e-4 -> 4.10e-4), and a rank drifts
 // its ghosts' centres itself (body_exchange.hpp) where their orientations come from their owners.

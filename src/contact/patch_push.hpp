@@ -17,7 +17,7 @@
 // impulse at n+1, its work booked at once (law.hpp: the dashpot part dissipated, the spring part patch_work).
 // The drift at v(n+1/2) misses as well the turn the moving shares make within the join step: an
 // angle error of O(lag dt), first order while the lag is under a step. Each share's first moment
-// over the step (below) turns the bodies after it (pair_kernel.hpp, PairTurn; integrate.hpp,
+// over the step (below) turns the bodies after it (pair_kernel.hpp, PairTurn; integrate/turn_table.hpp,
 // turn_bodies): the almost-flat landing, worst of 8, 9.90e-4 -> 3.86e-4 at 0.1 x critical.
 #include <algorithm>
 #include <array>

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "integrate/free_rotor.hpp"
+#include "integrate/pass_turn.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/parallel.hpp"
 #include "polydem/shape.hpp"
@@ -315,6 +316,19 @@ template <Rotor kRotor, class Arrays>
     b.angular_velocity[i] += dw;
   }
 }
+
+// close_and_start_step's pass for body i when it turns: the closing kick (kick_after's, with
+// before(i)), the turn (turn_body, its work -torque . angle in `turn`), then start_body.
+template <Rotor kRotor, class Arrays, class Before>
+[[gnu::noinline]] void turn_between_kicks(const Arrays& a, std::size_t i, double h, double dt, const Vec3& gravity,
+                                          const Before& before, PassTurn& turn) {
+  before(i);
+  kick_body<kRotor>(a, i, h);
+  const std::optional<Vec3> angle = turn_body(a.orientation[i], a.angular_momentum[i], a.angular_velocity[i],
+                                              a.inertia[i], kRotor == Rotor::isotropic, turn.moment);
+  if (angle) turn.work = -a.torque[i].dot(*angle);
+  start_body<kRotor>(a, i, h, dt, gravity);
+}
 }  // namespace integrate_detail
 
 template <class B>
@@ -375,12 +389,24 @@ struct NoWatch {
 // nor written (48 + 48 bytes a body-step less memory traffic); `before` is then a ForceSums,
 // whose gravity_mass closing sets them at a closed step. moved(i, x) sees each body's new
 // position (m) while the pass holds it (the rebuild trigger's test: no pass of its own).
-// `wait` false: no barrier at the pass's end (over_rotor_groups).
-template <bool kFromGravity = false, class B, class Before, class Moved = NoWatch>
+// `wait` false: no barrier at the pass's end (over_rotor_groups). `turns`: the last step's turns
+// (PassTurns), each applied between its body's closing kick and its opening kick, as
+// kick_after, turn_bodies and start_step apply it (the same bits); `before` is then called on
+// its body as kick_after calls it (a ForceSums sets m gravity first under kFromGravity).
+template <bool kFromGravity = false, class B, class Before, class Moved = NoWatch, class Turns = NoTurns>
 void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, const Vec3& gravity,
-                          const Before& before, TeamCut cut = {}, Moved moved = {}, bool wait = true) {
-  auto one = [h, dt, gravity, before, moved](const auto& a, std::size_t i, auto rotor) __attribute__((always_inline)) {
+                          const Before& before, TeamCut cut = {}, Moved moved = {}, bool wait = true,
+                          Turns turns = {}) {
+  auto one = [h, dt, gravity, before, moved, turns](const auto& a, std::size_t i, auto rotor)
+                 __attribute__((always_inline)) {
     constexpr Rotor kRotor = decltype(rotor)::value;
+    if constexpr (Turns::kAny && kRotor != Rotor::sphere) {  // a sphere's orientation stays the identity
+      if (PassTurn* turn = turns.at(i)) {  // rare: a patch's shares moved in the last step
+        integrate_detail::turn_between_kicks<kRotor>(a, i, h, dt, gravity, before, *turn);
+        moved(i, a.position[i]);
+        return;
+      }
+    }
     if constexpr (kFromGravity) {
       Vec3 f = a.mass[i] * gravity, t = Vec3::Zero();  // N, N m
       before.add_to(i, f, t);
@@ -395,32 +421,6 @@ void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, 
     }
   };
   over_rotor_groups(b, groups, one, cut, wait);
-}
-
-// Turns body t.body by I_world^-1 t.moment (rad; t.moment in N m s^2, world) for each t of
-// `turns` (ContactEngine::take_turns), keeping its world angular momentum (an isotropic body its
-// w, an asymmetric one's w made anew); a body that keeps no orientation (a sphere) is left
-// alone. Where a patch's shares moved within a step the drift, at v(n+1/2), missed the turn they
-// made within it (issue 16: pair_kernel.hpp, PairTurn). Called after the step's closing kick:
-// `book(work)` takes each body's work against the torque then (J, -torque . angle to first
-// order: what the springs gain), one term a body so that an exact sum gives any rank count's
-// bits, for the ledger's patch work. B: Bodies or a rank's LocalStore.
-template <class B, class Turns, class Book>
-void turn_bodies(B& b, const Turns& turns, const std::vector<Shape>& shapes, const Book& book) {
-  for (const auto& t : turns) {
-    const std::size_t i = t.body;
-    if (keeps_no_orientation(shapes[b.shape[i]], b.inertia[i])) continue;
-    Quat& q = b.orientation[i];
-    const Vec3 angle = q * (q.conjugate() * t.moment).cwiseQuotient(b.inertia[i]);  // rad, world
-    const double size = angle.norm();
-    if (!(size > 0.0)) continue;
-    const Vec3 momentum = q * b.angular_momentum[i];  // kg m^2/s, world
-    q = Quat(Eigen::AngleAxisd(size, angle / size)) * q;
-    free_rotor::renormalize(q);
-    b.angular_momentum[i] = q.conjugate() * momentum;
-    if (!is_isotropic(b.inertia[i])) b.angular_velocity[i] = q * b.angular_momentum[i].cwiseQuotient(b.inertia[i]);
-    book(-b.torque[i].dot(angle));
-  }
 }
 
 // angular_velocity from angular_momentum and orientation (after the caller sets them).

@@ -11,6 +11,7 @@
 #include "sim/contact_table.hpp"
 #include "sim/rank_energy.hpp"
 #include "sim/rank_migration.hpp"
+#include "sim/turned_pass.hpp"
 
 namespace polydem {
 
@@ -185,9 +186,12 @@ void RankContacts::start(double h, double dt, const Vec3& gravity) {
 // The last stage of its region (whose end is the barrier).
 void RankContacts::kick_closing(double h) { kick_after(store_, h, owned_rotors_, closing_sums(), {}, false); }
 
+// A watched pass moves points (spheres' lists), which take no turn.
 void RankContacts::close_and_start(double h, double dt, const Vec3& gravity, const PointWatch* watch) {
   if (watch)
     close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums(), {}, *watch);
+  else if (!kept_turns_.empty())
+    close_turn_and_start(store_, h, dt, owned_rotors_, gravity, closing_sums(), gravity_only_, kept_turns_.pass());
   else if (gravity_only_)
     close_and_start_step<true>(store_, h, dt, owned_rotors_, gravity, closing_sums());
   else
@@ -386,8 +390,15 @@ void RankContacts::drop_energy() {
 
 void RankContacts::turn_owned() {
   if (!turns_left()) return;
-  turn_bodies(store_, engine_->take_turns(&store_.ghost), shapes_,
-              [&](double work) { engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work}); });  // J
+  turn_bodies(store_, engine_->take_turns(&store_.ghost), shapes_, [&](double work) { engine_->book_turn(work); });
+}
+
+void RankContacts::keep_turns() {
+  if (turns_left()) kept_turns_.take(store_, engine_->take_turns(&store_.ghost), shapes_);
+}
+
+void RankContacts::book_kept_turns() {
+  kept_turns_.book([&](double work) { engine_->book_turn(work); });
 }
 
 std::size_t RankContacts::pairs() const {

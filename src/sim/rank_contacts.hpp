@@ -21,6 +21,7 @@
 #include "contact/contact_engine.hpp"
 #include "field/external_forces.hpp"
 #include "integrate/integrate.hpp"
+#include "integrate/turn_table.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/domain_cut.hpp"
 #include "sim/ghost_plan.hpp"
@@ -69,10 +70,15 @@ class RankContacts {
   bool watch_motion(PointWatch& watch);
   void sums_taken();
   // After a closing kick: turns the owned bodies as this rank's pair loops asked (ContactEngine::
-  // take_turns, integrate.hpp's turn_bodies), its work booked with the ended contacts' energies;
+  // take_turns, integrate/turn_table.hpp's turn_bodies), its work booked with the ended contacts' energies;
   // the ghosts' copies turn with their owners' next motion parcel.
   void turn_owned();
   bool turns_left() const { return engine_ && engine_->turns_left(); }
+  // The same where the kick was left open: keep_turns() before the next step's team, whose
+  // close_and_start turns each body between its closing kick and its opening kick, then
+  // book_kept_turns() after it.
+  void keep_turns();
+  void book_kept_turns();
   void add_sums();  // the same with no kick: each owned body's sum added to its force
   // Drag and fluid forces on the owned bodies, in the store; returns their power over every
   // rank (W), summed exactly (a collective: one sum of ExactSum::kWords words, no body sent).
@@ -194,6 +200,7 @@ class RankContacts {
   GhostPlan plan_;
   std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)
   RotorGroups owned_rotors_;  // the owned bodies by rotation path, local indices
+  TurnTable kept_turns_;      // the turns close_and_start applies (keep_turns), by local index
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_

@@ -9,6 +9,7 @@
 #include "polydem/parallel.hpp"
 #include "sim/body_order.hpp"
 #include "sim/build_bodies.hpp"
+#include "sim/turned_pass.hpp"
 
 namespace polydem {
 
@@ -236,6 +237,8 @@ void Simulation::step(bool leave_kick_open) {
   const RotorGroups& moved = rotors_;  // a rank's own passes move its owned bodies, in its store
   const bool rank_passes = !one_process && contacts;
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
+  if (close_last) keep_turns();  // the joined pass turns each body between its closing kick and its drift
+  const bool turning = !kept_turns_.empty();
   // Each thread moves the bodies whose pairs it walks, or the passes' own cut (one process: the contact stage's).
   const TeamCut cut = contacts && one_process ? engine_->pass_cut() : TeamCut{};
   // Nothing but gravity acts: the joined pass makes the forces in registers and, for spheres'
@@ -253,8 +256,11 @@ void Simulation::step(bool leave_kick_open) {
     const bool wait = cut.threads != omp_get_num_threads();
     if (close_last && !one_process)
       ranks_->close_and_start(0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
-    else if (watched)
+    else if (watched)  // points (spheres' lists): no turns
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
+    else if (close_last && turning)
+      close_turn_and_start(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), from_gravity, kept_turns_.pass(),
+                           cut, wait);
     else if (from_gravity)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (close_last)
@@ -268,7 +274,7 @@ void Simulation::step(bool leave_kick_open) {
       engine_->pose_before_forces(all_owned(bodies));
     }
   });
-  if (close_last) sums_taken();
+  if (close_last) sums_taken(), book_kept_turns();
   drivers.advance(time(), dt_);
   // f(t + dt) . v(t + dt/2) dt: the midpoint rule for the velocity-dependent drag
   if (external_) ledger.external_work += external_power() * dt_;
@@ -305,9 +311,9 @@ void Simulation::step(bool leave_kick_open) {
   if (contacts && !leave_kick_open) sums_taken(), turn_bodies_left();
   if (contacts) driver_work_half();
   kick_open_ = leave_kick_open && contacts;
-  // Turns follow the closing kick in this step, as with the kick closed: their work falls in the
-  // same ledger period whether the kicks are left open or not (rare: a patch's shares moved).
-  if (kick_open_ && turns_left()) close_step();
+  // Turns left open with the kick follow it in the next step's joined pass; their work must fall
+  // in this step's ledger period, as with the kick closed, so a step that closes it closes its kick.
+  if (kick_open_ && turns_left() && ledger_closes(step_ + 1)) close_step();
   ++step_;
   if (ledger_closes(step_)) close_ledger();
   audit::step_end();
@@ -330,8 +336,17 @@ bool Simulation::turns_left() const { return ranks_ ? ranks_->turns_left() : eng
 void Simulation::turn_bodies_left() {
   if (ranks_) return ranks_->turn_owned();
   if (!engine_->turns_left()) return;
-  turn_bodies(bodies, engine_->take_turns(nullptr), library_.shapes,
-              [&](double work) { engine_->flushed().add(EnergyParts{-work, 0.0, 0.0, work}); });  // J
+  turn_bodies(bodies, engine_->take_turns(nullptr), library_.shapes, [&](double work) { engine_->book_turn(work); });
+}
+
+void Simulation::keep_turns() {
+  if (ranks_) return ranks_->keep_turns();
+  if (engine_->turns_left()) kept_turns_.take(bodies, engine_->take_turns(nullptr), library_.shapes);
+}
+
+void Simulation::book_kept_turns() {
+  if (ranks_) return ranks_->book_kept_turns();
+  kept_turns_.book([&](double work) { engine_->book_turn(work); });
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the

@@ -10,6 +10,7 @@
 #include "driver/drivers.hpp"
 #include "field/external_forces.hpp"
 #include "integrate/integrate.hpp"
+#include "integrate/turn_table.hpp"
 #include "io/scene_settings.hpp"
 #include "polydem/bodies.hpp"
 #include "polydem/shape_library.hpp"
@@ -154,6 +155,8 @@ class Simulation {
   void sums_taken();
   void turn_bodies_left();  // after a closing kick: the turns the pair loops left (ContactEngine::take_turns)
   bool turns_left() const;
+  void keep_turns();        // the last step's turns, left open with its kick: for the joined pass
+  void book_kept_turns();   // after the joined pass: their work
   ForceSums closing_sums();  // one process: the sums a closing pass adds (from gravity where nothing else acts)
   StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 
@@ -161,6 +164,7 @@ class Simulation {
   ShapeLibrary library_;
   std::unique_ptr<ContactEngine> engine_;
   RotorGroups rotors_;           // spheres turn no orientation, isotropic bodies take one rotation
+  TurnTable kept_turns_;         // one process: the turns the joined pass applies (keep_turns)
   TimeStepEstimate dt_estimate_;
   std::string impact_warning_;  // fast_impact_warning
   double dt_ = 0.0;
