@@ -113,9 +113,6 @@ constexpr double kSearchExtra = 1.0;
 constexpr double kSpherePassWeight = 1.4;
 constexpr double kWallPairWeight = 4.9;
 constexpr double kPolyhedronPassWeight = 2.9;
-// A polyhedron-driver pair in the same units: ~670 instructions a pair-step against a polyhedron
-// pair unit's ~290 (callgrind, the pour at 1 thread, 400 steps from boxfill_t0.1.bin).
-constexpr double kPolyhedronDriverPairWeight = 2.3;
 // The first region's work a body, in instructions a step (callgrind, the pour at 1 thread, 400
 // steps from boxfill_t0.1.bin; the kicks and drift: pass_weights): a polyhedron's rebuild check
 // (displacement_bound) and a listed polyhedron's pose (rotation and world vertices).
@@ -385,16 +382,16 @@ std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, con
   return pairs;
 }
 
-// Each body's passes and driver pairs, in body pairs apart (split_pairs' unit), so the body cut
-// of the walk shares the passes too and evens out the walk and the driver pairs, which follow
-// the walk's cut (no barrier between them). `passes` false: the passes have a cut of their own
-// (cut_passes), the walk's weighs its pairs and driver pairs alone.
+// Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
+// body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
+// between them). Polyhedra's wall pairs are shared as they come. `passes` false: the passes have
+// a cut of their own (cut_passes), the walk's weighs its pairs and wall pairs alone.
 void ContactEngine::weigh_bodies(bool passes) {
-  const double pass = passes ? (spheres_only_ ? kSpherePassWeight : kPolyhedronPassWeight) : 0.0;
-  const double driver_pair = spheres_only_ ? kWallPairWeight : kPolyhedronDriverPairWeight;
+  const double sphere = passes ? kSpherePassWeight : 0.0, polyhedron = passes ? kPolyhedronPassWeight : 0.0;
   direct_.body_weight.resize(direct_.sums.size());
   for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
-    direct_.body_weight[b] = float(pass + driver_pair * (driver_begin_[b + 1] - driver_begin_[b]));
+    direct_.body_weight[b] = spheres_only_ ? float(sphere + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
+                                           : float(polyhedron);
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
 }
 
@@ -635,15 +632,17 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
           return sphere_wall_forces<Parts>(law, band_driver_, dt, view, drivers, driver_list_, k, scratch, sizes, at_rest);
         return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
       };
-      // Each thread takes its walk's bodies' driver pairs (weighed into the walk's cut,
-      // weigh_bodies): their state stays in the core that walks their body pairs (issue 19).
+      // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
+      // also even out the body pairs' walk, which ends without a barrier).
       if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
         even_pair_forces(driver_list_,
                          WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
                                                            sizes, at_rest},
                          driver_begin_.data(), body_cut());
-      else
+      else if (spheres_only_)
         even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
+      else
+        all_pair_forces<true>(driver_list_, kernel);
     });
   }
   if (then != AfterPairs::region_ends) {

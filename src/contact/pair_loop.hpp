@@ -323,7 +323,7 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
   });
 }
 
-// all_pair_forces for a list sorted by body whose pairs' cost is in the cut's weights: each
+// all_pair_forces for pairs of like cost (spheres and walls) in a list sorted by body: each
 // thread takes the run of blocks nearest the pairs of its bodies in `cut` (`begin`, per body + 1:
 // its first pair), the bodies its passes move, or without a cut for this team its share of the
 // pairs; the same every step, so a pair's arrays and its body's state stay in one core's cache
