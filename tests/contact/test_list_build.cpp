@@ -78,6 +78,22 @@ std::vector<BodyPair> near_pairs(const std::vector<PosedBody>& posed, double ran
   return near;
 }
 
+// The same candidates, slots and gaps, byte for byte.
+void check_same_list(const PairList& got, const PairList& want) {
+  CHECK(same_bytes(got.pairs, want.pairs));
+  CHECK(same_bytes(got.slot_begin, want.slot_begin));
+  CHECK(keys(got.features) == keys(want.features));
+  CHECK(same_bytes(got.slot_gap, want.slot_gap));
+  CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+}
+
+// m, the farthest core vertex from the centre (CandidateMemory's motion bound reads it).
+double core_reach(const Posed& b) {
+  double r = 0.0;
+  for (const Vec3& v : b.shape->vertices) r = std::max(r, b.scale * v.norm());
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("body candidates joined from blocks equal the pair-by-pair list at 1 and 2 threads") {
@@ -97,11 +113,7 @@ TEST_CASE("body candidates joined from blocks equal the pair-by-pair list at 1 a
     omp_set_num_threads(threads);
     PairList got;
     body_candidates(near, [&](std::uint32_t b) -> const PosedBody& { return posed[b]; }, range, got);
-    CHECK(same_bytes(got.pairs, want.pairs));
-    CHECK(same_bytes(got.slot_begin, want.slot_begin));
-    CHECK(keys(got.features) == keys(want.features));
-    CHECK(same_bytes(got.slot_gap, want.slot_gap));
-    CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+    check_same_list(got, want);
   }
   omp_set_num_threads(threads_before);
 }
@@ -114,12 +126,8 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
     std::vector<Posed> bodies = random_bodies(shapes, 60);
-    std::vector<double> reach;  // m, the farthest core vertex
-    for (const Posed& b : bodies) {
-      double r = 0.0;
-      for (const Vec3& v : b.shape->vertices) r = std::max(r, b.scale * v.norm());
-      reach.push_back(r);
-    }
+    std::vector<double> reach;  // m
+    for (const Posed& b : bodies) reach.push_back(core_reach(b));
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     CandidateMemory memory(extra);
@@ -137,11 +145,7 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
       const PairList want = reference(near, posed, range);
       PairList got;
       memory.find(near, posed, {x.data(), q.data(), reach.data()}, range, got);
-      CHECK(same_bytes(got.pairs, want.pairs));
-      CHECK(same_bytes(got.slot_begin, want.slot_begin));
-      CHECK(keys(got.features) == keys(want.features));
-      CHECK(same_bytes(got.slot_gap, want.slot_gap));
-      CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+      check_same_list(got, want);
       if (rebuild > 0) {
         recalled += memory.recalled();
         searched_again += memory.searched();
@@ -176,24 +180,18 @@ TEST_CASE("remembered searches relabelled to a rank's next bodies give the list 
     std::vector<PosedBody> posed;
     std::vector<Vec3> x;
     std::vector<Quat> q;
-    std::vector<double> reach;  // m, the farthest core vertex
+    std::vector<double> reach;  // m
     for (std::uint32_t g : ids) {
       posed.push_back(all[g].body());
       x.push_back(all[g].position);
       q.push_back(all[g].q);
-      double r = 0.0;
-      for (const Vec3& v : all[g].shape->vertices) r = std::max(r, all[g].scale * v.norm());
-      reach.push_back(r);
+      reach.push_back(core_reach(all[g]));
     }
     const std::vector<BodyPair> near = near_pairs(posed, range);
     const PairList want = reference(near, posed, range);
     PairList got;
     memory.find(near, posed, {x.data(), q.data(), reach.data()}, range, got);
-    CHECK(same_bytes(got.pairs, want.pairs));
-    CHECK(same_bytes(got.slot_begin, want.slot_begin));
-    CHECK(keys(got.features) == keys(want.features));
-    CHECK(same_bytes(got.slot_gap, want.slot_gap));
-    CHECK(same_bytes(got.gap_at_build, want.gap_at_build));
+    check_same_list(got, want);
     return near;
   };
   CandidateMemory memory(extra);
