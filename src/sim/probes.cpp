@@ -63,6 +63,13 @@ void keep_highest(std::map<long, ColumnTop>& top, const std::vector<ColumnTop>& 
   }
 }
 
+// The kept tops in column order.
+std::vector<ColumnTop> by_column(const std::map<long, ColumnTop>& top) {
+  std::vector<ColumnTop> out;
+  for (const auto& [k, c] : top) out.push_back(c);
+  return out;
+}
+
 // The highest body centre of each column across the drum among `rows` of `a`, by column.
 template <class Arrays>
 std::vector<ColumnTop> column_tops(const Arrays& a, const std::vector<std::uint32_t>& rows, const DrumSection& drum,
@@ -78,9 +85,7 @@ std::vector<ColumnTop> column_tops(const Arrays& a, const std::vector<std::uint3
   }
   std::map<long, ColumnTop> top;
   keep_highest(top, all);
-  std::vector<ColumnTop> out;
-  for (const auto& [k, c] : top) out.push_back(c);
-  return out;
+  return by_column(top);
 }
 
 // The bodies among `rows` of `a` whose centre lies strictly on the `normal` side of the plane.
@@ -217,9 +222,7 @@ std::vector<char> Probes::met(const std::vector<char>& mine) const {
   for (std::size_t j = 0; j < reposes_.size(); ++j) {
     std::map<long, ColumnTop> top;
     for (std::size_t r = 0; r < all.size(); ++r) keep_highest(top, read_section<ColumnTop>(all[r], at[r]));
-    std::vector<ColumnTop> tops;
-    for (const auto& [k, c] : top) tops.push_back(c);
-    append_section(out, tops);
+    append_section(out, by_column(top));
   }
   return out;
 }

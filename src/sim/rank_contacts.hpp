@@ -177,7 +177,7 @@ class RankContacts {
   void migrate_bodies();
   long first_non_finite_position() const;
   void adopt(const PairList& body_table, const PairList& driver_table);
-  std::vector<std::uint64_t> owned_weights() const;
+  std::vector<std::uint64_t> owned_weights(const std::vector<std::uint32_t>& rows) const;  // rows: store_.owned_rows()
   std::vector<double> summed_loads(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void recut_if_unbalanced(const std::vector<std::uint32_t>& rows);
   std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;

@@ -23,8 +23,7 @@ struct CutPoint {
 // Each owned body's weight from the last lists (this rank counted them): its own step (a
 // sphere's as one candidate feature pair, a polyhedron's as four) plus the candidates of its
 // pairs (work: counted on both sides).
-std::vector<std::uint64_t> RankContacts::owned_weights() const {
-  const std::vector<std::uint32_t> rows = store_.owned_rows();
+std::vector<std::uint64_t> RankContacts::owned_weights(const std::vector<std::uint32_t>& rows) const {
   std::vector<std::uint64_t> w(rows.size());
   for (std::size_t k = 0; k < w.size(); ++k)
     w[k] = shapes_[std::size_t(store_.shape[rows[k]])].is_sphere() ? kBodyWork : kPolyhedronWork;
@@ -45,7 +44,7 @@ std::vector<double> RankContacts::summed_loads(const std::vector<std::uint32_t>&
 // Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
 // bodies change owner); past it, cuts again from a sample of the owned bodies (cut_sample).
 void RankContacts::recut_if_unbalanced(const std::vector<std::uint32_t>& rows) {
-  const std::vector<std::uint64_t> w = owned_weights();
+  const std::vector<std::uint64_t> w = owned_weights(rows);
   std::vector<double> loads = summed_loads(rows, w);
   if (imbalance(loads) > kRecutImbalance) {
     std::vector<Vec3> x;

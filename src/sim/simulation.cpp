@@ -238,7 +238,7 @@ void Simulation::step(bool leave_kick_open) {
   const bool rank_passes = !one_process && contacts;
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
   if (close_last) keep_turns();  // the joined pass turns each body between its closing kick and its drift
-  const bool turning = !kept_turns_.empty();
+  const bool turning = !kept_turns_.empty();  // one process's kept turns (a rank keeps its own)
   // Each thread moves the bodies whose pairs it walks, or the passes' own cut (one process: the contact stage's).
   const TeamCut cut = contacts && one_process ? engine_->pass_cut() : TeamCut{};
   // Nothing but gravity acts: the joined pass makes the forces in registers and, for spheres'
@@ -258,7 +258,7 @@ void Simulation::step(bool leave_kick_open) {
       ranks_->close_and_start(0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
     else if (watched)  // points (spheres' lists): no turns
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
-    else if (close_last && turning)
+    else if (turning)  // kept only where close_last
       close_turn_and_start(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), from_gravity, kept_turns_.pass(),
                            cut, wait);
     else if (from_gravity)
