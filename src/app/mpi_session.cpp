@@ -59,7 +59,7 @@ class MpiLink final : public RankLink {
   std::vector<std::vector<char>> gather(const std::vector<char>& mine, int root) const override {
     return collect(mine, root);
   }
-  void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
+  void post(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
     pending_.resize(out.size() + in.size());
     for (std::size_t k = 0; k < in.size(); ++k)
       MPI_Irecv(in[k].bytes.data(), int(in[k].bytes.size()), MPI_CHAR, in[k].rank, kGhostTag, MPI_COMM_WORLD,
@@ -70,6 +70,8 @@ class MpiLink final : public RankLink {
       ++counts_.parcels;
       counts_.parcel_bytes += out[k].bytes.size();
     }
+  }
+  void finish(const std::vector<Parcel>&, std::vector<Parcel>&) const override {
     const TimedCall timed = timer(LinkTimes::kExchange);
     MPI_Waitall(int(pending_.size()), pending_.data(), MPI_STATUSES_IGNORE);
     pending_.clear();

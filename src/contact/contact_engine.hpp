@@ -102,6 +102,13 @@ class ContactEngine {
   void pose_before_forces(const LocalBodies& bodies) {
     if (!spheres_only_) pose(bodies, listed_, false);
   }
+  // A rank's poses of the lists' bodies in two parts around its ghost exchange, outside any
+  // region: `some` (increasing, of listed()) its owned bodies while the parcels travel, then its
+  // landed ghosts; forces(..., pose_bodies false) follows. Spheres are posed by measure_motion.
+  void pose_listed(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {
+    if (!spheres_only_) pose(bodies, some);
+  }
+  const std::vector<std::uint32_t>& listed() const { return listed_; }  // the bodies of some pair, increasing
   // True, with `watch` set, where the trigger's test of every local body can run in the pass
   // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
   bool watch_motion(const LocalBodies& bodies, PointWatch& watch) {

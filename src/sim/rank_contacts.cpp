@@ -141,9 +141,7 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
-  const bool exchange = !forced_ && engine_;
-  if (exchange && !fold_) exchange_ghosts(dt);
-  const bool stale = exchange && fold_ ? exchange_deciding(drivers, dt) : lists_stale(drivers);
+  const bool stale = !forced_ && engine_ ? exchange_ghosts(drivers, dt) : lists_stale(drivers);
   watched_ = false;  // the next step's pass tells again
   if (stale) {
     // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
@@ -163,10 +161,11 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   }
   engine_->record_contacts(whole.records_contacts() || stop_seen_);  // the run loop tells the whole engine
   const LocalBodies view = store_.view();
-  if (stale) engine_->rebuild(view, drivers);  // poses the bodies it pairs
+  if (stale) engine_->rebuild(view, drivers), split_listed();  // poses the bodies it pairs
   // The bodies' sums stay in the lists: the closing kick adds them (owned_sums), as one process's does.
+  // Posed: by the rebuild, else by exchange_ghosts.
   in_team(view.size() >= kParallelMinItems, [&] {
-    engine_->forces(view, drivers, dt, !stale, ContactEngine::AfterPairs::region_ends);
+    engine_->forces(view, drivers, dt, false, ContactEngine::AfterPairs::region_ends);
   });
   engine_->close_forces(view, drivers);
   share_results(drivers, stale);
@@ -218,12 +217,30 @@ void RankContacts::sums_taken() {
 }
 
 // Point to point: each owned body to the ranks that hold it as a ghost, each ghost from its
-// owner, written into the store when it lands.
-void RankContacts::exchange_ghosts(double dt) {
-  const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
-  for (std::size_t k = 0; k < out_.size(); ++k) pack_motion(store_, send_local_[k], turning, out_[k].bytes.data());
-  link_.exchange(out_, in_);
+// owner, written into the store when it lands; then whether some rank's lists are stale. While
+// the parcels travel this rank poses its own listed bodies: no ghost is read before finish (in_'s
+// bytes are undefined until then; the thread link's test poisons them). Those poses are wasted
+// only where a rebuild follows (it poses its new lists); the ghosts are posed once landed.
+bool RankContacts::exchange_ghosts(const Drivers& drivers, double dt) {
+  const Requests mine = fold_ ? requests_here(drivers) : 0;  // the store measured, its ghosts a step old
+  pack_parcels(mine);
+  link_.post(out_, in_);
+  if (!(mine & 1)) engine_->pose_listed(store_.view(), owned_listed_);  // no rebuild asked here
+  link_.finish(out_, in_);
   unpack_parcels(dt);
+  const bool stale = fold_ ? fold_requests(mine) : lists_stale(drivers);
+  if (!stale) engine_->pose_listed(store_.view(), ghost_listed_);
+  return stale;
+}
+
+// Each owned body's motion into the parcels of the ranks that hold it, then (fold_) the requests.
+void RankContacts::pack_parcels(Requests mine) {
+  const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
+  for (std::size_t k = 0; k < out_.size(); ++k) {
+    Parcel& p = out_[k];
+    pack_motion(store_, send_local_[k], turning, p.bytes.data());
+    if (fold_) std::memcpy(p.bytes.data() + p.bytes.size() - sizeof mine, &mine, sizeof mine);
+  }
 }
 
 // Each landed motion parcel into the store's ghosts, drifted by dt (s).
@@ -233,28 +250,27 @@ void RankContacts::unpack_parcels(double dt) {
     unpack_motion(in_[k].bytes.data(), {receive_local_[k], drifted_[k].data()}, turning, dt, store_);
 }
 
-// The ghost exchange carrying the step's decision (fold_: every rank a neighbour of every
-// other), so a step meets the other ranks once. The store is measured first, its
-// ghosts a step old (they cannot exceed: their owners' measures answered for them then), each
-// parcel ends with its sender's requests, and the ghosts are measured again once landed.
-bool RankContacts::exchange_deciding(const Drivers& drivers, double dt) {
-  const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
-  Requests any = requests_here(drivers);
-  for (std::size_t k = 0; k < out_.size(); ++k) {
-    Parcel& p = out_[k];
-    pack_motion(store_, send_local_[k], turning, p.bytes.data());
-    std::memcpy(p.bytes.data() + p.bytes.size() - sizeof any, &any, sizeof any);
-  }
-  link_.exchange(out_, in_);
-  unpack_parcels(dt);
-  for (std::size_t k = 0; k < in_.size(); ++k) {
+// The step's decision where the ghost parcels carry it (fold_: every rank a neighbour of every
+// other), so a step meets the other ranks once: `mine`, measured on the store with its ghosts a
+// step old (they cannot exceed: their owners' measures answered for them then), and each landed
+// parcel's requests; the ghosts are measured again once landed.
+bool RankContacts::fold_requests(Requests mine) {
+  Requests any = mine;
+  for (const Parcel& p : in_) {
     Requests theirs = 0;
-    std::memcpy(&theirs, in_[k].bytes.data() + in_[k].bytes.size() - sizeof theirs, sizeof theirs);
+    std::memcpy(&theirs, p.bytes.data() + p.bytes.size() - sizeof theirs, sizeof theirs);
     any |= theirs;
   }
   engine_->remeasure(store_.view(), ghost_local_);
   stop_seen_ = (any >> 1) != 0;
   return (any & 1) != 0;
+}
+
+// The lists' bodies by kind, for exchange_ghosts' two parts of the poses.
+void RankContacts::split_listed() {
+  owned_listed_.clear();
+  ghost_listed_.clear();
+  for (std::uint32_t b : engine_->listed()) (store_.ghost[b] ? ghost_listed_ : owned_listed_).push_back(b);
 }
 
 // The ghost exchange's parcels, sized once per plan (no allocation a step), the local indices

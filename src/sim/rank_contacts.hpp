@@ -172,7 +172,8 @@ class RankContacts {
   using Requests = std::uint64_t;  // bit 0: rebuild, bit 1: stop
   Requests requests_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
-  bool exchange_deciding(const Drivers& drivers, double dt);
+  bool exchange_ghosts(const Drivers& drivers, double dt);
+  bool fold_requests(Requests mine);
   void redistribute(Bodies& bodies, const ContactEngine& whole);
   void migrate_bodies();
   long first_non_finite_position() const;
@@ -182,8 +183,9 @@ class RankContacts {
   void recut_if_unbalanced(const std::vector<std::uint32_t>& rows);
   std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void exchange_ghosts(double dt);
+  void pack_parcels(Requests mine);
   void unpack_parcels(double dt);
+  void split_listed();
   ForceSums closing_sums();
   void size_parcels();
   void share_results(Drivers& drivers, bool rebuilt);
@@ -207,6 +209,7 @@ class RankContacts {
   std::vector<std::vector<std::uint32_t>> send_local_, receive_local_;  // per parcel of out_, in_: its bodies' local indices
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
   std::vector<std::uint32_t> ghost_local_;  // the ghosts' local indices
+  std::vector<std::uint32_t> owned_listed_, ghost_listed_;  // the lists' bodies (ContactEngine::listed), owned and ghosts
   bool gravity_only_ = false;  // only_gravity
   Vec3 gravity_ = Vec3::Zero();  // m/s^2
   bool watched_ = false;  // this step's opening pass ran the trigger's test (watch_motion)

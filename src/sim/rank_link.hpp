@@ -50,7 +50,16 @@ class RankLink {
   }
   // Sends each parcel of `out` to its rank and fills each parcel of `in` (its bytes sized by
   // the caller) from its rank. Every rank calls it; the pattern is symmetric between ranks.
-  virtual void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;
+  void exchange(const std::vector<Parcel>& out, std::vector<Parcel>& in) const {
+    post(out, in);
+    finish(out, in);
+  }
+  // exchange in two halves, so a rank works while its parcels travel: post() sends `out` and
+  // posts the receipt of `in`; finish() waits until every parcel has landed. Between them `in`'s
+  // bytes are undefined (a receive in flight), `out` must stay as it is, and the rank calls no
+  // other method of the link.
+  virtual void post(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;
+  virtual void finish(const std::vector<Parcel>& out, std::vector<Parcel>& in) const = 0;
   virtual LinkCounts counts() const { return {}; }
   virtual LinkTimes times() const { return {}; }
   // Element [q] of rank q's `to_each`, for every q, in rank order (a collective, ranks values
