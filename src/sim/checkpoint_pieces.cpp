@@ -276,8 +276,12 @@ LandedShare read_share(const std::string& path, const std::vector<PieceEntry>& e
   std::vector<HeldBody> held;
   on_every_rank<InputError>(link, [&] {
     for (std::size_t k = std::size_t(link.rank()); k < entries.size(); k += std::size_t(link.ranks())) {
-      const LocalStore rows = read_piece(path, entries[k], k, entries.size(), sim, into);
+      LocalStore rows = read_piece(path, entries[k], k, entries.size(), sim, into);
       for (std::uint32_t g : rows.global_id) held.push_back({g, std::uint32_t(k)});
+      if (share.store.size() == 0) {  // the first piece: no copy
+        share.store = std::move(rows);
+        continue;
+      }
       std::vector<std::uint32_t> all(rows.size());
       std::iota(all.begin(), all.end(), 0u);
       share.store.append(rows, all);
