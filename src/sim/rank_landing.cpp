@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "sim/body_exchange.hpp"
-
 namespace polydem {
 
 namespace {
@@ -20,50 +18,33 @@ bool holds(const std::vector<std::uint32_t>& increasing, std::uint32_t g) {
   return std::binary_search(increasing.begin(), increasing.end(), g);
 }
 
-// What goes to one rank.
-struct Outgoing {
-  std::vector<std::uint32_t> rows;  // store rows
-  std::vector<TableSlot> body, driver;
-};
-
 }  // namespace
 
 Handover land_share(const RankLink& link, const DomainCut& cut, double halo, const LandedShare& share) {
-  const int me = link.rank();
+  Handover out = migrate(link, cut, share.store, {}, share.driver);  // the bodies and their driver slots
+  // Then the body slots, whose other body this rank may not hold (migrate reads both bodies').
   const LocalStore& store = share.store;
-  std::vector<Outgoing> to(link.ranks());
-  for (std::uint32_t k = 0; k < store.size(); ++k) to[cut.owner(store.position[k])].rows.push_back(k);
-  for (const TableSlot& t : share.driver) to[cut.owner(store.position[store.local_of(t.i)])].driver.push_back(t);
+  std::vector<std::vector<TableSlot>> to(link.ranks());
   for (const TableSlot& t : share.body) {
     const Vec3& x = store.position[store.local_of(t.i)];
     const int owner = cut.owner(x);
-    to[owner].body.push_back(t);
-    for (int q : ghost_holders(cut, owner, x, halo)) to[q].body.push_back(t);
+    to[owner].push_back(t);
+    for (int q : ghost_holders(cut, owner, x, halo)) to[q].push_back(t);
   }
+  std::vector<TableSlot> body = std::move(to[link.rank()]);
   std::vector<Parcel> parcels;
-  for (int q = 0; q < link.ranks(); ++q) {
-    if (q == me || (to[q].rows.empty() && to[q].body.empty() && to[q].driver.empty())) continue;
-    Parcel p{q, {}};
-    const std::vector<char> movers = pack_movers(store, to[q].rows);
-    append_section(p.bytes, movers);
-    append_section(p.bytes, to[q].body);
-    append_section(p.bytes, to[q].driver);
-    parcels.push_back(std::move(p));
-  }
-  Handover out;
-  out.owned.append(store, to[me].rows);
-  std::vector<TableSlot> body = std::move(to[me].body), driver = std::move(to[me].driver);
+  for (int q = 0; q < link.ranks(); ++q)
+    if (q != link.rank() && !to[q].empty()) {
+      parcels.push_back({q, {}});
+      append_section(parcels.back().bytes, to[q]);
+    }
   for (const Parcel& p : link.deliver(std::move(parcels))) {
     std::size_t at = 0;
-    unpack_movers(read_section<char>(p.bytes, at), out.owned);
     for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) body.push_back(t);
-    for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) driver.push_back(t);
   }
-  out.owned.sort_by_id();
   const std::vector<std::uint32_t>& owned = out.owned.global_id;
   std::erase_if(body, [&](const TableSlot& t) { return !holds(owned, t.i) && !holds(owned, t.j); });
   out.body_table = table_of(std::move(body));  // each pair's slots from one rank: the reader of i's piece
-  out.driver_table = table_of(std::move(driver));
   return out;
 }
 

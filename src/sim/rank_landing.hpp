@@ -26,11 +26,11 @@ struct LandedShare {
   ExactEnergy flushed;
 };
 
-// Sends each body of `share` to its owner under `cut` (all its store row), each driver slot to
-// the owner of its body and each body slot to the owner of its lower body i and to the ranks
-// that hold i as a ghost (within `halo` of their box: where the pair's other body may be
-// owned); a rank keeps the slots that name a body it owns (a collective). The result is
-// migrate's for the same bodies and slots.
+// Sends each body of `share` to its owner under `cut` (all its store row) with its driver
+// slots (migrate), then each body slot to the owner of its lower body i and to the ranks that
+// hold i as a ghost (within `halo` of their box: where the pair's other body may be owned); a
+// rank keeps the slots that name a body it owns (a collective). After the ghosts are shared,
+// the lists hold what migrate's would for the same bodies and slots.
 Handover land_share(const RankLink& link, const DomainCut& cut, double halo, const LandedShare& share);
 
 }  // namespace polydem
