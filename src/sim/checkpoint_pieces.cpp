@@ -94,6 +94,7 @@ struct Assembly {
   std::vector<TableSlot> body, driver;
   ExactEnergy flushed;  // J, the pieces' ended contacts summed
   bool open = true;     // pieces 02: the ledger's open part held
+  bool whole_rows = false;  // the pieces' bodies as a rank's share (piece_rows)
 };
 
 // `partners`: bodies (i < j < partners) or drivers (j < partners); each pair's lower body i
@@ -134,18 +135,22 @@ std::string piece_named(const std::string& manifest, const PieceEntry& entry, st
   return manifest + ": piece " + std::to_string(k) + " of " + std::to_string(pieces) + " (" + entry.file + ")";
 }
 
-// A piece's bodies as a rank's store rows: their state as read, their constants from `b`.
-LocalStore piece_rows(Reader& r, std::size_t n, const Bodies& b, const std::string& which) {
+// A piece's bodies as store rows: their state as read and, for a rank's share (`whole`), their
+// constants from `b` and every array of a store; else (read into Bodies) their user ids alone.
+LocalStore piece_rows(Reader& r, std::size_t n, const Bodies& b, const std::string& which, bool whole) {
   LocalStore s;
-  s.resize(n);
+  if (whole) s.resize(n);
+  else s.id.resize(n);
   r.array(s.global_id, n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t g = s.global_id[k];
     if (g >= b.size()) r.fail("body id " + std::to_string(g) + " out of range");
     if (k > 0 && g <= s.global_id[k - 1])  // pieces list their bodies in increasing id
       throw InputError(which + ": body " + std::to_string(b.id[g]) + " is in two pieces or out of order");
+    s.id[k] = b.id[g];
+    if (!whole) continue;
     s.shape[k] = b.shape[g], s.scale[k] = b.scale[g], s.mass[k] = b.mass[g], s.inertia[k] = b.inertia[g];
-    s.group[k] = b.group[g], s.id[k] = b.id[g];
+    s.group[k] = b.group[g];
   }
   r.array(s.position, n); r.array(s.orientation, n); r.array(s.velocity, n);
   r.array(s.angular_velocity, n); r.array(s.angular_momentum, n);
@@ -185,7 +190,7 @@ LocalStore read_piece(const std::string& manifest, const PieceEntry& entry, std:
   Reader r{bytes, kPieceHeaderBytes, bytes.size() - kChecksumBytes, entry.file};
   const std::size_t n = sim.bodies.size();
   r.count(h.bodies, sizeof(std::uint32_t), "body");
-  LocalStore rows = piece_rows(r, h.bodies, sim.bodies, which);
+  LocalStore rows = piece_rows(r, h.bodies, sim.bodies, which, into.whole_rows);
   read_slots(r, into.body, rows.global_id, n, n, false, into.open);
   read_slots(r, into.driver, rows.global_id, n, sim.drivers.size(), true, into.open);
   if (into.open) into.flushed.add(read_flushed(r));
@@ -272,7 +277,7 @@ LandedShare read_share(const std::string& path, const std::vector<PieceEntry>& e
                        bool open) {
   const RankLink& link = *sim.link();
   LandedShare share;
-  Assembly into{{}, {}, {}, open};
+  Assembly into{{}, {}, {}, open, true};
   std::vector<HeldBody> held;
   on_every_rank<InputError>(link, [&] {
     for (std::size_t k = std::size_t(link.rank()); k < entries.size(); k += std::size_t(link.ranks())) {
