@@ -187,7 +187,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     const LinkCounts before = link_.counts();
     if (landed_) {  // a resume's share: cut, then each body and slot sent to its owner
       spread_landed();
-    } else if (forced_) {  // the start or a resume: whole's lists hold the table
+    } else if (forced_) {  // the start or a one-file resume: whole's lists hold the table
       const ExactEnergy resumed = std::exchange(whole.flushed(), ExactEnergy{});  // J, on every rank: rank 0's to count
       if (link_.rank() == 0) taken_.add(resumed);
       sync_bodies(bodies);  // a resume's first drift moved each rank's bodies of the cut before it

@@ -13,7 +13,8 @@
 // reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
 // bodies in its LocalStore (one copy of their state), and a rebuild after the first sends and
 // lands bodies store to store; it keeps the constants of all bodies, and their state only where a
-// gather writes it (sync_bodies: the start and a resume; rank 0 at output with probes or fluid).
+// gather writes it (sync_bodies: the start and a one-file resume; rank 0 at output with probes or
+// fluid); a resume of pieces lands each rank's share in its store (land, sim/rank_landing.hpp).
 // Drag and fluid forces act on each rank's owned bodies in its store (add_external).
 #include <memory>
 #include <vector>
