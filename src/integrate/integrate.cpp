@@ -67,13 +67,6 @@ RotorGroups with_runs(RotorGroups groups) {
   return groups;
 }
 
-void drop_sphere_orientations(Bodies& b, const RotorGroups& groups) {
-  for (std::size_t i : groups.spheres) {
-    if (b.orientation[i].coeffs() == Quat::Identity().coeffs()) continue;  // exact: -0 stays -0 in L
-    b.angular_momentum[i] = b.orientation[i] * b.angular_momentum[i];
-    b.orientation[i] = Quat::Identity();
-  }
-}
 
 void kick(Bodies& b, double h) {
   parallel_for(b.size(), [&b, h](std::size_t i) {

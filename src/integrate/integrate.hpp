@@ -73,7 +73,14 @@ RotorGroups group_rotors(const B& b, const std::vector<std::uint32_t>& rows, con
 // (L_world = q L_body, w unchanged): at the start and after a state is read (checkpoints of
 // polydem before this path kept turning quaternions). Bodies already at the identity keep
 // their bits.
-void drop_sphere_orientations(Bodies& b, const RotorGroups& groups);
+template <class B>  // Bodies, or a rank's LocalStore (its rows)
+void drop_sphere_orientations(B& b, const RotorGroups& groups) {
+  for (std::size_t i : groups.spheres) {
+    if (b.orientation[i].coeffs() == Quat::Identity().coeffs()) continue;  // exact: -0 stays -0 in L
+    b.angular_momentum[i] = b.orientation[i] * b.angular_momentum[i];
+    b.orientation[i] = Quat::Identity();
+  }
+}
 
 // v += F/m h; L_body += R^T torque h (a half kick with h = dt/2 in velocity Verlet).
 void kick(Bodies& b, double h);

@@ -123,8 +123,8 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Outp
 
 void read_checkpoint(const std::string& path, Simulation& sim, OutputProgress& progress, bool force) {
   const std::string bytes = read_file(path);
-  sim.bodies.grow_state();  // a rank dropped them at its first cut; the read fills every body's
   if (is_checkpoint_manifest(bytes)) return read_checkpoint_pieces(path, bytes, sim, progress, force);
+  sim.bodies.grow_state();  // a rank dropped them at its first cut; the read fills every body's
   const auto is = [&](const char (&m)[8]) {
     return bytes.size() >= sizeof(m) && std::memcmp(bytes.data(), m, sizeof(m)) == 0;
   };

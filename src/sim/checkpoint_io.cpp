@@ -8,15 +8,6 @@
 
 namespace polydem {
 
-namespace {
-
-template <class T> bool all_finite(const std::vector<T>& v) {
-  for (const T& x : v) if (!x.allFinite()) return false;
-  return true;
-}
-
-}  // namespace
-
 void write_flushed(Writer& w, const ExactEnergy& flushed) { w.array(flushed.words()); }
 
 ExactEnergy read_flushed(Reader& r) {
@@ -123,14 +114,11 @@ std::string read_file(const std::string& path) {
 }
 
 void check_state(const Reader& r, const Simulation& sim) {
-  const Bodies& b = sim.bodies;
-  if (!all_finite(b.position) || !all_finite(b.velocity) || !all_finite(b.angular_velocity) ||
-      !all_finite(b.angular_momentum) || !all_finite(b.force) || !all_finite(b.torque))
-    r.fail("a body's position, velocity or force is not finite");
-  for (std::size_t k = 0; k < b.size(); ++k)
-    if (!(std::abs(b.orientation[k].norm() - 1.0) < kUnitTolerance))
-      r.fail("body " + std::to_string(b.id[k]) + "'s orientation quaternion has length " +
-             std::to_string(b.orientation[k].norm()) + ", not 1");
+  check_body_state(r, sim.bodies);
+  check_run_state(r, sim);
+}
+
+void check_run_state(const Reader& r, const Simulation& sim) {
   const EnergyLedger& l = sim.ledger;
   for (double v : {l.dissipated, l.driver_work, l.external_work, l.sliding, l.rolling, l.patch_work})
     if (!std::isfinite(v)) r.fail("the energy ledger is not finite");

@@ -4,6 +4,7 @@
 // bounds-checked reader, the field lists of a contact and a driver, and the checks on read.
 #include <cstdint>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -197,8 +198,26 @@ FileSeal write_sealed(const std::string& path, const char (&magic)[kMagicBytes],
 // The whole file in one string of its size (a stream copy would hold it twice).
 std::string read_file(const std::string& path);
 
-// What the checkpoint holds must be a state the run can continue from.
+// What the checkpoint holds must be a state the run can continue from: its bodies (Bodies, or
+// a LocalStore of the bodies a rank read), then the ledger and the drivers.
 void check_state(const Reader& r, const Simulation& sim);
+template <class T>
+bool all_finite(const std::vector<T>& v) {
+  for (const T& x : v)
+    if (!x.allFinite()) return false;
+  return true;
+}
+template <class Arrays>
+void check_body_state(const Reader& r, const Arrays& b) {
+  if (!all_finite(b.position) || !all_finite(b.velocity) || !all_finite(b.angular_velocity) ||
+      !all_finite(b.angular_momentum) || !all_finite(b.force) || !all_finite(b.torque))
+    r.fail("a body's position, velocity or force is not finite");
+  for (std::size_t k = 0; k < b.position.size(); ++k)
+    if (!(std::abs(b.orientation[k].norm() - 1.0) < kUnitTolerance))
+      r.fail("body " + std::to_string(b.id[k]) + "'s orientation quaternion has length " +
+             std::to_string(b.orientation[k].norm()) + ", not 1");
+}
+void check_run_state(const Reader& r, const Simulation& sim);
 
 // The file's size against `payload_bytes` of its header (`header_bytes` with the magic), then
 // its closing checksum.

@@ -1,6 +1,8 @@
 #include "sim/checkpoint_pieces.hpp"
 
+#include <algorithm>
 #include <cstring>
+#include <numeric>
 
 #include "polydem/error.hpp"
 #include "sim/body_rows.hpp"
@@ -86,24 +88,19 @@ void write_manifest(const std::string& path, const Simulation& sim, const std::v
   });
 }
 
-// What the pieces add up to while they are read.
+// What the pieces add up to while they are read (the slots and ended contacts of one rank's
+// pieces, or every piece's).
 struct Assembly {
-  std::vector<std::uint8_t> seen;  // per body: 1 once a piece held it
   std::vector<TableSlot> body, driver;
-  ExactEnergy flushed;             // J, the pieces' ended contacts summed
-  bool open = true;                // pieces 02: the ledger's open part held
+  ExactEnergy flushed;  // J, the pieces' ended contacts summed
+  bool open = true;     // pieces 02: the ledger's open part held
+  bool whole_rows = false;  // the pieces' bodies as a rank's share (piece_rows)
 };
 
-template <class T>
-void read_into(Reader& r, std::vector<T>& all, const std::vector<std::uint32_t>& ids) {
-  std::vector<T> part;
-  r.array(part, ids.size());
-  for (std::size_t m = 0; m < ids.size(); ++m) all[ids[m]] = part[m];
-}
-
-// `partners`: bodies (i < j < partners) or drivers (j < partners).
-void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std::size_t partners, bool driver,
-                bool pending) {
+// `partners`: bodies (i < j < partners) or drivers (j < partners); each pair's lower body i
+// among `ids` (increasing), the piece's bodies.
+void read_slots(Reader& r, std::vector<TableSlot>& out, const std::vector<std::uint32_t>& ids, std::size_t bodies,
+                std::size_t partners, bool driver, bool pending) {
   std::uint64_t n = 0;
   r.pod(n);
   r.count(n, kContactBytes03, "contact");
@@ -115,6 +112,8 @@ void read_slots(Reader& r, std::vector<TableSlot>& out, std::size_t bodies, std:
     if (t.i >= bodies || t.j >= partners || (!driver && t.i >= t.j))
       r.fail("contact " + std::to_string(e) + " names the pair (" + std::to_string(t.i) + ", " + std::to_string(t.j) +
              "), out of range");
+    if (!std::binary_search(ids.begin(), ids.end(), t.i))
+      r.fail("contact " + std::to_string(e) + " names body " + std::to_string(t.i) + ", not one of the piece's");
     slot_fields(r, t.key, t.slot, t.record);
     if (std::uint8_t(t.key.type) >= kPairTypeCount) r.fail("contact " + std::to_string(e) + " has an unknown type");
     out.push_back(t);
@@ -132,11 +131,39 @@ struct PieceEntry {
   FileSeal seal;     // as the manifest recorded it
 };
 
-// Piece k of `pieces`, checked against the manifest's record, into `sim` and `into`.
-void read_piece(const std::string& manifest, const PieceEntry& entry, std::size_t k, std::size_t pieces,
-                Simulation& sim, Assembly& into) {
-  const std::string which = manifest + ": piece " + std::to_string(k) + " of " + std::to_string(pieces) + " (" +
-                            entry.file + ")";
+std::string piece_named(const std::string& manifest, const PieceEntry& entry, std::size_t k, std::size_t pieces) {
+  return manifest + ": piece " + std::to_string(k) + " of " + std::to_string(pieces) + " (" + entry.file + ")";
+}
+
+// A piece's bodies as store rows: their state as read and, for a rank's share (`whole`), their
+// constants from `b` and every array of a store; else (read into Bodies) their user ids alone.
+LocalStore piece_rows(Reader& r, std::size_t n, const Bodies& b, const std::string& which, bool whole) {
+  LocalStore s;
+  if (whole) s.resize(n);
+  else s.id.resize(n);
+  r.array(s.global_id, n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t g = s.global_id[k];
+    if (g >= b.size()) r.fail("body id " + std::to_string(g) + " out of range");
+    if (k > 0 && g <= s.global_id[k - 1])  // pieces list their bodies in increasing id
+      throw InputError(which + ": body " + std::to_string(b.id[g]) + " is in two pieces or out of order");
+    s.id[k] = b.id[g];
+    if (!whole) continue;
+    s.shape[k] = b.shape[g], s.scale[k] = b.scale[g], s.mass[k] = b.mass[g], s.inertia[k] = b.inertia[g];
+    s.group[k] = b.group[g];
+  }
+  r.array(s.position, n); r.array(s.orientation, n); r.array(s.velocity, n);
+  r.array(s.angular_velocity, n); r.array(s.angular_momentum, n);
+  r.array(s.force, n); r.array(s.torque, n);
+  check_body_state(r, s);
+  return s;
+}
+
+// Piece k of `pieces`, checked against the manifest's record: its bodies, and its slots and
+// ended contacts into `into`.
+LocalStore read_piece(const std::string& manifest, const PieceEntry& entry, std::size_t k, std::size_t pieces,
+                      const Simulation& sim, Assembly& into) {
+  const std::string which = piece_named(manifest, entry, k, pieces);
   std::string bytes;
   try {
     bytes = read_file(entry.file);
@@ -161,20 +188,40 @@ void read_piece(const std::string& manifest, const PieceEntry& entry, std::size_
       h.pieces != pieces)
     throw InputError(which + " belongs to another checkpoint (its scene, step or piece number differs)");
   Reader r{bytes, kPieceHeaderBytes, bytes.size() - kChecksumBytes, entry.file};
-  Bodies& b = sim.bodies;
-  std::vector<std::uint32_t> ids;
-  r.array(ids, h.bodies);
-  for (std::uint32_t id : ids) {
-    if (id >= b.size()) r.fail("body id " + std::to_string(id) + " out of range");
-    if (into.seen[id]++) throw InputError(which + ": body " + std::to_string(b.id[id]) + " is in two pieces");
-  }
-  read_into(r, b.position, ids); read_into(r, b.orientation, ids); read_into(r, b.velocity, ids);
-  read_into(r, b.angular_velocity, ids); read_into(r, b.angular_momentum, ids);
-  read_into(r, b.force, ids); read_into(r, b.torque, ids);
-  read_slots(r, into.body, b.size(), b.size(), false, into.open);
-  read_slots(r, into.driver, b.size(), sim.drivers.size(), true, into.open);
+  const std::size_t n = sim.bodies.size();
+  r.count(h.bodies, sizeof(std::uint32_t), "body");
+  LocalStore rows = piece_rows(r, h.bodies, sim.bodies, which, into.whole_rows);
+  read_slots(r, into.body, rows.global_id, n, n, false, into.open);
+  read_slots(r, into.driver, rows.global_id, n, sim.drivers.size(), true, into.open);
   if (into.open) into.flushed.add(read_flushed(r));
   if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the piece");
+  return rows;
+}
+
+// Every piece into `sim`'s arrays (one process, or ranks that integrate every body).
+Assembly read_every_piece(const std::string& path, const std::vector<PieceEntry>& entries, Simulation& sim,
+                          bool open) {
+  Bodies& b = sim.bodies;
+  b.grow_state();  // a rank dropped them at its first cut
+  std::vector<std::uint8_t> seen(b.size(), 0);  // per body: 1 once a piece held it
+  Assembly into{{}, {}, {}, open};
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const LocalStore rows = read_piece(path, entries[k], k, entries.size(), sim, into);
+    for (std::size_t m = 0; m < rows.size(); ++m) {
+      const std::uint32_t g = rows.global_id[m];
+      if (seen[g]++)
+        throw InputError(piece_named(path, entries[k], k, entries.size()) + ": body " + std::to_string(b.id[g]) +
+                         " is in two pieces");
+      b.position[g] = rows.position[m], b.orientation[g] = rows.orientation[m], b.velocity[g] = rows.velocity[m];
+      b.angular_velocity[g] = rows.angular_velocity[m], b.angular_momentum[g] = rows.angular_momentum[m];
+      b.force[g] = rows.force[m], b.torque[g] = rows.torque[m];
+    }
+  }
+  for (std::size_t g = 0; g < b.size(); ++g)
+    if (!seen[g])
+      throw InputError(path + ": body " + std::to_string(b.id[g]) + " is in none of its " +
+                       std::to_string(entries.size()) + " pieces");
+  return into;
 }
 
 // The table as read_active lays out one process's checkpoint: touching counts are the next
@@ -183,6 +230,74 @@ PairList checkpoint_list(std::vector<TableSlot> slots) {
   PairList list = table_of(std::move(slots));
   std::fill(list.touching.begin(), list.touching.end(), 0);
   return list;
+}
+
+// A body of a piece a rank read, sent to the rank that checks its range of ids.
+struct HeldBody {
+  std::uint32_t body, piece;
+};
+
+// Every body in exactly one of the pieces the ranks read, each checked by the rank whose
+// equal range of ids holds it (a collective: O(this rank's bodies) each way).
+void check_each_body_once(const RankLink& link, const std::string& path, const std::vector<PieceEntry>& entries,
+                          const std::vector<HeldBody>& held, const Bodies& b) {
+  const std::uint64_t n = b.size(), ranks = std::uint64_t(link.ranks());
+  if (n == 0) return;
+  const auto home = [&](std::uint32_t g) { return int(std::uint64_t(g) * ranks / n); };
+  const auto first = [&](std::uint64_t h) { return std::uint32_t((h * n + ranks - 1) / ranks); };
+  std::vector<std::vector<HeldBody>> to(link.ranks());
+  for (const HeldBody& x : held) to[home(x.body)].push_back(x);
+  std::vector<Parcel> out;
+  for (int q = 0; q < link.ranks(); ++q) {
+    if (to[q].empty()) continue;
+    out.push_back({q, {}});
+    append_section(out.back().bytes, to[q]);
+  }
+  const std::vector<Parcel> in = link.deliver(std::move(out));
+  const std::uint32_t lo = first(std::uint64_t(link.rank())), hi = first(std::uint64_t(link.rank()) + 1);
+  on_every_rank<InputError>(link, [&] {
+    std::vector<std::uint8_t> seen(hi - lo, 0);
+    for (const Parcel& p : in) {
+      std::size_t at = 0;
+      for (const HeldBody& x : read_section<HeldBody>(p.bytes, at))
+        if (seen[x.body - lo]++)
+          throw InputError(piece_named(path, entries[x.piece], x.piece, entries.size()) + ": body " +
+                           std::to_string(b.id[x.body]) + " is in two pieces");
+    }
+    for (std::uint32_t g = lo; g < hi; ++g)
+      if (!seen[g - lo])
+        throw InputError(path + ": body " + std::to_string(b.id[g]) + " is in none of its " +
+                         std::to_string(entries.size()) + " pieces");
+  });
+}
+
+// This rank's share of the pieces (k = rank, rank + ranks, ...) into its store, every body
+// checked to be in one piece: no rank reads or holds the others' (a collective).
+LandedShare read_share(const std::string& path, const std::vector<PieceEntry>& entries, const Simulation& sim,
+                       bool open) {
+  const RankLink& link = *sim.link();
+  LandedShare share;
+  Assembly into{{}, {}, {}, open, true};
+  std::vector<HeldBody> held;
+  on_every_rank<InputError>(link, [&] {
+    for (std::size_t k = std::size_t(link.rank()); k < entries.size(); k += std::size_t(link.ranks())) {
+      LocalStore rows = read_piece(path, entries[k], k, entries.size(), sim, into);
+      for (std::uint32_t g : rows.global_id) held.push_back({g, std::uint32_t(k)});
+      if (share.store.size() == 0) {  // the first piece: no copy
+        share.store = std::move(rows);
+        continue;
+      }
+      std::vector<std::uint32_t> all(rows.size());
+      std::iota(all.begin(), all.end(), 0u);
+      share.store.append(rows, all);
+    }
+  });
+  check_each_body_once(link, path, entries, held, sim.bodies);
+  share.store.sort_by_id();
+  share.body = std::move(into.body);
+  share.driver = std::move(into.driver);
+  share.flushed = into.flushed;
+  return share;
 }
 
 }  // namespace
@@ -234,14 +349,13 @@ void read_checkpoint_pieces(const std::string& path, const std::string& bytes, S
   }
   read_progress(r, progress);
   if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the manifest");
-  Assembly into{std::vector<std::uint8_t>(sim.bodies.size(), 0), {}, {}, {},
-                ordered || std::memcmp(bytes.data(), kManifestMagic02, kMagicBytes) == 0};
-  for (std::size_t k = 0; k < pieces; ++k) read_piece(path, entries[k], k, pieces, sim, into);
-  for (std::size_t b = 0; b < sim.bodies.size(); ++b)
-    if (!into.seen[b])
-      throw InputError(path + ": body " + std::to_string(sim.bodies.id[b]) + " is in none of its " + std::to_string(pieces) +
-                       " pieces");
-  check_state(r, sim);
+  const bool open = ordered || std::memcmp(bytes.data(), kManifestMagic02, kMagicBytes) == 0;
+  check_run_state(r, sim);
+  if (sim.distributed() && sim.scene().forces.contact.present) {  // each rank integrates its own bodies
+    sim.land_share(read_share(path, entries, sim, open));
+    return;
+  }
+  Assembly into = read_every_piece(path, entries, sim, open);
   sim.engine().body_pairs() = checkpoint_list(std::move(into.body));
   sim.engine().driver_pairs() = checkpoint_list(std::move(into.driver));
   sim.engine().flushed() = into.flushed;

@@ -4,8 +4,10 @@
 // global ids), then rank 0 the manifest under the checkpoint's own name, checkpoint_NNNNNN.bin
 // (header, step, ledger, drivers, output progress, and each piece's name, size and checksum),
 // last: a run that stops before it keeps its previous checkpoint whole. `--resume` of a manifest
-// reads every piece on every rank and lays the state out as one process's checkpoint holds it,
-// so a run continues on any rank count, or one process, bit for bit.
+// on ranks that integrate their own bodies (a contact stage): each rank reads a share of the
+// pieces (k = rank, rank + ranks, ...), which the first step sends to the bodies' owners
+// (sim/rank_landing.hpp); else every piece, laid out as one process's checkpoint holds it. A
+// run continues on any rank count, or one process, bit for bit.
 #include <string>
 
 #include "sim/checkpoint.hpp"
@@ -22,7 +24,8 @@ bool is_checkpoint_manifest(const std::string& bytes);
 std::vector<std::uint32_t> manifest_body_order(const std::string& path, std::size_t bodies);
 
 // Restores the state of the manifest `path` (its `bytes`) and its pieces; throws InputError
-// naming the file and the piece when one is missing, damaged or of another checkpoint.
+// naming the file and the piece when one is missing, damaged or of another checkpoint (on
+// every rank, whichever read it: a collective on ranks).
 void read_checkpoint_pieces(const std::string& path, const std::string& bytes, Simulation& sim,
                             OutputProgress& progress, bool force);
 

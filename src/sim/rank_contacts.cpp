@@ -83,6 +83,42 @@ void RankContacts::redistribute(Bodies& bodies, const ContactEngine& whole) {
   adopt(whole.body_pairs(), whole.driver_pairs());
 }
 
+void RankContacts::land(LandedShare share) {
+  store_ = std::move(share.store);
+  plan_ = GhostPlan{store_.global_id, store_.ghost, store_.global_id, {}, {}};
+  plan_.send.resize(link_.ranks());
+  plan_.receive.resize(link_.ranks());
+  landed_body_ = std::move(share.body);
+  landed_driver_ = std::move(share.driver);
+  taken_ = share.flushed;
+  RotorGroups groups = group_rotors(store_, store_.owned_rows(), shapes_);
+  drop_sphere_orientations(store_, groups);  // files of older builds turned them
+  owned_rotors_ = with_runs(std::move(groups));
+  owned_work_.clear();
+  external_rows_ = ~std::size_t(0);
+  engine_.reset();  // the lists of the cut before: the next step lists the share's owners' bodies
+  forced_ = landed_ = true;
+  rebuild_asked_ = false;
+}
+
+// A resume's share (land) at its first contact stage: a cut of every rank's sample of its
+// share's centres (each body weighing the same: no lists yet), each body and slot sent to its
+// owner (land_share), then the ghosts to their holders.
+void RankContacts::spread_landed() {
+  const long bad = least_over_ranks(link_, first_non_finite_position());
+  if (bad >= 0) throw non_finite_position(std::size_t(bad));  // the same message on every rank
+  const std::vector<std::uint32_t> rows = store_.owned_rows();
+  const std::vector<std::uint64_t> w(rows.size(), kBodyWork);
+  cut_from_sample(rows, w);
+  set_load_share(summed_loads(rows, w));
+  LandedShare share{std::move(store_), std::move(landed_body_), std::move(landed_driver_), {}};
+  Handover h = land_share(link_, cut_, halo_, share);
+  store_ = std::move(h.owned);
+  plan_ = share_ghosts(link_, cut_, halo_, store_);
+  landed_ = false;
+  adopt(h.body_table, h.driver_table);
+}
+
 // A rebuild the motion asks for: each rank's owned bodies and ghosts are current in its store,
 // no other; the movers, with their constants and histories, go to their new owners, then the
 // ghosts to their holders, point to point (sim/rank_migration.hpp): no read of the global arrays.
@@ -147,7 +183,9 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     // The ended contacts' sum stays (a new engine); the pairs' pending energies move with their histories.
     if (engine_) taken_.add(std::exchange(engine_->flushed(), ExactEnergy{}));
     const LinkCounts before = link_.counts();
-    if (forced_) {  // the start or a resume: whole's lists hold the table
+    if (landed_) {  // a resume's share: cut, then each body and slot sent to its owner
+      spread_landed();
+    } else if (forced_) {  // the start or a one-file resume: whole's lists hold the table
       const ExactEnergy resumed = std::exchange(whole.flushed(), ExactEnergy{});  // J, on every rank: rank 0's to count
       if (link_.rank() == 0) taken_.add(resumed);
       sync_bodies(bodies);  // a resume's first drift moved each rank's bodies of the cut before it
@@ -324,13 +362,14 @@ double RankContacts::add_external(ExternalForces& forces) {
 }
 
 std::vector<std::uint32_t> RankContacts::output_bodies() const {
-  if (engine_) return plan_.owned;
+  if (engine_ || landed_) return plan_.owned;
   std::vector<std::uint32_t> every(link_.rank() == 0 ? n_bodies_ : 0);
   std::iota(every.begin(), every.end(), 0u);
   return every;
 }
 
 std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bool driver) const {
+  if (landed_) return driver ? landed_driver_ : landed_body_;
   if (engine_) return active_slots(driver ? engine_->driver_pairs() : engine_->body_pairs(), store_, driver);
   std::vector<TableSlot> slots;
   if (link_.rank() != 0) return slots;
@@ -346,6 +385,7 @@ std::vector<TableSlot> RankContacts::output_slots(const ContactEngine& whole, bo
 }
 
 ExactEnergy RankContacts::output_flushed(const ContactEngine& whole) const {
+  if (landed_) return taken_;
   if (!engine_) return link_.rank() == 0 ? whole.flushed() : ExactEnergy{};
   ExactEnergy mine = taken_;  // J
   mine.add(engine_->flushed());

@@ -13,7 +13,8 @@
 // reads the loads summed over the ranks and a sample of the centres. A rank integrates its owned
 // bodies in its LocalStore (one copy of their state), and a rebuild after the first sends and
 // lands bodies store to store; it keeps the constants of all bodies, and their state only where a
-// gather writes it (sync_bodies: the start and a resume; rank 0 at output with probes or fluid).
+// gather writes it (sync_bodies: the start and a one-file resume; rank 0 at output with probes or
+// fluid); a resume of pieces lands each rank's share in its store (land, sim/rank_landing.hpp).
 // Drag and fluid forces act on each rank's owned bodies in its store (add_external).
 #include <memory>
 #include <vector>
@@ -27,6 +28,7 @@
 #include "sim/ghost_plan.hpp"
 #include "sim/local_store.hpp"
 #include "sim/rank_energy.hpp"
+#include "sim/rank_landing.hpp"
 #include "sim/rank_link.hpp"
 #include "sim/state_energy.hpp"
 
@@ -99,10 +101,17 @@ class RankContacts {
     forced_ = true;
     if (bodies.has_state()) store_.pull(bodies);
   }
+  // A resume from checkpoint pieces (sim/checkpoint_pieces.hpp): this rank holds `share`, the
+  // bodies and contacts of the pieces it read, as its owned bodies (its passes move them) until
+  // the next step's contact stage cuts the domain from a sample of every rank's centres and
+  // sends each body and slot to its owner (sim/rank_landing.hpp); the pieces' ended contacts
+  // are this rank's open sum. Until then what a rank writes is `share` (output_bodies,
+  // output_slots, output_flushed).
+  void land(LandedShare share);
   // `bodies`' state arrays freed again where a rank keeps only the constants (after its first
   // cut), once what a gather gave rank 0 was read (output of probes and the fluid).
   void release_state(Bodies& bodies) const {
-    if (engine_) bodies.drop_state();
+    if (engine_ || landed_) bodies.drop_state();
   }
   // Rebuilds at the next step from every rank's own lists, as a rebuild the motion asks for
   // (a checkpoint written: the table went to rank 0 only).
@@ -125,7 +134,7 @@ class RankContacts {
   // state: after the first step the store (its owned bodies), before it `bodies`.
   template <class F>
   void with_output_rows(const Bodies& bodies, F&& f) const {
-    if (engine_) f(store_, store_.owned_rows());
+    if (engine_ || landed_) f(store_, store_.owned_rows());
     else f(bodies, output_bodies());
   }
   std::vector<TableSlot> output_slots(const ContactEngine& whole, bool driver) const;
@@ -175,12 +184,14 @@ class RankContacts {
   bool exchange_ghosts(const Drivers& drivers, double dt);
   bool fold_requests(Requests mine);
   void redistribute(Bodies& bodies, const ContactEngine& whole);
+  void spread_landed();
   void migrate_bodies();
   long first_non_finite_position() const;
   void adopt(const PairList& body_table, const PairList& driver_table);
   std::vector<std::uint64_t> owned_weights(const std::vector<std::uint32_t>& rows) const;  // rows: store_.owned_rows()
   std::vector<double> summed_loads(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void recut_if_unbalanced(const std::vector<std::uint32_t>& rows);
+  void cut_from_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w);
   std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
   void pack_parcels(Requests mine);
@@ -215,6 +226,8 @@ class RankContacts {
   bool watched_ = false;  // this step's opening pass ran the trigger's test (watch_motion)
   bool fold_ = false;  // the ghost parcels carry the step's requests: no reduction a step
   bool forced_ = true;
+  bool landed_ = false;  // land: the store holds a resume's share, cut at the next step
+  std::vector<TableSlot> landed_body_, landed_driver_;  // the share's slots (global ids) until then
   std::size_t external_rows_ = ~std::size_t(0);  // the rebuild whose store add_external's constants are for
   bool rebuild_asked_ = false;
   bool reactions_wanted_ = true;

@@ -47,20 +47,25 @@ void RankContacts::recut_if_unbalanced(const std::vector<std::uint32_t>& rows) {
   const std::vector<std::uint64_t> w = owned_weights(rows);
   std::vector<double> loads = summed_loads(rows, w);
   if (imbalance(loads) > kRecutImbalance) {
-    std::vector<Vec3> x;
-    std::vector<double> weight;
-    for (const std::vector<char>& from : link_.all_gather(cut_sample(rows, w))) {
-      std::size_t at = 0;
-      for (const CutPoint& c : read_section<CutPoint>(from, at)) {
-        x.push_back(get(c.x));
-        weight.push_back(c.weight);
-      }
-    }
-    cut_ = cut_domain(x, weight, link_.ranks());
+    cut_from_sample(rows, w);
     loads = summed_loads(rows, w);
-    ++cuts_;
   }
   set_load_share(loads);
+}
+
+// A cut of every rank's sample (cut_sample) of its owned bodies at store rows `rows`, weighing `w`.
+void RankContacts::cut_from_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) {
+  std::vector<Vec3> x;
+  std::vector<double> weight;
+  for (const std::vector<char>& from : link_.all_gather(cut_sample(rows, w))) {
+    std::size_t at = 0;
+    for (const CutPoint& c : read_section<CutPoint>(from, at)) {
+      x.push_back(get(c.x));
+      weight.push_back(c.weight);
+    }
+  }
+  cut_ = cut_domain(x, weight, link_.ranks());
+  ++cuts_;
 }
 
 // The owned bodies as runs of consecutive ones (increasing id), each at its first body's

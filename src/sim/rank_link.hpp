@@ -111,10 +111,11 @@ class RankLink {
   }
 };
 
-// Runs `task` on this rank, then, if it threw on some rank, throws RunError on every rank
-// with the lowest failing rank's message: no rank waits in a later collective for one that
-// stopped (a collective: a file a rank could not write stops the run as one process's would).
-template <class Task>
+// Runs `task` on this rank, then, if it threw on some rank, throws Error (RunError, or
+// InputError for a file read) on every rank with the lowest failing rank's message: no rank
+// waits in a later collective for one that stopped (a collective: a file a rank could not
+// write stops the run as one process's would).
+template <class Error = RunError, class Task>
 void on_every_rank(const RankLink& link, Task&& task) {
   std::string error;
   try {
@@ -124,7 +125,7 @@ void on_every_rank(const RankLink& link, Task&& task) {
     if (error.empty()) error = "rank " + std::to_string(link.rank()) + " failed";
   }
   for (const std::vector<char>& from : link.all_gather(std::vector<char>(error.begin(), error.end())))
-    if (!from.empty()) throw RunError(std::string(from.begin(), from.end()));
+    if (!from.empty()) throw Error(std::string(from.begin(), from.end()));
 }
 
 // A record as bytes, for all_gather: plain data with no pointer (Eigen's fixed-size

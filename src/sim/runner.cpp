@@ -25,6 +25,7 @@
 #include "sim/checkpoint_pieces.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/last_good.hpp"
+#include "sim/memory_marks.hpp"
 #include "sim/probes.hpp"
 #include "sim/run_limits.hpp"
 #include "sim/thread_governor.hpp"
@@ -466,7 +467,11 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     if (io) std::fprintf(stderr, "%s\n", w.c_str());
   make_output_folder(o.out_dir);
   OutputProgress progress;
-  if (!o.resume.empty()) read_checkpoint(o.resume, sim, progress, o.force);
+  memory_mark("set-up", sim.rank());
+  if (!o.resume.empty()) {
+    read_checkpoint(o.resume, sim, progress, o.force);
+    memory_mark("resume read", sim.rank());
+  }
   const OutputSettings& out = sim.scene().output;
   const double dt = sim.dt();
   const double end_time = o.until ? *o.until : sim.scene().simulation.duration;
@@ -585,7 +590,9 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   omp_set_num_threads(max_threads);
   summary.interrupted = g_interrupted;
   summary.steps_at_threads = governor.steps_at();
+  memory_mark("steps", sim.rank());
   if (!g_interrupted) writer.checkpoint(sim);
+  memory_mark("final checkpoint", sim.rank());
   summary.steps = sim.step_index() - first_step;
   summary.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   summary.rebuilds = sim.rebuilds();

@@ -158,6 +158,14 @@ void Simulation::force_rebuild(bool table_on_every_rank) {
   else ranks_->rebuild_next_step();
 }
 
+void Simulation::land_share(LandedShare share) {
+  engine_->force_rebuild();
+  engine_->body_pairs() = table_of({});
+  engine_->driver_pairs() = table_of({});
+  engine_->flushed() = ExactEnergy{};
+  ranks_->land(std::move(share));
+}
+
 void Simulation::gather_state(bool onto_every_rank) {
   if (!ranks_) return;
   ranks_->sync_bodies(bodies, !onto_every_rank);

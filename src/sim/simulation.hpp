@@ -99,6 +99,9 @@ class Simulation {
   // engine()'s lists were gathered to rank 0 only (a checkpoint written by a distributed run:
   // the ranks rebuild from their own lists then).
   void force_rebuild(bool table_on_every_rank = true);
+  // A distributed run resumed from checkpoint pieces: this rank's share of them
+  // (RankContacts::land) and a rebuild at the next step; engine() keeps no table.
+  void land_share(LandedShare share);
   // After a state is read: spheres take the identity orientation, their L folded into the
   // world frame (checkpoints written before Rotor::sphere turned them; integrate.hpp).
   void drop_sphere_orientations() { polydem::drop_sphere_orientations(bodies, rotors_); }

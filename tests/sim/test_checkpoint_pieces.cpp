@@ -1,7 +1,7 @@
 // Checkpoint pieces without MPI (ranks as threads, thread_link.hpp): the pile stepped over 2
 // ranks writes a manifest and a piece per rank; resumed in one process and over 3 ranks it ends
-// on the bits of one process stepped straight through; a missing or damaged piece is refused
-// with its number and file named.
+// on the bits of one process stepped straight through, each rank having read only its share of
+// the pieces; a missing or damaged piece is refused with its number and file named, on every rank.
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -115,4 +115,65 @@ TEST_CASE("A missing or damaged checkpoint piece is refused with its number and 
   CHECK_THROWS_WITH(resume(), Catch::Contains("piece 1 of 2") && Catch::Contains("checksum mismatch"));
   std::filesystem::copy_file(dir.path / "checkpoint_000100_p0.bin", second, std::filesystem::copy_options::overwrite_existing);
   CHECK_THROWS_AS(resume(), InputError);  // another rank's piece in its place
+}
+
+// The body count a piece's header records (after its magic: fingerprint, step, piece, pieces).
+static std::uint64_t piece_bodies(const std::filesystem::path& piece) {
+  std::ifstream f(piece, std::ios::binary);
+  f.seekg(8 + 4 * sizeof(std::uint64_t));
+  std::uint64_t n = 0;
+  f.read(reinterpret_cast<char*>(&n), sizeof n);
+  return n;
+}
+
+TEST_CASE("Ranks resuming checkpoint pieces each hold the pieces they read, none the whole state", "[checkpoint]") {
+  const Pile p;
+  UniqueTempDir dir("pieces_share");
+  const std::string manifest = (dir.path / "checkpoint_000100.bin").string();
+  write_pieces(p, 100, manifest);
+  std::vector<std::size_t> owned(3), ghosts(3);
+  std::vector<int> whole(3);
+  on_thread_ranks(3, [&](const RankLink& link) {
+    Simulation sim(p.scene, p.lib, p.specs, &link);
+    OutputProgress mine;
+    read_checkpoint(manifest, sim, mine);
+    owned[link.rank()] = sim.owned_bodies();
+    ghosts[link.rank()] = sim.ghost_bodies();
+    whole[link.rank()] = sim.bodies.has_state();
+  });
+  // Rank k of 3 reads piece k of 2: rank 2 none, until the first step sends each body to its owner.
+  CHECK(owned[0] == piece_bodies(dir.path / "checkpoint_000100_p0.bin"));
+  CHECK(owned[1] == piece_bodies(dir.path / "checkpoint_000100_p1.bin"));
+  CHECK(owned[0] > 0);
+  CHECK(owned[1] > 0);
+  CHECK(owned[2] == 0);
+  CHECK(owned[0] + owned[1] == p.specs.size());
+  for (int r = 0; r < 3; ++r) {
+    INFO("rank " << r);
+    CHECK(ghosts[r] == 0);
+    CHECK(whole[r] == 0);  // no rank laid out every body's state
+  }
+}
+
+TEST_CASE("A piece one rank cannot read stops every rank resuming, with its name", "[checkpoint]") {
+  const Pile p;
+  UniqueTempDir dir("pieces_share_bad");
+  const std::string manifest = (dir.path / "checkpoint_000100.bin").string();
+  write_pieces(p, 100, manifest);
+  std::filesystem::remove(dir.path / "checkpoint_000100_p1.bin");  // rank 1's to read
+  std::vector<std::string> errors(2);
+  on_thread_ranks(2, [&](const RankLink& link) {
+    Simulation sim(p.scene, p.lib, p.specs, &link);
+    OutputProgress mine;
+    try {
+      read_checkpoint(manifest, sim, mine);
+    } catch (const InputError& e) {
+      errors[link.rank()] = e.what();
+    }
+  });
+  for (int r = 0; r < 2; ++r) {
+    INFO("rank " << r << ": " << errors[r]);
+    CHECK(errors[r].find("piece 1 of 2") != std::string::npos);
+    CHECK(errors[r].find("checkpoint_000100_p1.bin) is missing") != std::string::npos);
+  }
 }
