@@ -161,9 +161,9 @@ class RankContacts {
   // The weight of the cut (instructions a step): a body's own step beyond its passes (posing,
   // the rebuild's share, its trigger) and a candidate feature pair's share on each of its two
   // bodies. Fitted at -np 2 on the box-fill and cubes pours from 0.1 s (counted, the slower
-  // rank's instructions, pour / cubes): (kBodyStep, kHalfCandidate) = (0, 87) 294.2e6 / 358.3e6,
-  // (0, 97) 285.9e6 / 365.9e6, (500, 185) 300.9e6 / 340.0e6; s32's fixed weights (a polyhedron
-  // 8, a candidate 1 a side) 315.7e6 / 405.2e6.
+  // rank's instructions, pour / cubes): (kBodyStep, kHalfCandidate) = (0, 87) 294.2e6 / 358.3e6
+  // and (0, 97) 285.9e6 / 365.9e6 (read from the environment: a few e6 more), (500, 185)
+  // 285.6e6 / 329.5e6; s32's fixed weights (a polyhedron 8, a candidate 1 a side) 315.7e6 / 405.2e6.
   static constexpr std::uint64_t kBodyStep = 500, kHalfCandidate = 185;
   // The most loaded part over the mean past which a rebuild cuts again: a 5% wait at most.
   static constexpr double kRecutImbalance = 1.05;
