@@ -174,14 +174,15 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   const std::vector<int>& shape = *bodies.shape;
   const std::vector<double>& scale = *bodies.scale;
   vertex_offset_.assign(n + 1, 0);
-  for (const Shape& s : shapes_) boxes_.push_back(box_corners(s));
+  std::vector<double> reach;  // m, per shape: a rank makes an engine at each rebuild
+  for (const Shape& s : shapes_) boxes_.push_back(box_corners(s)), reach.push_back(core_reach(s));
   bounding_.resize(n);
   core_reach_.resize(n);
   for (std::size_t b = 0; b < n; ++b) {
     const Shape& s = shapes_[shape[b]];
     vertex_offset_[b + 1] = vertex_offset_[b] + std::uint32_t(s.vertices.size());
     bounding_[b] = s.bounding_radius * scale[b];
-    core_reach_[b] = core_reach(s) * scale[b];
+    core_reach_[b] = reach[std::size_t(shape[b])] * scale[b];
   }
   spheres_only_ = settings_.spheres_only >= 0 ? settings_.spheres_only == 1
                   : std::all_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });

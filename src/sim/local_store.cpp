@@ -1,7 +1,6 @@
 #include "sim/local_store.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <type_traits>
 
 #include "sim/body_rows.hpp"
@@ -59,17 +58,41 @@ void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::
   }
 }
 
+// Grown once per field (a rebuild appends its kept bodies: pushed one by one, each field
+// reallocated ~10 times, 14e6 instructions over the pour's -np 2 rebuilds).
 void LocalStore::append(const LocalStore& from, const std::vector<std::uint32_t>& rows) {
   with_arrays(from, [&](auto& to, const auto& at) {
-    for (std::uint32_t r : rows) to.push_back(at[r]);
+    const std::size_t first = to.size();
+    to.resize(first + rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) to[first + k] = at[rows[k]];
   });
 }
 
 void LocalStore::sort_by_id() {
-  std::vector<std::uint32_t> order(size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return global_id[a] < global_id[b]; });
+  const std::vector<std::uint32_t> order = id_order(global_id);
+  if (std::adjacent_find(order.begin(), order.end(), [](std::uint32_t a, std::uint32_t b) { return b != a + 1; }) ==
+      order.end())
+    return;  // in order already: nothing moves
   with_arrays(*this, [&](auto& v, auto&) { v = subset(v, order); });
+}
+
+std::vector<std::uint32_t> id_order(const std::vector<std::uint32_t>& ids) {
+  constexpr std::size_t kMaxRuns = 64;  // more: not a rebuild's runs, sorted
+  std::vector<std::uint64_t> keys(ids.size());  // id above, row below: one compare a step
+  for (std::size_t k = 0; k < ids.size(); ++k) keys[k] = std::uint64_t(ids[k]) << 32 | k;
+  std::vector<std::size_t> ends;
+  for (std::size_t k = 1; k < keys.size() && ends.size() <= kMaxRuns; ++k)
+    if (keys[k] < keys[k - 1]) ends.push_back(k);
+  if (ends.size() > kMaxRuns) {
+    std::sort(keys.begin(), keys.end());
+  } else {
+    ends.push_back(keys.size());
+    for (std::size_t r = 0; r + 1 < ends.size(); ++r)  // the sorted prefix and the next run
+      std::inplace_merge(keys.begin(), keys.begin() + std::ptrdiff_t(ends[r]), keys.begin() + std::ptrdiff_t(ends[r + 1]));
+  }
+  std::vector<std::uint32_t> order(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = std::uint32_t(keys[k]);
+  return order;
 }
 
 void LocalStore::resize(std::size_t n) {

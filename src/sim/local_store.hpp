@@ -67,6 +67,10 @@ struct LocalStore {
   }
 };
 
+// The rows of `ids` (distinct) in increasing id: a rebuild's store is a few runs in that order
+// (its kept bodies, then each parcel's), merged; more runs are sorted.
+std::vector<std::uint32_t> id_order(const std::vector<std::uint32_t>& ids);
+
 // The integration passes' arrays (integrate.hpp's over_rotor_groups), by local index.
 inline BodyArrays arrays_of(LocalStore& s) {
   return {s.position.data(),     s.orientation.data(),          s.velocity.data(),         s.angular_velocity.data(),

@@ -74,7 +74,7 @@ bool RankContacts::lists_stale(const Drivers& drivers) {
 void RankContacts::redistribute(Bodies& bodies, const ContactEngine& whole) {
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
     if (!bodies.position[b].allFinite()) throw non_finite_position(b);
-  cut_ = cut_domain(bodies.position, std::vector<double>(bodies.size(), double(kBodyWork)), link_.ranks());
+  cut_ = cut_domain(bodies.position, std::vector<double>(bodies.size(), 1.0), link_.ranks());
   ++cuts_;
   set_load_share(part_loads(cut_, bodies.position, std::vector<double>(bodies.size(), 1.0)));
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);

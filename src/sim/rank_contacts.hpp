@@ -167,10 +167,13 @@ class RankContacts {
   std::size_t pairs() const;
   std::size_t candidates() const;
 
-  // A body's own step in the weight of the cut, in halves of a candidate feature pair: a
-  // sphere's, and a polyhedron's (its turn and pose: the box-fill pour's -np 2, counted, splits
-  // best at 8 of 2-32, slower rank 467.9e6 -> 328.5e6 instructions over 200 steps).
-  static constexpr std::uint32_t kBodyWork = 2, kPolyhedronWork = 8;
+  // The weight of the cut (instructions a step): a body's own step beyond its passes (posing,
+  // the rebuild's share, its trigger) and a candidate feature pair's share on each of its two
+  // bodies. Fitted at -np 2 on the box-fill and cubes pours from 0.1 s (counted, the slower
+  // rank's instructions, pour / cubes): (kBodyStep, kHalfCandidate) = (0, 87) 294.2e6 / 358.3e6
+  // and (0, 97) 285.9e6 / 365.9e6 (read from the environment: a few e6 more), (500, 185)
+  // 285.6e6 / 329.5e6; s32's fixed weights (a polyhedron 8, a candidate 1 a side) 315.7e6 / 405.2e6.
+  static constexpr std::uint64_t kBodyStep = 500, kHalfCandidate = 185;
   // The most loaded part over the mean past which a rebuild cuts again: a 5% wait at most.
   static constexpr double kRecutImbalance = 1.05;
   // Points of the sample a cut is made from, over all ranks (32 bytes each: 4 MB to each

@@ -20,15 +20,16 @@ struct CutPoint {
 
 }  // namespace
 
-// Each owned body's weight from the last lists (this rank counted them): its own step (a
-// sphere's as one candidate feature pair, a polyhedron's as four) plus the candidates of its
-// pairs (work: counted on both sides).
+// Each owned body's weight from the last lists (this rank counted them), in instructions a
+// step: its own step (its passes by rotation path, integrate.hpp's pass_weights, counted, and
+// kBodyStep) plus kHalfCandidate for each of its pairs' candidate feature pairs (work: counted
+// on both sides).
 std::vector<std::uint64_t> RankContacts::owned_weights(const std::vector<std::uint32_t>& rows) const {
+  const std::vector<float> passes = pass_weights(owned_rotors_, store_.size());  // by local index
+  const bool listed = owned_work_.size() == rows.size();
   std::vector<std::uint64_t> w(rows.size());
   for (std::size_t k = 0; k < w.size(); ++k)
-    w[k] = shapes_[std::size_t(store_.shape[rows[k]])].is_sphere() ? kBodyWork : kPolyhedronWork;
-  if (owned_work_.size() == w.size())
-    for (std::size_t k = 0; k < w.size(); ++k) w[k] += owned_work_[k];
+    w[k] = std::uint64_t(passes[rows[k]]) + kBodyStep + (listed ? kHalfCandidate * owned_work_[k] : 0);
   return w;
 }
 

@@ -2,9 +2,11 @@
 // boxes (recursive bisection, equal weights), every body is owned by one rank, each rank's
 // ghosts are exactly the bodies owned elsewhere within the halo of its box, rank p's send list to q is q's receive list from p
 // (so a parcel is bare state in an order both know), and body state crosses a parcel bit for bit,
-// a motion parcel with the receiver's drift as the owner's drift.
+// a motion parcel with the receiver's drift as the owner's drift; a rebuild's store, made of runs of
+// increasing id, is merged into id order bit for bit.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 
@@ -189,5 +191,37 @@ TEST_CASE("A motion parcel and the receiver's drift give the owner's drifted sta
       CHECK(store.angular_velocity_end[k] == owner.angular_velocity_end[b]);
       CHECK(store.orientation[k].coeffs() == owner.orientation[b].coeffs());  // not sent when not turning: both the identity
     }
+  }
+}
+
+TEST_CASE("A rebuild's store goes into id order from its runs, bit for bit, and stays put when in order") {
+  const LocalStore from = twelve_owned();
+  LocalStore want;
+  want.append(from, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
+  LocalStore runs;  // kept rows, then two parcels' rows: three increasing runs
+  runs.append(from, {0, 2, 7, 9});
+  runs.append(from, {1, 4, 11});
+  runs.append(from, {3, 5, 6, 8, 10});
+  runs.sort_by_id();
+  check_bit_equal(runs, want);
+  const Vec3* kept = want.position.data();
+  want.sort_by_id();  // in order already: no array is made again
+  CHECK(want.position.data() == kept);
+}
+
+TEST_CASE("id_order merges a few increasing runs and sorts many, as a sort of the ids would") {
+  std::mt19937_64 rng(7);
+  for (std::size_t runs : {1, 2, 5, 64, 65, 400}) {
+    std::vector<std::uint32_t> ids(400);
+    for (std::uint32_t k = 0; k < ids.size(); ++k) ids[k] = 3 * k + 1;
+    std::shuffle(ids.begin(), ids.end(), rng);
+    for (std::size_t r = 0; r < runs; ++r) {  // runs of ids.size() / runs, each increasing
+      const auto lo = ids.begin() + std::ptrdiff_t(r * ids.size() / runs);
+      std::sort(lo, ids.begin() + std::ptrdiff_t((r + 1) * ids.size() / runs));
+    }
+    std::vector<std::uint32_t> want(ids.size());
+    for (std::uint32_t k = 0; k < want.size(); ++k) want[k] = k;
+    std::sort(want.begin(), want.end(), [&](std::uint32_t a, std::uint32_t b) { return ids[a] < ids[b]; });
+    CHECK(id_order(ids) == want);
   }
 }
