@@ -373,6 +373,8 @@ void ContactEngine::choose_skins(const LocalBodies& bodies) {
     // NaN speed: std::max keeps the scene's skin (the trigger then sees the NaN position)
     skin_[b] = std::min(settings_.skin_max, std::max(settings_.skin, 2.0 * speed * skin_time_));
   }
+  // No body fast enough for more (a settled pile): the scene's skin each, by the lists' own path.
+  if (std::all_of(skin_.begin(), skin_.end(), [&](double s) { return s == settings_.skin; })) skin_.clear();
 }
 
 // Body-driver pairs within reach of owned bodies, in (body, driver) order; each body is tested in
