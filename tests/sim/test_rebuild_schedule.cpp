@@ -108,3 +108,13 @@ TEST_CASE("the pair trigger gives the bits of a rebuild every step: spheres' poi
   const ThrownSpheres thrown = thrown_spheres(rolling.config, rolling.exact_step, 7, 0.0102);
   check_schedule(thrown.scene, thrown.lib, thrown.specs, 600);
 }
+
+TEST_CASE("a skin_max below the automatic skin is refused, naming the key", "[rebuild][errors]") {
+  Pile p;  // no skin given: 10% of the smallest bounding radius
+  const double skin = Simulation(p.scene, p.lib, p.specs).engine().skin();  // m
+  p.scene.simulation.skin_max = 0.5 * skin;
+  CHECK_THROWS_AS(Simulation(p.scene, p.lib, p.specs), InputError);
+  CHECK_THROWS_WITH(Simulation(p.scene, p.lib, p.specs), Catch::Contains("skin_max") && Catch::Contains("automatic skin"));
+  p.scene.simulation.skin_max = skin;  // equal: allowed (no body gets more)
+  CHECK_NOTHROW(Simulation(p.scene, p.lib, p.specs));
+}
