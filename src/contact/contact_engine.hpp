@@ -234,12 +234,13 @@ class ContactEngine {
   void flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs, const std::vector<std::uint8_t>* ghost);
   void flush_ended(const std::vector<std::uint8_t>* ghost);
   void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
-  // within each body's skin of its driver band; and marks the drivers
+  // Body-driver pairs within each body's skin plus the driver band; marks the drivers (driver_shift).
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers);
   void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
   void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
-  // skin_, at a rebuild: each body's own skin from its speed, or none (skin_max not above skin).
+  // skin_, at a rebuild: each body's own skin from its speed, or none (skin_max not above skin,
+  // or every body at the scene's skin).
   void choose_skins(const LocalBodies& bodies);
   double skin_of(std::size_t b) const { return skin_.empty() ? settings_.skin : skin_[b]; }  // m
 
