@@ -25,9 +25,10 @@ double half_turn_sine_bound(const Quat& q_now, const Quat& q_then) {
 
 }  // namespace
 
-void PairSearches::add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found,
+void PairSearches::add(BodyPair p, const BodyMotion& now, double reach, const std::vector<FeaturePair>& found,
                        const std::vector<double>& found2) {
   pairs.push_back(p);
+  looked.push_back(reach);
   offset.push_back(now.position[p.j] - now.position[p.i]);
   turn_i.push_back(now.orientation[p.i]);
   turn_j.push_back(now.orientation[p.j]);
@@ -63,7 +64,7 @@ double CandidateMemory::motion(std::size_t e, BodyPair p, const BodyMotion& now)
 }
 
 void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed,
-                           const BodyMotion& now, double range, PairList& list) {
+                           const BodyMotion& now, PairRange pair_range, PairList& list) {
   const std::vector<std::int64_t> old = match(near);
   const std::size_t n_blocks = (near.size() + kCandidateBlock - 1) / kCandidateBlock;
   std::vector<CandidateBlock> blocks(n_blocks);
@@ -82,6 +83,7 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
         const BodyPair p = near[k];
         const PosedBody& a = posed[p.i];
         const PosedBody& b = posed[p.j];
+        const double range = pair_range(p);  // m
         const double cutoff = a.radius + b.radius + range;  // m, as candidate_features'
         const double cutoff2 = cutoff * cutoff;
         double nearest2 = std::numeric_limits<double>::infinity();  // m^2
@@ -93,8 +95,8 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
           found2.push_back(d2);
           nearest2 = std::min(nearest2, d2);
         };
-        const double moved = old[k] >= 0 ? motion(std::size_t(old[k]), p, now) : extra_;  // m
-        if (moved < extra_) {  // false for NaN
+        const double moved = old[k] >= 0 ? motion(std::size_t(old[k]), p, now) : 0.0;  // m
+        if (old[k] >= 0 && moved < searches_.looked[std::size_t(old[k])] - range) {  // false for NaN
           const std::size_t e = std::size_t(old[k]);
           // A candidate that far then is beyond the cutoff now: no distance to take.
           const double beyond2 = (cutoff + moved) * (cutoff + moved);  // m^2
@@ -107,7 +109,7 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
           wide2.clear();
           candidate_features(a, b, range + extra_, wide, &wide2);
           from[k] = -1 - std::int64_t(made[blk].size());
-          made[blk].add(p, now, wide, wide2);
+          made[blk].add(p, now, range + extra_, wide, wide2);
           for (std::size_t c = 0; c < wide.size(); ++c) keep(wide[c], wide2[c]);
         }
         block.add_found(p, std::sqrt(nearest2) - a.radius - b.radius, a.radius + b.radius, found, found2, order);
@@ -157,6 +159,7 @@ void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std:
   next.offset.resize(n);
   next.turn_i.resize(n);
   next.turn_j.resize(n);
+  next.looked.resize(n);
   next.features.resize(next.begin[n]);
   next.distance2.resize(next.begin[n]);
   parallel_for(n, [&](std::size_t k) {
@@ -166,6 +169,7 @@ void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std:
     next.offset[k] = s.offset[e];
     next.turn_i[k] = s.turn_i[e];
     next.turn_j[k] = s.turn_j[e];
+    next.looked[k] = s.looked[e];
     std::copy(s.features.begin() + s.begin[e], s.features.begin() + s.begin[e + 1], next.features.begin() + next.begin[k]);
     std::copy(s.distance2.begin() + s.begin[e], s.distance2.begin() + s.begin[e + 1],
               next.distance2.begin() + next.begin[k]);

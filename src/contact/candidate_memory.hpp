@@ -18,28 +18,40 @@ struct BodyMotion {
   const double* reach;      // m, the farthest core point from the centre
 };
 
+// m, how far beyond touching a body pair's features are listed: `base` (the scene's skin plus the
+// band), or with per-body skins s_i (the engine's, set at each rebuild) base + (s_i + s_j) / 2.
+struct PairRange {
+  PairRange(double all, const double* per_body = nullptr) : base(all), skin(per_body) {}
+  double base;         // m
+  const double* skin;  // m, per body; null: `base` alone
+  double operator()(BodyPair p) const { return skin ? base + 0.5 * (skin[p.i] + skin[p.j]) : base; }
+};
+
 // Searches of body pairs: the poses they were made at and what they found, pair by pair.
 struct PairSearches {
   std::vector<BodyPair> pairs;
   std::vector<Vec3> offset;  // m, x_j - x_i at the search
   std::vector<Quat> turn_i, turn_j;  // orientations at the search
+  std::vector<double> looked;  // m, how far beyond touching the search looked (its range + extra)
   std::vector<std::uint32_t> begin{0};  // pair k's candidates: [begin[k], begin[k + 1])
   std::vector<FeaturePair> features;  // within range + extra then
   // m^2, per feature: its core distance^2 then, rounded down to a float (a lower bound: the recall's
   // filter then passes every candidate the exact one did; 4 bytes a candidate fewer held).
   std::vector<float> distance2;
   std::size_t size() const { return pairs.size(); }
-  void add(BodyPair p, const BodyMotion& now, const std::vector<FeaturePair>& found, const std::vector<double>& found2);
+  void add(BodyPair p, const BodyMotion& now, double reach, const std::vector<FeaturePair>& found,
+           const std::vector<double>& found2);
 };
 
 class CandidateMemory {
  public:
   // extra: m, how far beyond the range a search looks.
   explicit CandidateMemory(double extra) : extra_(extra) {}
-  // body_candidates(near, posed, range, list) with the same result, searching anew only the
-  // pairs whose last search is out of reach (or absent); remembers this rebuild's searches.
+  // body_candidates(near, posed, range, list) with the same result (each pair at its own range),
+  // searching anew only the pairs whose last search is out of reach (or absent); remembers this
+  // rebuild's searches. A kept search holds while the pair moved less than it looked beyond the range now.
   void find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed, const BodyMotion& now,
-            double range, PairList& list);
+            PairRange range, PairList& list);
   // Forgets every search: the bodies' indices or shapes changed.
   void clear() { searches_ = PairSearches{}; }
   // Renumbers the searches for a new set of local bodies (a rank's after a migration): `was`

@@ -262,7 +262,6 @@ static std::vector<std::uint32_t> newcomers(const std::vector<std::uint32_t>& no
 
 void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, bool listed_posed) {
   const double range_p = settings_.skin + band_particle_;
-  const double range_d = settings_.skin + band_driver_;
   free_results(body_list_);  // read by nothing from here: the new lists' results replace them
   if (spheres_only_) body_list_.set_recording(false);  // a sphere list's records are not carried: freed
   free_results(driver_list_);
@@ -281,13 +280,20 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   fresh_d.sparse = true;
   {  // the broad phase's pairs are freed before the slots' state is sized
     std::vector<BodyPair> near;
-    cells_.build_pairs(*bodies.position, bounding_, range_p, near);
+    choose_skins(bodies);
+    if (skin_.empty()) {
+      cells_.build_pairs(*bodies.position, bounding_, range_p, near);
+    } else {  // each body's sphere grown by half its skin: |x_i - x_j| < R_i + R_j + (s_i + s_j) / 2 + band
+      std::vector<double> grown(bounding_.size());  // m
+      for (std::size_t b = 0; b < grown.size(); ++b) grown[b] = bounding_[b] + 0.5 * skin_[b];
+      cells_.build_pairs(*bodies.position, grown, band_particle_, near);
+    }
     stats_.broad_tests += cells_.candidate_tests();
     stats_.broad_levels = cells_.levels();
     stats_.broad_bytes = std::max(stats_.broad_bytes, cells_.bytes());
     cells_ = CellList{};  // its search arrays freed before the lists are sized (~100 bytes a sphere)
     drop_ghost_pairs(bodies, near);
-    fresh_d.pairs = near_drivers(bodies, drivers, range_d);
+    fresh_d.pairs = near_drivers(bodies, drivers);
     if (spheres_only_) {  // no listed_ or pose(): posed where read
       body_candidates(near, [&](std::uint32_t b) { return sphere_pose(bodies, b); }, range_p, fresh);
       release(fresh.gap_at_build);  // the sphere kernel's test is the distance itself: 12 bytes a pair freed
@@ -296,7 +302,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
       std::vector<std::uint32_t> posed_before = listed_posed ? std::move(listed_) : std::vector<std::uint32_t>{};
       mark_listed(bodies.size(), near, fresh_d.pairs);
       pose(bodies, listed_posed ? newcomers(listed_, posed_before) : listed_);
-      memory_.find(near, posed_, {bodies.position->data(), bodies.orientation->data(), core_reach_.data()}, range_p,
+      const PairRange range = skin_.empty() ? PairRange(range_p) : PairRange(band_particle_, skin_.data());
+      memory_.find(near, posed_, {bodies.position->data(), bodies.orientation->data(), core_reach_.data()}, range,
                    fresh);
     }
   }
@@ -313,7 +320,8 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
   parallel_for(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run, sorted
     const std::uint32_t i = fresh_d.pairs[k].i;
-    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, range_d, per_pair[k]);
+    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, skin_of(i) + band_driver_,
+                       per_pair[k]);
     sort_by_key(per_pair[k]);
   }, kParallelMinHeavyItems);  // a pour's ~200 pairs: 6.5% of its serial work when on one thread (issue 19)
   fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
@@ -337,6 +345,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   cut_passes(team);
 
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
+  trigger_.set_skins(skin_);
   must_rebuild_ = false;
   ++stats_.rebuilds;
   stats_.body_pairs = body_list_.size();
@@ -352,10 +361,27 @@ std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodi
   return EqualSpheres{radius_[0], mass[0]};
 }
 
+void ContactEngine::choose_skins(const LocalBodies& bodies) {
+  if (!(settings_.skin_max > settings_.skin) || !settings_.pair_trigger || spheres_only_) {
+    skin_.clear();
+    return;
+  }
+  const std::vector<Vec3>& v = *bodies.velocity;       // m/s
+  const std::vector<Vec3>& w = *bodies.angular_velocity;  // rad/s
+  skin_.resize(v.size());
+  for (std::size_t b = 0; b < v.size(); ++b) {
+    const double speed = v[b].norm() + core_reach_[b] * w[b].norm();  // m/s, of its fastest core point
+    // NaN speed: std::max keeps the scene's skin (the trigger then sees the NaN position)
+    skin_[b] = std::min(settings_.skin_max, std::max(settings_.skin, 2.0 * speed * skin_time_));
+  }
+  // No body fast enough for more (a settled pile): the scene's skin each, by the lists' own path.
+  if (std::all_of(skin_.begin(), skin_.end(), [&](double s) { return s == settings_.skin; })) skin_.clear();
+}
+
 // Body-driver pairs within reach of owned bodies, in (body, driver) order; each body is tested in
 // parallel. The same pass marks the drivers for driver_shift (their placements, and the lever:
 // the farthest body reach from a driver's centre), so a rebuild meets once for both.
-std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range) {
+std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, const Drivers& drivers) {
   const std::size_t n = bodies.size(), m = drivers.size();
   drivers_at_build_.clear();
   std::vector<Vec3> centers;  // m
@@ -373,6 +399,7 @@ std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, con
     for (std::uint32_t i = std::uint32_t(n * t / threads); i < n * (t + 1) / threads; ++i) {
       for (const Vec3& c : centers) lever[i] = std::max(lever[i], (position[i] - c).norm() + bounding_[i]);
       if (!bodies.owned(i)) continue;  // a ghost's driver contacts are its owner's
+      const double range = skin_of(i) + band_driver_;  // m
       for (std::uint32_t j = 0; j < m; ++j)
         if (drivers.near(j, position[i], bounding_[i] + range)) mine.push_back({i, j});
     }

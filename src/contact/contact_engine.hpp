@@ -29,7 +29,16 @@ struct ContactSettings {
   // (RebuildTrigger::pair_exceeded), not as soon as one body moved skin/2. false: skin/2 each (a
   // rank's lists: its ghost halo and the ranks' OR of the answer assume it).
   bool pair_trigger = true;
+  // m, the largest skin a body may get. Above `skin` (and with pair_trigger, and some body not a
+  // sphere), each rebuild gives each body its own skin s_i: what it moves in kSkinSteps steps at its
+  // speed then, times 2, clamped to [skin, skin_max] (set_step gives the step). Pairs are listed
+  // within range + (s_i + s_j) / 2, a body and a driver within range + s_i.
+  double skin_max = 0.0;
 };
+
+// Steps a body's own skin lasts at its speed at the rebuild (ContactSettings::skin_max): the pour
+// counted at 20, 30 and 50 (README, "A skin per body").
+constexpr double kSkinSteps = 30.0;
 
 // Over this process's lists: a pair across a cut between processes is listed by both.
 struct ContactStats {
@@ -179,6 +188,10 @@ class ContactEngine {
 
   const ContactStats& stats() const { return stats_; }
   double skin() const { return settings_.skin; }  // m
+  // s, the step: each body's own skin covers its motion over kSkinSteps of them (skin_max).
+  void set_step(double dt) { skin_time_ = kSkinSteps * dt; }
+  // m, per body, the skins of the last rebuild; empty: the scene's skin for every body.
+  const std::vector<double>& body_skins() const { return skin_; }
   // The energy ledger's share of the contacts (J, by mechanism): each pair sums its own in
   // PairList::pending, in step order, carried through rebuilds with its history; when its
   // contact ends (the step's flagged blocks) it enters an exact sum (contact/exact_sum.hpp),
@@ -228,10 +241,15 @@ class ContactEngine {
   void flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs, const std::vector<std::uint8_t>* ghost);
   void flush_ended(const std::vector<std::uint8_t>* ghost);
   void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
-  std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers, double range);  // and marks them
+  // Body-driver pairs within each body's skin plus the driver band; marks the drivers (driver_shift).
+  std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers);
   void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
   void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
+  // skin_, at a rebuild: each body's own skin from its speed, or none (skin_max not above skin,
+  // or every body at the scene's skin).
+  void choose_skins(const LocalBodies& bodies);
+  double skin_of(std::size_t b) const { return skin_.empty() ? settings_.skin : skin_[b]; }  // m
 
   const std::vector<Shape>& shapes_;
   ContactSettings settings_;
@@ -246,6 +264,8 @@ class ContactEngine {
   // radii, so turning moves no feature farther than this times the chord (0 for a sphere).
   std::vector<double> core_reach_;
   std::vector<double> radius_;             // m, scaled Minkowski radius per body
+  std::vector<double> skin_;               // m, per body, from choose_skins; empty: settings_.skin each
+  double skin_time_ = 0.0;                 // s, set_step
   CellList cells_;
   CandidateMemory memory_;                 // the body pairs' last searches (not for spheres only)
   RebuildTrigger trigger_;

@@ -105,7 +105,7 @@ SimulationSettings::BodyOrder read_body_order(const YamlMap& m) {
 SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
   root.require("simulation", "simulation: {duration: \"1 s\", dt: auto}");
   const YamlMap m =
-      root.map("simulation", "simulation", {"duration", "dt", "accuracy", "threads", "skin", "seed", "body_order"});
+      root.map("simulation", "simulation", {"duration", "dt", "accuracy", "threads", "skin", "skin_max", "seed", "body_order"});
   SimulationSettings s;
   s.duration = check_positive(m, "duration", m.quantity("duration", Dimension::time));
   if (m.has("dt") && m.scalar("dt") != "auto")
@@ -116,9 +116,12 @@ SimulationSettings read_simulation(const YamlMap& root, Scene& scene) {
     m.fail("threads", "at most " + std::to_string(kMaxThreads) + ", got " + m.scalar("threads"));
   s.threads = static_cast<int>(threads);
   if (m.has("skin")) s.skin = check_positive(m, "skin", m.quantity("skin", Dimension::length));
+  if (m.has("skin_max")) s.skin_max = check_positive(m, "skin_max", m.quantity("skin_max", Dimension::length));
+  if (s.skin && s.skin_max && *s.skin_max < *s.skin)
+    m.fail("skin_max", m.scalar("skin_max") + " is below the skin " + m.scalar("skin") + ": a body's skin lies between them");
   s.seed = m.unsigned64("seed", 0);
   s.body_order = read_body_order(m);
-  note_locs(m, "simulation", {"duration", "dt", "accuracy", "threads", "skin"}, scene);
+  note_locs(m, "simulation", {"duration", "dt", "accuracy", "threads", "skin", "skin_max"}, scene);
   if (s.dt && *s.dt > s.duration)
     m.fail("dt", "the step " + m.scalar("dt") + " is longer than the duration " + m.scalar("duration") +
                      " (the limit): the run would take no step");

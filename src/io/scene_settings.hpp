@@ -29,6 +29,7 @@ struct SimulationSettings {
   bool exact_step = true;   // the linear law's exact step where it applies (contact/law/exact_linear.hpp); tests switch it
   int threads = 0;                // 0: all cores
   std::optional<double> skin;     // m, Verlet skin; empty: 0.1 x smallest body bounding radius
+  std::optional<double> skin_max; // m, the largest skin of a body (ContactSettings::skin_max); empty: skin
   std::uint64_t seed = 0;         // every random choice derives from it
   // How a fresh run lays its bodies out in memory (sim/body_order.hpp): by cell, or as listed.
   enum class BodyOrder { space, input } body_order = BodyOrder::space;

@@ -1,6 +1,7 @@
 #include "neighbor/rebuild_trigger.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +33,7 @@ void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Qu
                                 std::to_string(q.size()) + " orientations");
   }
   x_built = x;
+  skin_.clear();  // set_skins, if any, comes after
   if (points) {
     release(q_built);
     release(displacement_);
@@ -67,13 +69,20 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   bool exceeded = false;            // by this thread's bodies
   if (q_built.empty()) {  // points: radius 0, displacement_bound is |dx|, and no bound is kept
     exceeded = points_exceed(x, limit, cut);
-  } else {
+  } else if (skin_.empty()) {
     for (const auto [first, last] : team_shares(n, cut))
       for (std::size_t i = first; i < last; ++i) {
         const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
         displacement_[i] = d;
         // Written as !(d <= limit) so a NaN state also asks for a rebuild.
         if (!(d <= limit)) exceeded = true;
+      }
+  } else {  // each body its own half skin
+    for (const auto [first, last] : team_shares(n, cut))
+      for (std::size_t i = first; i < last; ++i) {
+        const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
+        displacement_[i] = d;
+        if (!(d <= move_limit(skin_[i]))) exceeded = true;
       }
   }
   // Only ever set: any order gives the same. No barrier here: take_exceeded comes after the
@@ -106,6 +115,7 @@ bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch)
 bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const {
   const std::size_t n = x.size();
   if (rebuild_count == 0 || x_built.size() != n) return true;
+  if (!skin_.empty()) return pair_exceeded_own(driver_shift);
   double d1 = 0.0, d2 = 0.0;  // m, the two largest bounds, d1 >= d2
   for (std::size_t i = 0; i < n; ++i) {
     const double d = q_built.empty() ? (x[i] - x_built[i]).norm() : displacement_[i];
@@ -118,6 +128,24 @@ bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, doub
     }
   }
   return !(d1 + std::max(d2, driver_shift) <= skin);
+}
+
+// A pair (i, j) was listed within range + (s_i + s_j) / 2 and has closed at most d_i + d_j of it:
+// it holds while e_i + e_j <= 0, e = d - s / 2, so the two largest e's answer for every pair.
+bool RebuildTrigger::pair_exceeded_own(double driver_shift) const {
+  double e1 = -std::numeric_limits<double>::infinity(), e2 = e1;  // m, the two largest, e1 >= e2
+  for (std::size_t i = 0; i < skin_.size(); ++i) {
+    const double d = displacement_[i];
+    if (!(d + driver_shift <= skin_[i])) return true;  // past a driver's reach, or NaN
+    const double e = d - 0.5 * skin_[i];
+    if (e > e1) {
+      e2 = e1;
+      e1 = e;
+    } else if (e > e2) {
+      e2 = e;
+    }
+  }
+  return e1 + e2 > 0.0;
 }
 
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }

@@ -46,7 +46,11 @@ class RebuildTrigger {
   // bytes a body): turning moves no point; nor the bounds, which only polyhedra read (8 bytes).
   // The radii are then not read either: each step's pass reads x and x at the build alone.
   void mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q, bool points = false);
-  // True when some body's displacement_bound exceeds skin/2 (or is not finite), or when no build
+  // m, per body, the skins the lists were built with (pairs within range + (s_i + s_j) / 2, a body
+  // and a driver within range + s_i), from the build just marked; empty: the scene's skin each.
+  // Not for points (mark_built's `points`: their one pass watches skin/2).
+  void set_skins(const std::vector<double>& skins) { skin_ = skins; }
+  // True when some body's displacement_bound exceeds skin/2 (its own skin's half, set_skins) (or is not finite), or when no build
   // was marked for this many bodies. Parallel reduction, cheap enough for every step. Keeps
   // each body's bound in displacement().
   bool needs_rebuild(const std::vector<Vec3>& x, const std::vector<Quat>& q,
@@ -65,6 +69,8 @@ class RebuildTrigger {
   // !(d1 + max(d2, driver_shift) <= skin). A pair's relative motion is at most the sum of its
   // two bounds, so the lists hold while this is false, whatever one body alone moved (up to
   // the skin). Serial: called only on the steps after a body passed skin/2, before the rebuild.
+  // With per-body skins s_i (set_skins), the same test on e_i = d_i - s_i / 2: true when the two
+  // largest e's sum above 0, or some d_i + driver_shift passes s_i.
   // Needs this step's measure (or watch) of every body; points read x.
   bool pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const;
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
@@ -84,10 +90,13 @@ class RebuildTrigger {
  private:
   // measure's loop for points: |x - x_built| alone.
   bool points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const;
+  // pair_exceeded's test with per-body skins (skin_ set).
+  bool pair_exceeded_own(double driver_shift) const;
 
   std::vector<Vec3> x_built;  // m
   std::vector<Quat> q_built;  // empty when mark_built was told the bodies are points
   std::vector<double> displacement_;  // m
+  std::vector<double> skin_;  // m, per body (set_skins); empty: the skin given each call
   std::size_t rebuild_count = 0;
   std::atomic<bool> exceeded_{false};  // some body moved past skin/2 since the last take_exceeded
 };

@@ -15,6 +15,8 @@ namespace polydem {
 
 namespace {
 
+int scene_line(const Scene& scene, const std::string& key);
+
 ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const std::vector<Shape>& shapes) {
   const ContactOperator& op = scene.forces.contact;
   ContactSettings s{};
@@ -36,6 +38,10 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
       r_min = std::min(r_min, shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
     s.skin = bodies.size() ? 0.1 * r_min : 0.0;
   }
+  s.skin_max = scene.simulation.skin_max.value_or(s.skin);
+  if (s.skin_max < s.skin)  // the skin was chosen here (10% of the smallest radius): a given one is checked when read
+    throw InputError(input_message(scene.path, scene_line(scene, "simulation.skin_max"), "skin_max",
+                                   "below the automatic skin " + std::to_string(s.skin) + " m: give a skin too, or a larger skin_max"));
   return s;
 }
 
@@ -117,6 +123,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",
                                    "'auto' needs a contact law to estimate the critical step; give a number"));
   dt_ = dt_estimate_.chosen;
+  engine_->set_step(dt_);  // each body's own skin lasts so many steps (skin_max)
   drivers.set_contact_stiffness(dt_estimate_.kn_driver, dt_estimate_.critical_normal);  // a servo's default gain
   if (!std::isfinite(dt_) || dt_ <= 0.0)
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.dt"), "dt",

@@ -21,6 +21,15 @@ for scene in pour drum; do
   echo "ok: $scene: -np 1, 2, 3 give the plain run's bits"
 done
 
+# A skin per body (simulation: skin_max) in one process, the ranks on the scene's skin: the same bits.
+sed "s#  skin: \"0.5 mm\"#  skin: \"0.5 mm\"\n  skin_max: \"2 mm\"#; s#\.\./\.\./shapes/#$here/../../shapes/#" "$here/mpi_pour.yaml" > "$tmp/skins.yaml"
+grep -q skin_max "$tmp/skins.yaml" || fail "no skin_max in the pour's copy"
+"$polydem" run "$tmp/skins.yaml" --out "$tmp/skins" --threads 1 > /dev/null 2>&1 || fail "plain pour with skin_max"
+same_outputs "$tmp/pour" "$tmp/skins" "$tmp/skins.yaml"
+mpi 2 run "$tmp/skins.yaml" --out "$tmp/skins2" --threads 1 > /dev/null 2>&1 || fail "pour with skin_max at -np 2"
+same_outputs "$tmp/pour" "$tmp/skins2" "$tmp/skins.yaml"
+echo "ok: pour: skin_max gives the plain run's bits, alone and at -np 2"
+
 # Each of 3 ranks moves its share of the pour and holds fewer than all 100 bodies; the ghosts
 # come point to point from the boxes near its own; the cut by measured work keeps each rank's
 # share of the weight near a third, cut again only at some rebuilds; a rebuild sends the movers

@@ -111,6 +111,15 @@ TEST_CASE("non-positive sizes, densities, stiffnesses and times", "[scene][error
   check_error(with_line(1, "simulation: {duration: 0}"), 1, "duration", "> 0");
 }
 
+TEST_CASE("simulation skin_max: a length, not below the skin", "[scene][errors]") {
+  check_error(with_line(1, "simulation:\n  duration: 1\n  skin: \"1 mm\"\n  skin_max: \"0.5 mm\""), 4, "skin_max",
+              "is below the skin");
+  check_error(with_line(1, "simulation: {duration: 1, skin_max: \"-1 mm\"}"), 1, "skin_max", "must be > 0");
+  check_error(with_line(1, "simulation: {duration: 1, skin_max: \"2 s\"}"), 1, "skin_max", "");  // a time, not a length
+  CHECK(error_of(with_line(1, "simulation: {duration: 1, skin: \"1 mm\", skin_max: \"1 mm\"}")) == "");
+  CHECK(error_of(with_line(1, "simulation: {duration: 1, skin_max: \"4 mm\"}")) == "");  // the automatic skin: checked by the run
+}
+
 TEST_CASE("simulation accuracy: its range, and no numeric dt beside it", "[scene][errors]") {
   check_error(with_line(1, "simulation: {duration: 1, accuracy: 0.3}"), 1, "accuracy", "within [1e-5, 0.2], got 0.3");
   check_error(with_line(1, "simulation: {duration: 1, accuracy: 1e-6}"), 1, "accuracy", "within [1e-5, 0.2]");

@@ -209,5 +209,37 @@ TEST_CASE("the pair test: one body may move up to the skin while the others stay
   CHECK_FALSE(turned.pair_exceeded(x, skin, 0.0));
 }
 
+TEST_CASE("per-body skins: each body watches its own half, a pair the mean of its two skins", "[rebuild]") {
+  const double skin = 0.125;  // m, the scene's (binary fractions: the sums below are exact)
+  const std::vector<Vec3> x0{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};
+  const std::vector<Quat> q0(3, Quat::Identity());
+  const std::vector<double> radius{0.25, 0.25, 0.25};  // m, core reach
+  RebuildTrigger trigger;
+  trigger.mark_built(x0, q0);
+  trigger.set_skins({skin, 4.0 * skin, skin});  // body 1 fast at the build: its pairs reach (0.125 + 0.5) / 2
+  const auto moved = [&](double d0, double d1) {  // m, bodies 0 and 1 moved along x
+    std::vector<Vec3> x = x0;
+    x[0].x() += d0;
+    x[1].x() += d1;
+    return x;
+  };
+  CHECK_FALSE(trigger.needs_rebuild(moved(0.0, 0.24), q0, radius, skin));  // under its half skin, 0.25
+  REQUIRE(trigger.needs_rebuild(moved(0.0, 0.30), q0, radius, skin));
+  CHECK_FALSE(trigger.pair_exceeded(moved(0.0, 0.30), skin, 0.0));  // 0.30 < 0.3125: no pair closed
+  CHECK(trigger.pair_exceeded(moved(0.0, 0.30), skin, 0.25));       // 0.30 + 0.25 > its driver reach 0.5
+  REQUIRE(trigger.needs_rebuild(moved(0.0, 0.32), q0, radius, skin));
+  CHECK(trigger.pair_exceeded(moved(0.0, 0.32), skin, 0.0));  // alone past the pair's 0.3125
+  REQUIRE(trigger.needs_rebuild(moved(0.02, 0.30), q0, radius, skin));
+  CHECK(trigger.pair_exceeded(moved(0.02, 0.30), skin, 0.0));  // together 0.32: body 0 within its half too
+  // A body slow at the build that speeds up: past its own half skin, the cheap test asks at once.
+  CHECK(trigger.needs_rebuild(moved(0.07, 0.0), q0, radius, skin));
+  std::vector<Vec3> nan = x0;
+  nan[1].x() = std::nan("");
+  REQUIRE(trigger.needs_rebuild(nan, q0, radius, skin));
+  CHECK(trigger.pair_exceeded(nan, skin, 0.0));
+  trigger.mark_built(x0, q0);  // a build without set_skins: the scene's skin for every body again
+  CHECK(trigger.needs_rebuild(moved(0.0, 0.24), q0, radius, skin));
+}
+
 }  // namespace
 }  // namespace polydem
