@@ -108,7 +108,7 @@ void RankContacts::spread_landed() {
   const long bad = least_over_ranks(link_, first_non_finite_position());
   if (bad >= 0) throw non_finite_position(std::size_t(bad));  // the same message on every rank
   const std::vector<std::uint32_t> rows = store_.owned_rows();
-  const std::vector<std::uint64_t> w(rows.size(), kBodyWork);
+  const std::vector<std::uint64_t> w(rows.size(), 1);  // equal weights: no lists yet
   cut_from_sample(rows, w);
   set_load_share(summed_loads(rows, w));
   LandedShare share{std::move(store_), std::move(landed_body_), std::move(landed_driver_), {}};
