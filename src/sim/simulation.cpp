@@ -38,7 +38,7 @@ ContactSettings contact_settings(const Scene& scene, const Bodies& bodies, const
       r_min = std::min(r_min, shapes[bodies.shape[b]].bounding_radius * bodies.scale[b]);
     s.skin = bodies.size() ? 0.1 * r_min : 0.0;
   }
-  s.skin_max = scene.simulation.skin_max.value_or(s.skin);
+  s.skin_max = scene.simulation.skin_max.value_or(kSkinMaxFactor * s.skin);
   if (s.skin_max < s.skin)  // the skin was chosen here (10% of the smallest radius): a given one is checked when read
     throw InputError(input_message(scene.path, scene_line(scene, "simulation.skin_max"), "skin_max",
                                    "below the automatic skin " + std::to_string(s.skin) + " m: give a skin too, or a larger skin_max"));

@@ -56,7 +56,15 @@ Schedule run(const Scene& scene, const ShapeLibrary& lib, const std::vector<Body
   return out;
 }
 
-void check_schedule(const Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs, int steps) {
+// The scene with every body on its skin (skin_max = skin: the per-body skins off).
+Scene uniform_skin(const Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs) {
+  Scene uniform = scene;
+  uniform.simulation.skin_max = Simulation(scene, lib, specs).engine().skin();  // m, the scene's (auto)
+  return uniform;
+}
+
+void check_schedule(const Scene& given, const ShapeLibrary& lib, const std::vector<BodySpec>& specs, int steps) {
+  const Scene scene = uniform_skin(given, lib, specs);
   const Schedule trigger = run(scene, lib, specs, steps, false), every = run(scene, lib, specs, steps, true);
   INFO("rebuilds " << trigger.rebuilds << " of " << steps << " steps; kept past skin/2 " << trigger.kept_past_half);
   CHECK(trigger.hash == every.hash);  // no contact missed, none found late
@@ -69,14 +77,15 @@ void check_schedule(const Scene& scene, const ShapeLibrary& lib, const std::vect
 // skin, with fewer rebuilds than the scene's skin alone. Returns the per-body run's schedule.
 Schedule check_own_skins(const Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs, int steps,
                          double factor) {
-  const double skin = Simulation(scene, lib, specs).engine().skin();  // m, the scene's (auto)
+  const Scene uniform = uniform_skin(scene, lib, specs);
+  const double skin = *uniform.simulation.skin_max;  // m, the scene's (auto)
   Scene own = scene;
   own.simulation.skin_max = factor * skin;
-  const Schedule skins = run(own, lib, specs, steps, false), fixed = run(scene, lib, specs, steps, false),
-                 every = run(scene, lib, specs, steps, true);
+  const Schedule skins = run(own, lib, specs, steps, false), fixed = run(uniform, lib, specs, steps, false),
+                 every = run(uniform, lib, specs, steps, true);
   INFO("rebuilds " << skins.rebuilds << " against " << fixed.rebuilds << " at the scene's skin, of " << steps << " steps");
   CHECK(skins.hash == every.hash);  // no contact missed, none found late
-  CHECK(fixed.largest_skin == 0.0);  // no skin_max: no body skins
+  CHECK(fixed.largest_skin == 0.0);  // skin_max = skin: no body skins
   CHECK(skins.largest_skin > skin);
   CHECK(skins.largest_skin <= factor * skin);
   CHECK(skins.rebuilds < fixed.rebuilds);
@@ -117,4 +126,12 @@ TEST_CASE("a skin_max below the automatic skin is refused, naming the key", "[re
   CHECK_THROWS_WITH(Simulation(p.scene, p.lib, p.specs), Catch::Contains("skin_max") && Catch::Contains("automatic skin"));
   p.scene.simulation.skin_max = skin;  // equal: allowed (no body gets more)
   CHECK_NOTHROW(Simulation(p.scene, p.lib, p.specs));
+}
+
+TEST_CASE("per-body skins are on by default, up to 4 times the scene's skin", "[rebuild]") {
+  Pile p;  // spinning cubes and spheres: some body fast enough for a skin of its own
+  const double skin = *uniform_skin(p.scene, p.lib, p.specs).simulation.skin_max;  // m
+  const Schedule s = run(p.scene, p.lib, p.specs, 300, false);
+  CHECK(s.largest_skin > skin);
+  CHECK(s.largest_skin <= 4.0 * skin);
 }
