@@ -199,7 +199,10 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   }
   engine_->record_contacts(whole.records_contacts() || stop_seen_);  // the run loop tells the whole engine
   const LocalBodies view = store_.view();
-  if (stale) engine_->rebuild(view, drivers), split_listed();  // poses the bodies it pairs
+  if (stale) {
+    engine_->rebuild(view, drivers);  // poses the bodies it pairs
+    split_listed();
+  }
   // The bodies' sums stay in the lists: the closing kick adds them (owned_sums), as one process's does.
   // Posed: by the rebuild, else by exchange_ghosts.
   in_team(view.size() >= kParallelMinItems, [&] {
