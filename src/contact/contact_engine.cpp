@@ -104,27 +104,6 @@ struct DriverPartner {
 // the next rebuilds (candidate_memory.hpp).
 constexpr double kSearchExtra = 1.0;
 
-// A body's passes (closing and opening kicks, drift, the rebuild check; a polyhedron's pose) and a
-// sphere-wall pair, in body pairs apart (split_pairs' unit: a sphere pair out of reach; a polyhedron
-// pair): callgrind --separate-threads on the beds (README, "One body cut"). Recounted on the peers'
-// bed (bfd00df, 2 threads, 300 steps): a pair unit ~79.5 instructions (the walk over 8,826 pairs,
-// 8,013 touching), a sphere's passes ~114 (1.4), a sphere-wall pair in two lanes ~392 (4.9; 7.4
-// before the wall lanes, which left the floor's thread short of work).
-constexpr double kSpherePassWeight = 1.4;
-constexpr double kWallPairWeight = 4.9;
-constexpr double kPolyhedronPassWeight = 2.9;
-// The first region's work a body, in instructions a step (callgrind, the pour at 1 thread, 400
-// steps from boxfill_t0.1.bin; the kicks and drift: pass_weights): a polyhedron's rebuild check
-// (displacement_bound) and a listed polyhedron's pose (rotation and world vertices).
-constexpr double kMeasureInstructions = 97.0, kPoseInstructions = 400.0;
-// A thread this far above an even share of the first region takes a cut of its own (pass_cut):
-// the settled cubes' walk cut leaves +13% there, the bed's +18%; the pour's +58%.
-constexpr double kOwnPassCut = 1.25;
-// A cut's crossing work in the same units (CrossWeights), from the bed's instructions at 1 and 2
-// threads (callgrind, 300 steps): a foreign pair's kept result ~62 instructions on top of its pair
-// (0.7 of a sphere pair's ~87, 0.2 of a polyhedron pair's ~290), a late term ~20 (0.2; 0.07).
-constexpr CrossWeights kSphereCross{0.7, 0.2}, kPolyhedronCross{0.2, 0.07};
-
 // m, the farthest core vertex from the centre of mass, unscaled.
 double core_reach(const Shape& s) {
   double r = 0.0;
@@ -410,82 +389,6 @@ std::vector<BodyPair> ContactEngine::near_drivers(const LocalBodies& bodies, con
   return pairs;
 }
 
-// Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
-// body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
-// between them). Polyhedra's wall pairs are shared as they come. `passes` false: the passes have
-// a cut of their own (cut_passes), the walk's weighs its pairs and wall pairs alone.
-void ContactEngine::weigh_bodies(bool passes) {
-  const double sphere = passes ? kSpherePassWeight : 0.0, polyhedron = passes ? kPolyhedronPassWeight : 0.0;
-  direct_.body_weight.resize(direct_.sums.size());
-  for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
-    direct_.body_weight[b] = spheres_only_ ? float(sphere + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
-                                           : float(polyhedron);
-  direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
-}
-
-namespace {
-
-// The passes' cut folded on the walk's body cut `walk` (TeamCut::folded), from `before` (per body + 1,
-// the passes' work of the bodies before it): thread t keeps its walk chunk's bodies, the last one
-// only up to an even share, and the bodies past that are dealt to the threads from the last but
-// one to the first, each up to an even share (thread 0 takes the rest). Returns the heaviest
-// thread's work: a pour's pile, cut by the walk, stays on the cores that walk it (issue 19).
-double fold_cut(const std::uint32_t* walk, const std::vector<double>& before, int threads,
-                std::vector<std::uint32_t>& at) {
-  const std::size_t n = before.size() - 1;
-  const double even = before[n] / threads;
-  auto reach = [&](std::uint32_t from, double work) {  // the body where the work from `from` reaches `work`
-    const auto b = std::lower_bound(before.begin() + from, before.end(), before[from] + work) - before.begin();
-    return std::uint32_t(std::min(std::size_t(b), n));
-  };
-  at.assign(2 * threads + 1, std::uint32_t(n));
-  std::copy(walk, walk + threads, at.begin());
-  at[threads] = at[threads + 1] = reach(walk[threads - 1], even);
-  for (int t = threads - 2; t > 0; --t) {  // thread t's second piece: 2 threads - 1 - t
-    const double need = even - (before[walk[t + 1]] - before[walk[t]]);
-    const std::uint32_t from = at[2 * threads - 1 - t];
-    at[2 * threads - t] = need > 0.0 ? reach(from, need) : from;
-  }
-  double heaviest = 0.0;
-  for (int t = 0; t < threads; ++t) {
-    const int u = 2 * threads - 1 - t;
-    heaviest = std::max(heaviest, before[at[t + 1]] - before[at[t]] + before[at[u + 1]] - before[at[u]]);
-  }
-  return heaviest;
-}
-
-}  // namespace
-
-// The first region's own cut where the walk's leaves some thread kOwnPassCut times an even share
-// of its passes or more: below that, a body moved and then walked by one thread stays in its cache.
-void ContactEngine::cut_passes(int threads) {
-  const bool walk_weighed_passes = !std::exchange(own_pass_cut_, false);
-  const std::size_t n = pass_weight_.size();
-  if (threads < 2 || n != direct_.sums.size() || direct_.split.threads != threads) return;
-  std::vector<double> before(n + 1, 0.0);  // instructions a step of the bodies before b
-  const double measure = spheres_only_ ? 0.0 : kMeasureInstructions;
-  for (std::size_t b = 0; b < n; ++b) before[b + 1] = pass_weight_[b] + measure;
-  if (!spheres_only_)
-    for (std::uint32_t b : listed_) before[b + 1] += kPoseInstructions;
-  std::partial_sum(before.begin(), before.end(), before.begin());
-  const std::uint32_t* walk = direct_.split.body_cut.data();
-  double heaviest = 0.0;
-  for (int t = 0; t < threads; ++t) heaviest = std::max(heaviest, before[walk[t + 1]] - before[walk[t]]);
-  if (heaviest < kOwnPassCut * before[n] / threads) return;
-  if (walk_weighed_passes) {
-    weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
-    direct_.cut(body_list_, threads);
-  }
-  pass_threads_ = threads;
-  own_pass_cut_ = true;
-  pass_folded_ = fold_cut(direct_.split.body_cut.data(), before, threads, pass_cut_) < kOwnPassCut * before[n] / threads;
-  if (pass_folded_) return;
-  pass_cut_.assign(threads + 1, std::uint32_t(n));  // the walk's chunks are uneven in themselves: an even cut
-  pass_cut_[0] = 0;
-  for (int t = 1; t < threads; ++t)
-    pass_cut_[t] = std::uint32_t(std::lower_bound(before.begin(), before.end(), before[n] * t / threads) - before.begin());
-}
-
 // A moving driver can reach bodies the lists did not pair it with: how far its surface may have
 // moved where bodies are (translation, plus turning times the lever), the largest of the drivers.
 double ContactEngine::driver_shift(const Drivers& drivers) const {
@@ -712,86 +615,6 @@ void ContactEngine::add_totals() {
   stats_.contacts = 0;
   for (const PairList* list : {&body_list_, &driver_list_})
     for (std::uint32_t c : list->block_contacts) stats_.contacts += c;  // counted by the blocks: one thread sums few
-}
-
-// Each pair's pending energy enters the exact sum whole (in no set order: the sum is exact), so
-// a flush splits no pair's step-ordered sum but where every run splits it (at its contact's
-// end, at the ledger's closes).
-static void add_pending(const PairList& list, const std::vector<std::uint8_t>* ghost, ExactEnergy& sum) {
-  for (std::size_t k = 0; k < list.size(); ++k)
-    if (!ghost || !(*ghost)[list.pairs[k].i]) sum.add(list.open_energy_or_zero(k));
-}
-
-void ContactEngine::flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost) {
-  if (!list.sparse && !list.has_slots(k)) return;  // no slot: no energy (its first slot is the next pair's)
-  if (!ghost || !(*ghost)[list.pairs[k].i]) flushed_.add(list.open_energy(k));
-  list.open_energy(k) = EnergyParts{};
-}
-
-void ContactEngine::flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs,
-                                const std::vector<std::uint8_t>* ghost) {
-  for (std::uint32_t k : pairs) flush_pair(list, k, ghost);
-}
-
-// Serial, after the pair loops: only the blocks the loop flagged are scanned (a few a step).
-void ContactEngine::flush_ended(const std::vector<std::uint8_t>* ghost) {
-  for (PairList* list : {&body_list_, &driver_list_})
-    for (std::size_t b = 0; b < list->block_ended.size(); ++b) {
-      if (!list->block_ended[b]) continue;
-      for (std::size_t k = b * kPairBlock; k < std::min(list->size(), (b + 1) * kPairBlock); ++k)
-        if (!list->touching[k]) flush_pair(*list, k, ghost);
-    }
-}
-
-void ContactEngine::flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost) {
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    bool active = false;
-    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) active |= list.active[s] != 0;
-    if (!active) flush_pair(list, k, ghost);
-  }
-}
-
-void ContactEngine::flush_energy(const std::vector<std::uint8_t>* ghost) {
-  for (PairList* list : {&body_list_, &driver_list_}) {
-    add_pending(*list, ghost, flushed_);
-    std::fill(list->pending.begin(), list->pending.end(), EnergyParts{});
-    for (ContactSlot& slot : list->slots) slot.pending = EnergyParts{};
-  }
-}
-
-ExactEnergy ContactEngine::take_energy(const std::vector<std::uint8_t>* ghost) {
-  flush_energy(ghost);
-  return std::exchange(flushed_, ExactEnergy{});
-}
-
-ExactEnergy ContactEngine::open_energy(const std::vector<std::uint8_t>* ghost) const {
-  ExactEnergy sum = flushed_;
-  for (const PairList* list : {&body_list_, &driver_list_}) add_pending(*list, ghost, sum);
-  return sum;
-}
-
-// Adds the active slots of the pairs whose lower body is not a ghost (exactly: any order).
-// r_star(k): m, pair k's curvature radius (Hertz).
-template <class RStar>
-static void add_stored_energy(const PairList& list, const LawParams& law, const RStar& r_star_of,
-                              const std::vector<std::uint8_t>* ghost, ExactStored& total) {
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    if (ghost && (*ghost)[list.pairs[k].i]) continue;
-    const double r_star = law.normal == NormalModel::hertz ? r_star_of(list.pairs[k]) : 0.0;  // m
-    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.active[s]) total.add(stored_parts(law, list.history(s), r_star));
-  }
-}
-
-ExactStored ContactEngine::elastic(const Drivers& drivers, const std::vector<std::uint8_t>* ghost) const {
-  ExactStored total;  // J
-  add_stored_energy(body_list_, settings_.particle, [&](BodyPair p) {
-    return radius_[p.i] * radius_[p.j] / (radius_[p.i] + radius_[p.j]);
-  }, ghost, total);
-  add_stored_energy(driver_list_, settings_.driver, [&](BodyPair p) {
-    return drivers.r_star(p.j, radius_[p.i]);
-  }, ghost, total);
-  return total;
 }
 
 void ContactEngine::reduce_bodies(const LocalBodies& bodies) {

@@ -149,7 +149,10 @@ LocalStore piece_rows(Reader& r, std::size_t n, const Bodies& b, const std::stri
       throw InputError(which + ": body " + std::to_string(b.id[g]) + " is in two pieces or out of order");
     s.id[k] = b.id[g];
     if (!whole) continue;
-    s.shape[k] = b.shape[g], s.scale[k] = b.scale[g], s.mass[k] = b.mass[g], s.inertia[k] = b.inertia[g];
+    s.shape[k] = b.shape[g];
+    s.scale[k] = b.scale[g];
+    s.mass[k] = b.mass[g];
+    s.inertia[k] = b.inertia[g];
     s.group[k] = b.group[g];
   }
   r.array(s.position, n); r.array(s.orientation, n); r.array(s.velocity, n);
