@@ -13,6 +13,7 @@
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
 #include "contact/candidate_memory.hpp"
+#include "contact/lone_pairs.hpp"
 #include "contact/pair_loop.hpp"
 #include "contact/sphere_kernel.hpp"
 #include "contact/sphere_wall_lanes.hpp"
@@ -540,9 +541,16 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
     const audit::Scope walk(audit::kWalk);
     with_law(settings_.particle, [&](auto parts) {
       using Parts = decltype(parts);
-      all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
-        return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-      }, &direct_);
+      if constexpr (lanes_law<Parts>()) {  // lone contacts of two pairs side by side
+        all_pair_forces<true>(
+            body_list_,
+            LonePairKernel<Parts, BodyPartner>{settings_.particle, band_particle_, dt, view, partner, body_list_},
+            &direct_);
+      } else {
+        all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
+          return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
+        }, &direct_);
+      }
     });
   }
   if (!driver_list_.pairs.empty()) {

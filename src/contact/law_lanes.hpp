@@ -31,22 +31,34 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
 }
 
 // Applies the law to sub-contacts g[0..N) (weights w, histories h), one per lane, where steady:
-// N = 2, two sub-contacts of a pair side by side; N = 1, a lone one through the same operations.
-// Bit l of the result is set when lane l was: its force is in out[l], its torque about xi (N m)
+// N = 2, two sub-contacts side by side; N = 1, a lone one through the same operations. Lane l's
+// pair values are pc[l]'s: kAcross, two pairs' (their lone contacts, pair_lanes.hpp), else pc[0]'s
+// for every lane (one pair's); the law's constants (kn, kt, mu, dt) are pc[0]'s.
+// Bit l of the result is set when lane l was: its force is in out[l], its torque about its xi (N m)
 // in torque[l], and its history h[l] is advanced; another lane's h, out and torque are left as they were.
-template <int N>
-[[gnu::always_inline]] inline unsigned steady_law(const LaneConstants& p, const ContactPoint* const g[N],
+template <int N, bool kAcross = false>
+[[gnu::always_inline]] inline unsigned steady_law(const LaneConstants* const pc[N], const ContactPoint* const g[N],
                                                   const double w_of[N], ContactHistory* const h[N],
                                                   ContactForce out[N], Vec3 torque[N]) {
   using namespace lanes;
   using V = typename Types<N>::V;
   using V3 = Vec3Of<V>;
+  const LaneConstants& p = *pc[0];
   const auto each = [&](auto get) { return gather<V>(get); };
+  // A pair value: lane by lane across pairs, one splat within a pair.
+  const auto pair_vec = [&](Vec3 LaneConstants::*member) {
+    if constexpr (kAcross) return load<V>([&](int l) -> const Vec3& { return pc[l]->*member; });
+    else return splat<V>(p.*member);
+  };
+  const auto pair_value = [&](double LaneConstants::*member) {
+    if constexpr (kAcross) return each([&](int l) { return pc[l]->*member; });
+    else return splat<V>(p.*member);
+  };
   const V3 n = load<V>([&](int l) -> const Vec3& { return g[l]->normal; });
   const V dn = each([&](int l) { return g[l]->gap; }), w = each([&](int l) { return w_of[l]; });
-  const V3 lever = load<V>([&](int l) -> const Vec3& { return g[l]->point; }) - splat<V>(p.xi);
-  const V3 v_rel = splat<V>(p.v_centre) + cross(splat<V>(p.w_rel), lever);
-  const V3 v_end = splat<V>(p.v_centre_end) + cross(splat<V>(p.w_rel_end), lever);
+  const V3 lever = load<V>([&](int l) -> const Vec3& { return g[l]->point; }) - pair_vec(&LaneConstants::xi);
+  const V3 v_rel = pair_vec(&LaneConstants::v_centre) + cross(pair_vec(&LaneConstants::w_rel), lever);
+  const V3 v_end = pair_vec(&LaneConstants::v_centre_end) + cross(pair_vec(&LaneConstants::w_rel_end), lever);
   const V h_fd = each([&](int l) { return h[l]->fd; }), h_gap = each([&](int l) { return h[l]->gap; }),
           h_w = each([&](int l) { return h[l]->weight; });
   const V kn = splat<V>(p.kn), zero = splat<V>(0.0);
@@ -57,8 +69,8 @@ template <int N>
   const V overlap_last = max0(-h_gap);
   const V f_last = h_fd + h_w * kn * overlap_last;
   const V f_last_unit = h_w > zero ? f_last / h_w : zero;
-  const V hm = splat<V>(0.5 * p.dt) / splat<V>(p.m_eff);
-  const V c = splat<V>(p.nu);
+  const V hm = splat<V>(0.5 * p.dt) / pair_value(&LaneConstants::m_eff);
+  const V c = pair_value(&LaneConstants::nu);
   const V vn_e = (dot(v_end, n) + hm * (splat<V>(1.0) * kn * overlap - f_last_unit)) / (splat<V>(1.0) + hm * c);
   const V u = w * kn * -dn - (w * c) * vn_e;
   const V fp = max0(u);
@@ -105,18 +117,20 @@ template <int N>
 [[gnu::always_inline]] inline unsigned steady_lanes(const LaneConstants& p, const ContactPoint& ga,
                                                     const ContactPoint& gb, double wa, double wb, ContactHistory& ha,
                                                     ContactHistory& hb, ContactForce out[2], Vec3 torque[2]) {
+  const LaneConstants* const pc[2] = {&p, &p};
   const ContactPoint* const g[2] = {&ga, &gb};
   const double w[2] = {wa, wb};
   ContactHistory* const h[2] = {&ha, &hb};
-  return steady_law<2>(p, g, w, h, out, torque);
+  return steady_law<2>(pc, g, w, h, out, torque);
 }
 
 // One sub-contact (steady_law<1>): true when it was steady and done.
 [[gnu::always_inline]] inline bool steady_alone(const LaneConstants& p, const ContactPoint& g, double w,
                                                 ContactHistory& h, ContactForce& out, Vec3& torque) {
+  const LaneConstants* const pc[1] = {&p};
   const ContactPoint* const gs[1] = {&g};
   ContactHistory* const hs[1] = {&h};
-  return steady_law<1>(p, gs, &w, hs, &out, &torque) != 0;
+  return steady_law<1>(pc, gs, &w, hs, &out, &torque) != 0;
 }
 
 }  // namespace polydem

@@ -344,25 +344,41 @@ struct PairLaw {
   PairTotals& totals;
 };
 
+// A pair of one sub-contact through the lanes' law, waiting for another such pair to run the
+// two contacts side by side (lone_pairs.hpp): what apply_law made of it, its contact copied out
+// of the scratch, its totals (the hand-over's energy) until the law adds the contact.
+struct LonePair {
+  std::uint32_t k;
+  FoundContact contact;
+  LaneConstants lc;
+  double nu_t, r_star;  // N s/m, m
+  bool exact_step;
+  PairTotals totals;
+};
+
 // Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
 // kSteady: a steady lane's contact (law_lanes.hpp), whose sliding and rolling shares are +0: not
 // added, as adding +0 to a sum changes it only from -0, and a sum that starts at +0 never is -0.
-template <bool kSteady = false, class Partner>
-[[gnu::always_inline]] inline void add_contact(const PairLaw<Partner>& pl, std::size_t c, const ContactForce& f,
-                                               const Vec3& torque) {
-  const FoundContact& found = pl.scratch.found[c];
+template <bool kSteady = false>
+[[gnu::always_inline]] inline void add_to_totals(const FoundContact& found, PairTotals& totals, const ContactForce& f,
+                                                 const Vec3& torque) {
   SlotRecord& record = found.state->record;  // always recording: the hand-over reads the point
   record.point = found.geometry.point;  // member by member: an aggregate went through a copy on the stack
   record.force = f.force;
   record.fn = f.fn;
-  pl.totals.force_i += f.force;
-  pl.totals.torque_i += torque;
+  totals.force_i += f.force;
+  totals.torque_i += torque;
   if constexpr (kSteady) {
-    pl.totals.energy.net += f.dissipated - f.patch;
-    pl.totals.energy.patch += f.patch;
+    totals.energy.net += f.dissipated - f.patch;
+    totals.energy.patch += f.patch;
   } else {
-    pl.totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
+    totals.energy += energy_parts(f);  // net of the patch work: the patch share is not conservative (law.hpp)
   }
+}
+template <bool kSteady = false, class Partner>
+[[gnu::always_inline]] inline void add_contact(const PairLaw<Partner>& pl, std::size_t c, const ContactForce& f,
+                                               const Vec3& torque) {
+  add_to_totals<kSteady>(pl.scratch.found[c], pl.totals, f, torque);
 }
 
 // Sub-contact c through contact_force, as it computes a contact alone, added and recorded.
@@ -438,12 +454,20 @@ template <class Parts, class Partner>
     contact_by_law_apart<Parts>(pl, c);
 }
 
+// The law runs its steady sub-contacts in lanes (law_lanes.hpp): the linear law without
+// cohesion, rolling or the tangential dashpot.
+template <class Parts>
+constexpr bool lanes_law() {
+  return !Parts::Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
+}
+
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
-// their forces, torques and energy to `totals`.
-template <class Parts, class Partner>
-[[gnu::always_inline]] inline void apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
+// their forces, torques and energy to `totals`. With `lone` (kLone), a pair whose one sub-contact
+// goes through the lanes is left there instead (its totals too), for lone_pairs.hpp: false then.
+template <class Parts, bool kLone = false, class Partner>
+[[gnu::always_inline]] inline bool apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, double r_star,
-                                 PairTotals& totals) {
+                                 PairTotals& totals, LonePair* lone = nullptr) {
   using Normal = typename Parts::Normal;
   const BodyPair p = list.pairs[k];
   const Vec3 xi = bodies.position[p.i];
@@ -460,6 +484,23 @@ template <class Parts, class Partner>
       law.exact_step &&
       (law.contact_mass ||
        (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
+  // Through the lanes where the law allows it (law_lanes.hpp), in their order.
+  bool laned = false;
+  if constexpr (lanes_law<Parts>()) {
+    laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0 &&
+            !scratch.pushes;  // a changed patch's shares move: every one takes its push
+    if constexpr (kLone) {
+      if (laned && scratch.found.size() == 1) {  // `totals` are lone->totals (lone_paired_pairs)
+        lone->k = k;
+        lone->contact = scratch.found[0];
+        lone->lc = {xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt};
+        lone->nu_t = nu_t;
+        lone->r_star = r_star;
+        lone->exact_step = exact_step;
+        return false;
+      }
+    }
+  }
   const PairLaw<Partner> pl{law,
                             bodies,
                             partner,
@@ -472,12 +513,7 @@ template <class Parts, class Partner>
                             nu_t,
                             exact_step,
                             totals};
-  // Through the lanes where the law allows it (law_lanes.hpp), in their order.
-  constexpr bool kLanes = !Normal::kCurved && !Parts::cohesion && !Parts::rolling && !Parts::tangential_dashpot;
-  bool laned = false;
-  if constexpr (kLanes) {
-    laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0 &&
-            !scratch.pushes;  // a changed patch's shares move: every one takes its push
+  if constexpr (lanes_law<Parts>()) {
     if (laned) law_in_lanes<Parts>(pl);
   }
   if (!laned)
@@ -485,6 +521,7 @@ template <class Parts, class Partner>
   // About j's centre the levers are longer by xi - xj: one cross product per pair, not per contact.
   totals.torque_j = -(totals.torque_i + (xi - partner.center(p.j)).cross(totals.force_i));
   totals.contacts = int(scratch.found.size());
+  return true;
 }
 
 // Pair p's PairTurn from its pushing sub-contacts' moments (the law's), appended to `turns`.
@@ -504,23 +541,26 @@ template <class Partner>
   turns.push_back(turn);
 }
 
-template <class Parts, class Partner>
-PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
-                       const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
+// Pair k's forces, torques and energy in `totals`; true. With `lone` (kLone), false where the
+// pair's one sub-contact waits there for the lanes' law instead (apply_law).
+template <class Parts, bool kLone, class Partner>
+[[gnu::always_inline]] inline bool pair_forces_into(const LawParams& law, double band, double dt,
+                                                    const BodyView& bodies, const Partner& partner, PairList& list,
+                                                    std::uint32_t k, PairScratch& scratch, PairTotals& totals,
+                                                    LonePair* lone) {
   const BodyPair p = list.pairs[k];
   const PosedBody& a = bodies.posed[p.i];
-  PairTotals totals;
   if (k + 1 < list.size()) partner.prefetch(list.pairs[k + 1].j);
   const int was_touching = list.touching[k];
   if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
-    return totals;  // most listed pairs, at a glance
+    return true;  // most listed pairs, at a glance
   find_contacts(band, a, partner, list, k, scratch);
   const double r_star = Parts::Normal::kCurved ? partner.r_star(a.radius, p.j) : 0.0;  // m
   const bool changed = (was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found);
   if (changed)
     totals.energy = hand_over_history(list, list.slot_begin[k], list.slot_begin[k + 1], was_touching,
                                       scratch.found, scratch.now_on, &law, r_star);
-  if (scratch.found.empty()) return totals;
+  if (scratch.found.empty()) return true;
   const bool regions = scratch.found.size() > 1 && !(a.shape->convex && partner.convex(p.j));
   if (regions)
     region_patch_weights(
@@ -541,8 +581,16 @@ PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyV
                    dt, scratch);
     }
   }
-  apply_law<Parts>(law, dt, bodies, partner, list, k, scratch, r_star, totals);
+  if (!apply_law<Parts, kLone>(law, dt, bodies, partner, list, k, scratch, r_star, totals, lone)) return false;
   if (scratch.pushes && bodies.turns) [[unlikely]] leave_turn(bodies, partner, p, scratch, *bodies.turns);
+  return true;
+}
+
+template <class Parts, class Partner>
+PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
+                       const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
+  PairTotals totals;
+  pair_forces_into<Parts, false>(law, band, dt, bodies, partner, list, k, scratch, totals, nullptr);
   return totals;
 }
 

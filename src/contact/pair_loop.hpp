@@ -145,6 +145,51 @@ template <class Kernel, class Add>
   if (waiting != kNone) lone(waiting);
 }
 
+// Pairs [k, stop) through a kernel that leaves a pair of one steady sub-contact waiting
+// (lone_pairs.hpp): the next such pair takes the other lane, each one's terms given to `add` in
+// list order. A pair between them that adds to a sum sends the waiting one alone first (as
+// paired_pairs), so each sum takes its terms in list order.
+template <class Kernel, class Add>
+[[gnu::always_inline]] inline void lone_paired_pairs(PairList& list, const Kernel& kernel, const Add& add,
+                                                     PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
+                                                     std::uint32_t& contacts, bool& ended) {
+  using Lone = typename Kernel::Lone;
+  Lone lone[2];
+  int waiting = -1;  // lone[waiting] waits for a partner
+  const auto take = [&](const Lone& l) __attribute__((always_inline)) {
+    add(l.k, l.totals);
+    keep_pair(list, l.k, l.totals, contacts, ended);
+  };
+  const auto alone = [&](Lone& l) __attribute__((noinline)) {
+    kernel.alone(l, scratch);
+    take(l);
+  };
+  for (; k < stop; ++k) {
+    Lone& next = lone[waiting == 0 ? 1 : 0];
+    PairTotals& pt = next.totals;  // made in place: a waiting pair's stay there
+    pt = PairTotals{};
+    if (!kernel.forces(k, scratch, pt, next)) {
+      if (waiting < 0) {
+        waiting = &next == &lone[0] ? 0 : 1;
+        continue;
+      }
+      kernel.lanes(lone[waiting], next, scratch);
+      take(lone[waiting]);
+      take(next);
+      waiting = -1;
+      continue;
+    }
+    keep_pair(list, k, pt, contacts, ended);
+    if (pt.contacts == 0) {  // out of reach: its terms are +0
+      add.out_of_reach(k, pt);
+      continue;
+    }
+    if (waiting >= 0) alone(lone[std::exchange(waiting, -1)]);
+    add(k, pt);
+  }
+  if (waiting >= 0) alone(lone[waiting]);
+}
+
 // Pairs [k, stop) of a chunk in order, each computed and its terms given to `add`.
 template <class Kernel, class Add>
 [[gnu::always_inline]] inline void chunk_pairs(PairList& list, const Kernel& kernel, const Add& add,
@@ -152,6 +197,8 @@ template <class Kernel, class Add>
                                                std::uint32_t& contacts, bool& ended) {
   if constexpr (requires { Kernel::kTwoLanes; }) {
     paired_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
+  } else if constexpr (requires { Kernel::kLonePairs; }) {
+    lone_paired_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
   } else {
     for (; k < stop; ++k) {
       const PairTotals pt = kernel(k, scratch);  // a pair out of reach adds +0: no sum's bits change
