@@ -146,37 +146,41 @@ template <class Kernel, class Add>
 }
 
 // Pairs [k, stop) through a kernel that leaves a pair of one steady sub-contact waiting
-// (lone_pairs.hpp): the next such pair takes the other lane, each one's terms given to `add` in
-// list order. A pair between them that adds to a sum sends the waiting one alone first (as
-// paired_pairs), so each sum takes its terms in list order.
+// (lone_pairs.hpp): the next such pair takes the other lane. Each pair's terms go to `add` in
+// list order: up to kHeld pairs with contacts between the two wait with them (their totals made
+// in their slot); one more sends the waiting pair alone and the held ones after it.
 template <class Kernel, class Add>
 [[gnu::always_inline]] inline void lone_paired_pairs(PairList& list, const Kernel& kernel, const Add& add,
                                                      PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
                                                      std::uint32_t& contacts, bool& ended) {
   using Lone = typename Kernel::Lone;
-  Lone lone[2];
-  int waiting = -1;  // lone[waiting] waits for a partner
+  constexpr int kHeld = 2;
+  Lone slot[kHeld + 2];  // slot[0] the waiting pair, then the held ones in list order, then the next pair
+  int used = 0;          // slots [0, used) wait
   const auto take = [&](const Lone& l) __attribute__((always_inline)) {
     add(l.k, l.totals);
     keep_pair(list, l.k, l.totals, contacts, ended);
   };
-  const auto alone = [&](Lone& l) __attribute__((noinline)) {
-    kernel.alone(l, scratch);
-    take(l);
+  const auto alone = [&]() __attribute__((noinline)) {  // the waiting pair without a partner, then the held ones
+    kernel.alone(slot[0], scratch);
+    take(slot[0]);
+    for (int h = 1; h < used; ++h) add(slot[h].k, slot[h].totals);
+    used = 0;
   };
   for (; k < stop; ++k) {
-    Lone& next = lone[waiting == 0 ? 1 : 0];
-    PairTotals& pt = next.totals;  // made in place: a waiting pair's stay there
+    Lone& next = slot[used];
+    PairTotals& pt = next.totals;  // made in place: a waiting or held pair's stay there
     pt = PairTotals{};
     if (!kernel.forces(k, scratch, pt, next)) {
-      if (waiting < 0) {
-        waiting = &next == &lone[0] ? 0 : 1;
+      if (used == 0) {
+        used = 1;
         continue;
       }
-      kernel.lanes(lone[waiting], next, scratch);
-      take(lone[waiting]);
+      kernel.lanes(slot[0], next, scratch);
+      take(slot[0]);
+      for (int h = 1; h < used; ++h) add(slot[h].k, slot[h].totals);
       take(next);
-      waiting = -1;
+      used = 0;
       continue;
     }
     keep_pair(list, k, pt, contacts, ended);
@@ -184,10 +188,15 @@ template <class Kernel, class Add>
       add.out_of_reach(k, pt);
       continue;
     }
-    if (waiting >= 0) alone(lone[std::exchange(waiting, -1)]);
-    add(k, pt);
+    if (used == 0) {
+      add(k, pt);
+      continue;
+    }
+    next.k = k;
+    if (++used <= kHeld + 1) continue;  // held
+    alone();
   }
-  if (waiting >= 0) alone(lone[waiting]);
+  if (used) alone();
 }
 
 // Pairs [k, stop) of a chunk in order, each computed and its terms given to `add`.
