@@ -104,3 +104,52 @@ TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, anoth
   CHECK(steady > 15000);  // most draws rest and stick
   CHECK(left > 5000);     // and the rest exercise every way out
 }
+
+TEST_CASE("law lanes across pairs: each lane has its own pair's one-lane bits", "[law]") {
+  ContactParams params;
+  params.kn = 1e5;
+  params.kt = 0.8e5;
+  params.mu = 0.5;
+  params.en = 0.3;
+  const LawParams law = prepare_law(params);
+  Draw d;
+  const auto random_pair = [&] {  // a pair's motions relative to i's centre, m_eff and nu (kg, N s/m)
+    const double m_eff = d.uniform(1e-3, 3e-3);
+    return LaneConstants{d.vec(0.1), d.vec(0.01), d.vec(1.0), d.vec(0.01), d.vec(1.0), m_eff,
+                         pair_damping(law, m_eff), law.kn, law.kt, law.mu, 6.6e-6};
+  };
+  int steady = 0, left = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const LaneConstants p[2] = {random_pair(), random_pair()};  // two pairs' lone contacts (weight 1)
+    const ContactPoint g[2] = {random_point(d), random_point(d)};
+    const ContactHistory h0[2] = {random_history(d, 1.0), random_history(d, 1.0)};
+    ContactHistory h[2] = {h0[0], h0[1]};
+    const LaneConstants* const pc[2] = {&p[0], &p[1]};
+    const ContactPoint* const gp[2] = {&g[0], &g[1]};
+    const double w[2] = {1.0, 1.0};
+    ContactHistory* const hp[2] = {&h[0], &h[1]};
+    ContactForce f[2];
+    Vec3 torque[2];
+    const unsigned done = steady_law<2, true>(pc, gp, w, hp, f, torque);
+    for (int l = 0; l < 2; ++l) {
+      ContactHistory h_alone = h0[l];
+      ContactForce f_alone;
+      Vec3 torque_alone;
+      const bool alone = steady_alone(p[l], g[l], 1.0, h_alone, f_alone, torque_alone);
+      REQUIRE(alone == bool(done & (1u << l)));
+      REQUIRE(same_bits(h[l], h_alone));  // advanced alike, or both left as they were
+      if (!alone) {
+        ++left;
+        continue;
+      }
+      ++steady;
+      REQUIRE(same_bits(f[l].force, f_alone.force));
+      REQUIRE(same_bits(torque[l], torque_alone));
+      REQUIRE(same_bits(f[l].fn, f_alone.fn));
+      REQUIRE(same_bits(f[l].dissipated, f_alone.dissipated));
+      REQUIRE(same_bits(f[l].patch, f_alone.patch));
+    }
+  }
+  CHECK(steady > 15000);
+  CHECK(left > 1000);
+}
