@@ -46,15 +46,20 @@ ContactHistory random_history(Draw& d, double weight) {
   return h;
 }
 
-}  // namespace
-
-TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, another lane is left to it", "[law]") {
+// The linear law of a cube pile (kn, kt in N/m).
+LawParams pile_law() {
   ContactParams params;
   params.kn = 1e5;
   params.kt = 0.8e5;
   params.mu = 0.5;
   params.en = 0.3;
-  const LawParams law = prepare_law(params);
+  return prepare_law(params);
+}
+
+}  // namespace
+
+TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, another lane is left to it", "[law]") {
+  const LawParams law = pile_law();
   using Parts = LawParts<NormalLinear, false, false, false>;
   Draw d;
   int steady = 0, left = 0;
@@ -106,12 +111,7 @@ TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, anoth
 }
 
 TEST_CASE("law lanes across pairs: each lane has its own pair's one-lane bits", "[law]") {
-  ContactParams params;
-  params.kn = 1e5;
-  params.kt = 0.8e5;
-  params.mu = 0.5;
-  params.en = 0.3;
-  const LawParams law = prepare_law(params);
+  const LawParams law = pile_law();
   Draw d;
   const auto random_pair = [&] {  // a pair's motions relative to i's centre, m_eff and nu (kg, N s/m)
     const double m_eff = d.uniform(1e-3, 3e-3);
