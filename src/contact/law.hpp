@@ -291,7 +291,7 @@ template <class Normal, bool kLone>
   ContactKinematics k{};
   k.normal = Vec3::UnitZ(), k.v_end = Vec3(0.0, 0.0, vn_end);
   k.dn = dn, k.m_eff = m_eff, k.weight = weight, k.nu = nu, k.r_star = r_star;
-  const ContactHistory h{Vec3::Zero(), Vec3::Zero(), fd_last, gap_last, weight_last};
+  const ContactHistory h{Vec3::Zero(), fd_last, gap_last, weight_last};
   const NormalForce f = dashpot_normal_force<Normal, kLone>(law, k, h, dt, vn, spring, last_normal_force<Normal, kLone>(law, k, h));
   return f.fp + f.push;
 }
@@ -331,7 +331,11 @@ template <class Parts, bool kLone = false, Stored kStored = Stored::kFill>
   const double overlap = std::max(-k.dn, 0.0);  // m
   const double spring = Normal::spring(law, k.r_star, w, overlap);  // N
   // A contact that starts: one step back it was a stroke vn dt away, with no dashpot force.
-  if (h.gap == kNoGap) h = ContactHistory{h.ft, h.mr, 0.0, k.dn - vn * dt, w, h.slipping, h.rolling_slipping};
+  if (h.gap == kNoGap) {
+    h.fd = 0.0;
+    h.gap = k.dn - vn * dt;
+    h.weight = w;
+  }
   const law_detail::NormalForce normal = law_detail::normal_force<Normal, kLone>(law, k, h, dt, vn, spring);
   out.fn = normal.fp + normal.push;  // N
   double fp = out.fn;  // N, the compressive force the caps scale with

@@ -28,10 +28,13 @@ struct ForeignResult {
 // Each body's late terms (its pairs after its home chunk), added after its sum by the closing
 // pass in pair order: one thread's bits. Addresses, for the closing pass's registers.
 struct LateTerms {
-  const std::uint32_t* begin = nullptr;  // per body + 1: its entries of `late`
+  // per body + 1: its entries of `late`; null where there are none (one thread's cut): the
+  // closing pass then reads no 4 bytes a body (issue 19)
+  const std::uint32_t* begin = nullptr;
   const std::uint32_t* late = nullptr;   // foreign ordinal << 1 | (1 when the body is j), increasing
   const ForeignResult* foreign = nullptr;
   [[gnu::always_inline]] void add_to(std::size_t b, Vec3& force, Vec3& torque) const {
+    if (!begin) return;
     for (std::uint32_t e = begin[b]; e < begin[b + 1]; ++e) {
       const ForeignResult& r = foreign[late[e] >> 1];
       if (late[e] & 1u) {
@@ -127,7 +130,9 @@ struct DirectSums {
     split.late.clear();
     zero.assign(1, SumsZero{true});
   }
-  LateTerms late_terms() const { return {split.late_begin.data(), split.late.data(), foreign.data()}; }
+  LateTerms late_terms() const {
+    return {split.late.empty() ? nullptr : split.late_begin.data(), split.late.data(), foreign.data()};
+  }
   // Cuts `list` for a team of `threads` (split_pairs, at the threads' pace): by the loop when its
   // team is not the cut's, or ahead by the rebuild, outside any region (no barrier in the loop).
   void cut(const PairList& list, int threads);

@@ -37,12 +37,25 @@ void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Qu
   if (points) {
     release(q_built);
     release(displacement_);
+    round_points();
   } else {
     q_built = q;
     displacement_.assign(x.size(), 0.0);
+    release(x_near);
   }
   exceeded_.store(false, std::memory_order_relaxed);
   ++rebuild_count;
+}
+
+void RebuildTrigger::round_points() {
+  x_near.resize(x_built.size());
+  near_rounding_ = 0.0;
+  for (std::size_t i = 0; i < x_built.size(); ++i) {
+    x_near[i] = x_built[i].cast<float>();
+    const double rounding = (x_built[i] - x_near[i].cast<double>()).norm();  // m
+    if (!(rounding <= near_rounding_))  // a NaN (or an overflow's inf): every test reads x_built
+      near_rounding_ = rounding == rounding ? rounding : std::numeric_limits<double>::infinity();
+  }
 }
 
 bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector<Quat>& q,
@@ -108,7 +121,8 @@ void RebuildTrigger::remeasure(const std::vector<Vec3>& x, const std::vector<Qua
 
 bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch) {
   if (rebuild_count == 0 || x_built.size() != n || !q_built.empty()) return false;  // measure's other paths
-  watch = {x_built.data(), move_limit(skin), &exceeded_};
+  const double limit = move_limit(skin);
+  watch = {x_built.data(), x_near.data(), limit, near_limit(limit, near_rounding_), &exceeded_};
   return true;
 }
 

@@ -29,15 +29,29 @@ inline double move_limit(double skin) { return 0.5 * skin; }
 
 // measure's test of points, body by body, for a pass that has just moved them (the joined
 // opening pass, integrate.hpp): moved_past sets the answer.
+// The pass reads each point's x at the build rounded to floats (12 bytes a body-step, not 24:
+// issue 19), and the exact one only where that cannot decide: the same answers as moved_past.
 struct PointWatch {
   const Vec3* x_built;          // m
+  const Eigen::Vector3f* x_near;  // m, x_built rounded to float
   double limit;                 // m, move_limit
+  double near2;                 // m^2, |x - x_near|^2 <= near2 proves |x - x_built| <= limit (near_limit)
   std::atomic<bool>* exceeded;  // set, never cleared here: any order gives the same
   [[gnu::always_inline]] void operator()(std::size_t i, const Vec3& x) const {
+    if ((x - x_near[i].cast<double>()).squaredNorm() <= near2) return;  // nearly every body-step (no root)
     if (moved_past(x, x_built[i], limit) && !exceeded->load(std::memory_order_relaxed))
       exceeded->store(true, std::memory_order_relaxed);
   }
 };
+
+// m^2: the square of `limit` less the largest rounding of x_built to x_near (`rounding`, m) and a
+// margin of 1e-9 limit (the norms' and squares' few ulps): by the triangle inequality a point
+// within it of x_near is within limit of x_built. -1 when none is left (huge coordinates): every
+// test reads x_built.
+inline double near_limit(double limit, double rounding) {
+  const double near = limit - rounding - 1e-9 * limit;  // m
+  return near > 0.0 ? near * near : -1.0;
+}
 
 class RebuildTrigger {
  public:
@@ -88,12 +102,16 @@ class RebuildTrigger {
   std::size_t rebuilds() const { return rebuild_count; }
 
  private:
+  // x_near and near_rounding_ from x_built (mark_built of points).
+  void round_points();
   // measure's loop for points: |x - x_built| alone.
   bool points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const;
   // pair_exceeded's test with per-body skins (skin_ set).
   bool pair_exceeded_own(double driver_shift) const;
 
   std::vector<Vec3> x_built;  // m
+  std::vector<Eigen::Vector3f> x_near;  // m, x_built rounded to float, for points (PointWatch)
+  double near_rounding_ = 0.0;  // m, the largest |x_built - x_near|
   std::vector<Quat> q_built;  // empty when mark_built was told the bodies are points
   std::vector<double> displacement_;  // m
   std::vector<double> skin_;  // m, per body (set_skins); empty: the skin given each call

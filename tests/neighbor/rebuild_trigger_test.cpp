@@ -80,6 +80,38 @@ TEST_CASE("points (radius 0) need no orientation or bounds kept: the same answer
   CHECK(points_only.needs_rebuild(x, q, points, skin));
 }
 
+TEST_CASE("a pass's watch of points reads x at the build in floats and answers as moved_past", "[rebuild]") {
+  // Built at coordinates from 1 mm to 1 km (float rounding up to ~3e-5 m, against skin/2 = 0.1
+  // m) and at one a float cannot hold; each point moved by skin/2 times 1 - 1e-3 ... 1 + 1e-3,
+  // or exactly skin/2, in a random direction, or to a NaN.
+  const double skin = 0.2, limit = move_limit(skin);  // m
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> x0;
+  for (double scale : {1e-3, 1.0, 1e3})
+    for (int k = 0; k < 300; ++k) x0.push_back(scale * Vec3(unit(rng), unit(rng), unit(rng)));
+  x0.push_back(Vec3(1e39, 0.0, 0.0));  // m: no float holds it
+  RebuildTrigger trigger;
+  trigger.mark_built(x0, std::vector<Quat>(x0.size(), Quat::Identity()), true);
+  PointWatch watch{};
+  REQUIRE(trigger.watch_points(x0.size(), skin, watch));
+  std::size_t past = 0, tests = 0;
+  for (std::size_t i = 0; i < x0.size(); ++i) {
+    for (double f : {1.0 - 1e-3, 1.0 - 1e-9, 1.0, 1.0 + 1e-9, 1.0 + 1e-3, std::nan("")}) {
+      const Vec3 x = x0[i] + f * limit * Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+      std::atomic<bool> exceeded{false};
+      PointWatch one = watch;
+      one.exceeded = &exceeded;
+      one(i, x);
+      CHECK(exceeded.load() == moved_past(x, x0[i], limit));
+      past += moved_past(x, x0[i], limit);
+      ++tests;
+    }
+  }
+  CHECK(past > tests / 4);  // both answers were asked
+  CHECK(past < 3 * tests / 4);
+}
+
 TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]") {
   // A point at distance R turned by theta moves along the chord 2 R sin(theta/2).
   const double skin = 0.2;
