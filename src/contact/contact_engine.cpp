@@ -405,11 +405,24 @@ double ContactEngine::driver_shift(const Drivers& drivers) const {
 }
 
 bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
+  measure_in_team(bodies, watched);
+  return stale_after_measure(bodies, drivers);
+}
+
+void ContactEngine::measure_in_team(const LocalBodies& bodies, bool watched) {
   in_team(bodies.size() >= kParallelMinItems, [&] {
     measure_motion(bodies, watched);
 #pragma omp barrier
   });  // the barrier: for a caller inside a team already
-  return stale_after_measure(bodies, drivers);
+}
+
+PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
+  measure_in_team(bodies, watched);
+  trigger_.take_exceeded();  // the cheap test's answer: the margins hold more
+  PairMargins m = trigger_.margins(*bodies.position, settings_.skin, driver_shift(drivers),
+                                   bodies.ghost ? bodies.ghost->data() : nullptr);
+  m.alone = m.alone || must_rebuild_;
+  return m;
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {

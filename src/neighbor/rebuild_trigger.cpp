@@ -148,6 +148,35 @@ bool RebuildTrigger::pair_exceeded_own(double driver_shift) const {
   return e1 + e2 > 0.0;
 }
 
+PairMargins RebuildTrigger::margins(const std::vector<Vec3>& x, double skin, double driver_shift,
+                                    const std::uint8_t* ghost) const {
+  PairMargins m;
+  if (rebuild_count == 0 || x_built.size() != x.size()) {
+    m.alone = true;
+    return m;
+  }
+  m.uniform = skin_.empty();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (ghost && ghost[i]) continue;  // its owner's part answers for it
+    const double d = q_built.empty() ? (x[i] - x_built[i]).norm() : displacement_[i];  // m
+    const double s = m.uniform ? skin : skin_[i];  // m
+    if (!(d + driver_shift <= s)) m.alone = true;  // past a driver's reach, or NaN
+    m.add(m.uniform ? d : d - 0.5 * s);
+  }
+  return m;
+}
+
+bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin) {
+  const bool uniform = std::all_of(parts, parts + n, [](const PairMargins& p) { return p.uniform; });
+  PairMargins all;  // the two largest of every part's
+  for (std::size_t k = 0; k < n; ++k) {
+    if (parts[k].alone) return true;
+    for (double v : parts[k].top)  // a uniform part's bound as a margin: d - skin/2, as pair_exceeded_own's
+      all.add(uniform || !parts[k].uniform ? v : v - 0.5 * skin);
+  }
+  return uniform ? !(all.top[0] + all.top[1] <= skin) : all.top[0] + all.top[1] > 0.0;
+}
+
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }
 
 }  // namespace polydem

@@ -182,10 +182,18 @@ class RankContacts {
 
  private:
   using Requests = std::uint64_t;  // bit 0: rebuild, bit 1: stop
-  Requests requests_here(const Drivers& drivers);
+  // A rank's word in the step's decision: its requests and its owned bodies' pair-rule margins
+  // (ContactEngine::owned_margins), which every rank joins alike (pair_rule_exceeded).
+  struct Ask {
+    Requests requests = 0;
+    PairMargins margins;
+    bool rebuild_here() const { return (requests & 1) || margins.alone; }
+  };
+  Ask ask_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
   bool exchange_ghosts(const Drivers& drivers, double dt);
-  bool fold_requests(Requests mine);
+  bool fold_asks(const Ask& mine);
+  bool decide(const std::vector<Ask>& asks);
   void redistribute(Bodies& bodies, const ContactEngine& whole);
   void spread_landed();
   void migrate_bodies();
@@ -197,7 +205,7 @@ class RankContacts {
   void cut_from_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w);
   std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void pack_parcels(Requests mine);
+  void pack_parcels(const Ask& mine);
   void unpack_parcels(double dt);
   void split_listed();
   ForceSums closing_sums();
