@@ -15,6 +15,18 @@ namespace {
 // (~30 ns a body).
 constexpr std::size_t kMinParallel = 1024;
 
+// margins' loop, one per kind of bound and skin (no test of the kind a body): each body's bound
+// d (m) against its skin s (m), the ghosts left out.
+template <bool kUniform, class Bound, class Skin>
+void add_margins(PairMargins& m, std::size_t n, const std::uint8_t* ghost, double driver_shift, Bound d_of, Skin s_of) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ghost && ghost[i]) continue;  // its owner's part answers for it
+    const double d = d_of(i), s = s_of(i);  // m
+    if (!(d + driver_shift <= s)) m.alone = true;  // past a driver's reach, or NaN
+    m.add(kUniform ? d : d - 0.5 * s);
+  }
+}
+
 }  // namespace
 
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
@@ -156,13 +168,14 @@ PairMargins RebuildTrigger::margins(const std::vector<Vec3>& x, double skin, dou
     return m;
   }
   m.uniform = skin_.empty();
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (ghost && ghost[i]) continue;  // its owner's part answers for it
-    const double d = q_built.empty() ? (x[i] - x_built[i]).norm() : displacement_[i];  // m
-    const double s = m.uniform ? skin : skin_[i];  // m
-    if (!(d + driver_shift <= s)) m.alone = true;  // past a driver's reach, or NaN
-    m.add(m.uniform ? d : d - 0.5 * s);
-  }
+  const auto scene_skin = [skin](std::size_t) { return skin; };
+  if (q_built.empty())
+    add_margins<true>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return (x[i] - x_built[i]).norm(); }, scene_skin);
+  else if (m.uniform)
+    add_margins<true>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return displacement_[i]; }, scene_skin);
+  else
+    add_margins<false>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return displacement_[i]; },
+                       [&](std::size_t i) { return skin_[i]; });
   return m;
 }
 

@@ -49,8 +49,9 @@ struct PairMargins {
   char unused[6] = {};   // zeros: a rank sends the record as bytes
   double top[2] = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};  // m, top[0] >= top[1]
   void add(double v) {
+    if (v <= top[1]) return;  // most bodies
     if (v > top[0]) top[1] = top[0], top[0] = v;
-    else if (v > top[1]) top[1] = v;
+    else top[1] = v;
   }
 };
 static_assert(sizeof(PairMargins) == 24, "a rank sends it each step: 24 bytes");

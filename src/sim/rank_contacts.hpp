@@ -4,8 +4,9 @@
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' velocities (and orientations,
 // when bodies turn) come point to point from their owners (sim/ghost_plan.hpp), each rank
-// drifting its ghosts' positions as their owners do (sim/body_exchange.hpp), their parcels carrying each rank's rebuild and
-// stop requests when every rank is every other's neighbour (else one reduction a step decides); a gather shares the drivers' reactions (summed in the one-process
+// drifting its ghosts' positions as their owners do (sim/body_exchange.hpp), their parcels carrying each rank's word for the
+// step's decision (its requests and its owned bodies' pair-rule margins: one process's rebuild
+// steps) when every rank is every other's neighbour (else one gather a step decides); a gather shares the drivers' reactions (summed in the one-process
 // pair order) at the steps that read them; the contact count and the energy ledger's exact
 // sums are reduced only at output rows and when the ledger closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
