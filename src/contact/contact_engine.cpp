@@ -418,9 +418,14 @@ void ContactEngine::measure_in_team(const LocalBodies& bodies, bool watched) {
 
 PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
   measure_in_team(bodies, watched);
-  trigger_.take_exceeded();  // the cheap test's answer: the margins hold more
-  PairMargins m = trigger_.margins(*bodies.position, settings_.skin, driver_shift(drivers),
-                                   bodies.ghost ? bodies.ghost->data() : nullptr);
+  const bool past_half = trigger_.take_exceeded();
+  const double shift = driver_shift(drivers);  // m
+  PairMargins m;
+  if (spheres_only_) {  // points: skin/2 apiece (their margins, a pass of their own, would cost more than they save)
+    m.alone = past_half || must_rebuild_ || shift > 0.5 * settings_.skin;
+    return m;
+  }
+  m = trigger_.margins(*bodies.position, settings_.skin, shift, bodies.ghost ? bodies.ghost->data() : nullptr);
   m.alone = m.alone || must_rebuild_;
   return m;
 }
