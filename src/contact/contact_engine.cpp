@@ -406,11 +406,29 @@ double ContactEngine::driver_shift(const Drivers& drivers) const {
 }
 
 bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
+  measure_in_team(bodies, watched);
+  return stale_after_measure(bodies, drivers);
+}
+
+void ContactEngine::measure_in_team(const LocalBodies& bodies, bool watched) {
   in_team(bodies.size() >= kParallelMinItems, [&] {
     measure_motion(bodies, watched);
 #pragma omp barrier
   });  // the barrier: for a caller inside a team already
-  return stale_after_measure(bodies, drivers);
+}
+
+PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
+  measure_in_team(bodies, watched);
+  const bool past_half = trigger_.take_exceeded();
+  const double shift = driver_shift(drivers);  // m
+  PairMargins m;
+  if (spheres_only_) {  // points: skin/2 apiece (their margins, a pass of their own, would cost more than they save)
+    m.alone = past_half || must_rebuild_ || shift > 0.5 * settings_.skin;
+    return m;
+  }
+  m = trigger_.margins(*bodies.position, settings_.skin, shift, bodies.ghost ? bodies.ghost->data() : nullptr);
+  m.alone = m.alone || must_rebuild_;
+  return m;
 }
 
 void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {

@@ -26,8 +26,8 @@ struct ContactSettings {
   int spheres_only = -1;
   bool equal_spheres = true;  // false: each sphere's radius and mass read even when all are alike (tests)
   // Rebuild when the two largest motions since the build could close the skin between two bodies
-  // (RebuildTrigger::pair_exceeded), not as soon as one body moved skin/2. false: skin/2 each (a
-  // rank's lists: its ghost halo and the ranks' OR of the answer assume it).
+  // (RebuildTrigger::pair_exceeded), not as soon as one body moved skin/2. false: skin/2 each
+  // (and no per-body skins).
   bool pair_trigger = true;
   // m, the largest skin a body may get. Above `skin` (and with pair_trigger, and some body not a
   // sphere), each rebuild gives each body its own skin s_i: what it moves in kSkinSteps steps at its
@@ -103,6 +103,12 @@ class ContactEngine {
   // since the lists were built (skin/2 a body for a rank's lists), or a rebuild was forced. Once per step: it measures each body's
   // displacement, which the pair loop's skip test reads (`watched`: measure_motion's).
   bool lists_stale(const LocalBodies& bodies, const Drivers& drivers, bool watched = false);
+  // A rank's share of a decision over all ranks (sim/rank_contacts.hpp): measures every local
+  // body as lists_stale does, then answers for its owned bodies alone (RebuildTrigger::margins,
+  // `alone` set too where a rebuild is due here); the ranks' answers join in pair_rule_exceeded.
+  // Spheres alone (points) answer skin/2 apiece: `alone` when one moved so far, no margins (a
+  // pass over them each step: ~2% of a sphere bed rank's step, against ~2 rebuilds in 5,000 steps).
+  PairMargins owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched = false);
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
@@ -226,6 +232,7 @@ class ContactEngine {
   // The bodies `some` (increasing: listed_ or some of it), each thread its share of the cut.
   void pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait = true);  // `wait`: a barrier at its end
   void keep_sphere_poses(const LocalBodies& bodies, bool needed);
+  void measure_in_team(const LocalBodies& bodies, bool watched);  // measure_motion in a team of its own, or the caller's
   // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.
   PosedBody sphere_pose(const LocalBodies& bodies, std::size_t b) const {
     const Vec3& x = (*bodies.position)[b];

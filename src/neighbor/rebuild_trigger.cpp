@@ -15,6 +15,18 @@ namespace {
 // (~30 ns a body).
 constexpr std::size_t kMinParallel = 1024;
 
+// margins' loop, one per kind of bound and skin (no test of the kind a body): each body's bound
+// d (m) against its skin s (m), the ghosts left out.
+template <bool kUniform, class Bound, class Skin>
+void add_margins(PairMargins& m, std::size_t n, const std::uint8_t* ghost, double driver_shift, Bound d_of, Skin s_of) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ghost && ghost[i]) continue;  // its owner's part answers for it
+    const double d = d_of(i), s = s_of(i);  // m
+    if (!(d + driver_shift <= s)) m.alone = true;  // past a driver's reach, or NaN
+    m.add(kUniform ? d : d - 0.5 * s);
+  }
+}
+
 }  // namespace
 
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
@@ -160,6 +172,36 @@ bool RebuildTrigger::pair_exceeded_own(double driver_shift) const {
     }
   }
   return e1 + e2 > 0.0;
+}
+
+PairMargins RebuildTrigger::margins(const std::vector<Vec3>& x, double skin, double driver_shift,
+                                    const std::uint8_t* ghost) const {
+  PairMargins m;
+  if (rebuild_count == 0 || x_built.size() != x.size()) {
+    m.alone = true;
+    return m;
+  }
+  m.uniform = skin_.empty();
+  const auto scene_skin = [skin](std::size_t) { return skin; };
+  if (q_built.empty())
+    add_margins<true>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return (x[i] - x_built[i]).norm(); }, scene_skin);
+  else if (m.uniform)
+    add_margins<true>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return displacement_[i]; }, scene_skin);
+  else
+    add_margins<false>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return displacement_[i]; },
+                       [&](std::size_t i) { return skin_[i]; });
+  return m;
+}
+
+bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin) {
+  const bool uniform = std::all_of(parts, parts + n, [](const PairMargins& p) { return p.uniform; });
+  PairMargins all;  // the two largest of every part's
+  for (std::size_t k = 0; k < n; ++k) {
+    if (parts[k].alone) return true;
+    for (double v : parts[k].top)  // a uniform part's bound as a margin: d - skin/2, as pair_exceeded_own's
+      all.add(uniform || !parts[k].uniform ? v : v - 0.5 * skin);
+  }
+  return uniform ? !(all.top[0] + all.top[1] <= skin) : all.top[0] + all.top[1] > 0.0;
 }
 
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }

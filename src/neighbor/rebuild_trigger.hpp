@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "polydem/math.hpp"
@@ -53,6 +54,31 @@ inline double near_limit(double limit, double rounding) {
   return near > 0.0 ? near * near : -1.0;
 }
 
+// One part's answer to the pair rule (a rank's owned bodies, RebuildTrigger::margins): the parts'
+// answers together decide as pair_exceeded over all their bodies would (pair_rule_exceeded),
+// whatever the order they are met in (the two largest of a set).
+struct PairMargins {
+  bool alone = false;    // some body past a driver's reach (d + driver shift > s), or not finite
+  bool uniform = true;   // every body at the scene's skin: `top` holds bounds d, else margins d - s/2
+  char unused[6] = {};   // zeros: a rank sends the record as bytes
+  double top[2] = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};  // m, top[0] >= top[1]
+  void add(double v) {
+    if (v <= top[1]) return;  // most bodies
+    if (v > top[0]) {
+      top[1] = top[0];
+      top[0] = v;
+    } else {
+      top[1] = v;
+    }
+  }
+};
+static_assert(sizeof(PairMargins) == 24, "a rank sends it each step: 24 bytes");
+
+// True when the parts' bodies together may have closed a pair's skin (m, `skin` the scene's):
+// with uniform skins the two largest bounds past the skin (pair_exceeded's d1 + d2), else the
+// two largest margins d - s/2 past 0, a uniform part's bounds read as margins d - skin/2.
+bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin);
+
 class RebuildTrigger {
  public:
   // Remembers the state the lists were built at; counts one rebuild. `points`: every body's
@@ -87,6 +113,10 @@ class RebuildTrigger {
   // largest e's sum above 0, or some d_i + driver_shift passes s_i.
   // Needs this step's measure (or watch) of every body; points read x.
   bool pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const;
+  // pair_exceeded's answer for the bodies `ghost` leaves out (null: all), to be joined with other
+  // parts' (pair_rule_exceeded): their two largest bounds (or margins d - s/2 with per-body skins),
+  // and whether one alone passes a driver's reach. Needs this step's measure of them (points: x).
+  PairMargins margins(const std::vector<Vec3>& x, double skin, double driver_shift, const std::uint8_t* ghost) const;
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
   // bodies are points and a build was marked for as many; the pass then stands for measure.
   bool watch_points(std::size_t n, double skin, PointWatch& watch);

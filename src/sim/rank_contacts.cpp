@@ -45,27 +45,47 @@ RunError non_finite_position(std::size_t b) {
 RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shapes, const Bodies& bodies,
                            ContactSettings settings)
     : link_(link), shapes_(shapes), settings_(settings), n_bodies_(bodies.size()) {
-  const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
-  halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), settings_.skin + band);
-  settings_.pair_trigger = false;  // the halo allows skin/2 a body (ghost_halo)
   settings_.spheres_only = std::all_of(bodies.shape.begin(), bodies.shape.end(), [&](int s) {
     return shapes[s].is_sphere();
   });
+  const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
+  // Pairs listed within R_i + R_j + (s_i + s_j) / 2 + band: the widest skins (ContactEngine's choose_skins).
+  const bool own_skins = settings_.pair_trigger && settings_.skin_max > settings_.skin && !settings_.spheres_only;
+  halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), (own_skins ? settings_.skin_max : settings_.skin) + band);
 }
 
-// This rank's requests: a rebuild (its bodies moved, none listed yet, or asked for), a stop.
-RankContacts::Requests RankContacts::requests_here(const Drivers& drivers) {
-  bool stale = forced_ || rebuild_asked_ || !engine_;
-  if (!stale) stale = engine_->lists_stale(store_.view(), drivers, watched_);
-  return Requests(stale) | Requests(stop_asked_) << 1;
+// This rank's word: a rebuild (none listed yet, or asked for), a stop, its owned bodies' margins.
+RankContacts::Ask RankContacts::ask_here(const Drivers& drivers) {
+  Ask mine{Requests(forced_ || rebuild_asked_ || !engine_) | Requests(stop_asked_) << 1, {}};
+  if (!(mine.requests & 1)) mine.margins = engine_->owned_margins(store_.view(), drivers, watched_);
+  return mine;
 }
 
 bool RankContacts::lists_stale(const Drivers& drivers) {
-  const Requests mine = requests_here(drivers);  // the store refreshed by exchange_ghosts
-  // One rank's moved body rebuilds every rank's lists; one rank's interrupt stops them all here.
-  const std::vector<std::uint64_t> any = link_.sum({mine & 1, mine >> 1});
-  stop_seen_ = any[1] > 0;
-  return any[0] > 0;
+  const Ask mine = ask_here(drivers);  // the store refreshed by exchange_ghosts
+  std::vector<char> bytes;
+  append_record(bytes, mine);
+  std::vector<Ask> asks;
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+    Ask theirs;
+    std::memcpy(&theirs, from.data(), sizeof theirs);
+    asks.push_back(theirs);
+  }
+  return decide(asks);
+}
+
+// One rank's request rebuilds every rank's lists, and so do two bodies anywhere that may have
+// closed their pair's skin (the pair rule over every rank's owned bodies: the same answer on
+// every rank, for any rank count); one rank's interrupt stops them all here.
+bool RankContacts::decide(const std::vector<Ask>& asks) {
+  Requests any = 0;
+  std::vector<PairMargins> margins;
+  for (const Ask& a : asks) {
+    any |= a.requests;
+    margins.push_back(a.margins);
+  }
+  stop_seen_ = (any >> 1) != 0;
+  return (any & 1) || pair_rule_exceeded(margins.data(), margins.size(), settings_.skin);
 }
 
 // Every rank holds every body and `whole`'s table (the start, a resume, after sync_bodies):
@@ -200,6 +220,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   engine_->record_contacts(whole.records_contacts() || stop_seen_);  // the run loop tells the whole engine
   const LocalBodies view = store_.view();
   if (stale) {
+    engine_->set_step(dt);  // each body's own skin lasts kSkinSteps steps (skin_max)
     engine_->rebuild(view, drivers);  // poses the bodies it pairs
     split_listed();
   }
@@ -263,19 +284,19 @@ void RankContacts::sums_taken() {
 // bytes are undefined until then; the thread link's test poisons them). Those poses are wasted
 // only where a rebuild follows (it poses its new lists); the ghosts are posed once landed.
 bool RankContacts::exchange_ghosts(const Drivers& drivers, double dt) {
-  const Requests mine = fold_ ? requests_here(drivers) : 0;  // the store measured, its ghosts a step old
+  const Ask mine = fold_ ? ask_here(drivers) : Ask{};  // the store measured, its ghosts a step old
   pack_parcels(mine);
   link_.post(out_, in_);
-  if (!(mine & 1)) engine_->pose_listed(store_.view(), owned_listed_);  // no rebuild asked here
+  if (!mine.rebuild_here()) engine_->pose_listed(store_.view(), owned_listed_);  // no rebuild asked here
   link_.finish(out_, in_);
   unpack_parcels(dt);
-  const bool stale = fold_ ? fold_requests(mine) : lists_stale(drivers);
+  const bool stale = fold_ ? fold_asks(mine) : lists_stale(drivers);
   if (!stale) engine_->pose_listed(store_.view(), ghost_listed_);
   return stale;
 }
 
-// Each owned body's motion into the parcels of the ranks that hold it, then (fold_) the requests.
-void RankContacts::pack_parcels(Requests mine) {
+// Each owned body's motion into the parcels of the ranks that hold it, then (fold_) the word.
+void RankContacts::pack_parcels(const Ask& mine) {
   const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
   for (std::size_t k = 0; k < out_.size(); ++k) {
     Parcel& p = out_[k];
@@ -293,18 +314,17 @@ void RankContacts::unpack_parcels(double dt) {
 
 // The step's decision where the ghost parcels carry it (fold_: every rank a neighbour of every
 // other), so a step meets the other ranks once: `mine`, measured on the store with its ghosts a
-// step old (they cannot exceed: their owners' measures answered for them then), and each landed
-// parcel's requests; the ghosts are measured again once landed.
-bool RankContacts::fold_requests(Requests mine) {
-  Requests any = mine;
+// step old (left out: their owners answer for them), and each landed parcel's word; the ghosts
+// are measured again once landed (the pair loop's skip test reads their bounds).
+bool RankContacts::fold_asks(const Ask& mine) {
+  std::vector<Ask> asks{mine};
   for (const Parcel& p : in_) {
-    Requests theirs = 0;
+    Ask theirs;
     std::memcpy(&theirs, p.bytes.data() + p.bytes.size() - sizeof theirs, sizeof theirs);
-    any |= theirs;
+    asks.push_back(theirs);
   }
   engine_->remeasure(store_.view(), ghost_local_);
-  stop_seen_ = (any >> 1) != 0;
-  return (any & 1) != 0;
+  return decide(asks);
 }
 
 // The lists' bodies by kind, for exchange_ghosts' two parts of the poses.
@@ -327,7 +347,7 @@ void RankContacts::size_parcels() {
   std::uint64_t links = 0;  // other ranks this one sends to and receives from
   for (int q = 0; q < link_.ranks(); ++q) links += !plan_.send[q].empty() && !plan_.receive[q].empty();
   fold_ = link_.ranks() > 1 && link_.sum({links}).at(0) == std::uint64_t(link_.ranks()) * (link_.ranks() - 1);
-  const std::size_t word = fold_ ? sizeof(Requests) : 0;  // bytes after the ghosts
+  const std::size_t word = fold_ ? sizeof(Ask) : 0;  // bytes after the ghosts
   const std::size_t body = motion_bytes(!settings_.spheres_only);
   for (int q = 0; q < link_.ranks(); ++q) {
     if (!plan_.send[q].empty()) {

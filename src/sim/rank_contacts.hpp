@@ -4,8 +4,9 @@
 // work, cut again at a rebuild that finds the load unbalanced: sim/domain_cut.hpp) and computes their pairs with ghosts within reach, in global id order, so each body's force
 // sum is the one of one process. Between rebuilds the ghosts' velocities (and orientations,
 // when bodies turn) come point to point from their owners (sim/ghost_plan.hpp), each rank
-// drifting its ghosts' positions as their owners do (sim/body_exchange.hpp), their parcels carrying each rank's rebuild and
-// stop requests when every rank is every other's neighbour (else one reduction a step decides); a gather shares the drivers' reactions (summed in the one-process
+// drifting its ghosts' positions as their owners do (sim/body_exchange.hpp), their parcels carrying each rank's word for the
+// step's decision (its requests and its owned bodies' pair-rule margins: one process's rebuild
+// steps) when every rank is every other's neighbour (else one gather a step decides); a gather shares the drivers' reactions (summed in the one-process
 // pair order) at the steps that read them; the contact count and the energy ledger's exact
 // sums are reduced only at output rows and when the ledger closes (sim/rank_energy.hpp). At a rebuild each rank sends the owned bodies that
 // change owner, with the histories of their pairs, to their new owners, then its owned bodies
@@ -182,10 +183,18 @@ class RankContacts {
 
  private:
   using Requests = std::uint64_t;  // bit 0: rebuild, bit 1: stop
-  Requests requests_here(const Drivers& drivers);
+  // A rank's word in the step's decision: its requests and its owned bodies' pair-rule margins
+  // (ContactEngine::owned_margins), which every rank joins alike (pair_rule_exceeded).
+  struct Ask {
+    Requests requests = 0;
+    PairMargins margins;
+    bool rebuild_here() const { return (requests & 1) || margins.alone; }
+  };
+  Ask ask_here(const Drivers& drivers);
   bool lists_stale(const Drivers& drivers);
   bool exchange_ghosts(const Drivers& drivers, double dt);
-  bool fold_requests(Requests mine);
+  bool fold_asks(const Ask& mine);
+  bool decide(const std::vector<Ask>& asks);
   void redistribute(Bodies& bodies, const ContactEngine& whole);
   void spread_landed();
   void migrate_bodies();
@@ -197,7 +206,7 @@ class RankContacts {
   void cut_from_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w);
   std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
-  void pack_parcels(Requests mine);
+  void pack_parcels(const Ask& mine);
   void unpack_parcels(double dt);
   void split_listed();
   ForceSums closing_sums();

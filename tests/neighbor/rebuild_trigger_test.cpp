@@ -273,5 +273,103 @@ TEST_CASE("per-body skins: each body watches its own half, a pair the mean of it
   CHECK(trigger.needs_rebuild(moved(0.0, 0.24), q0, radius, skin));
 }
 
+
+// A part's margins of the bodies `owner` gives it (the others its ghosts), from a trigger of its
+// own built at x0 (`skins` empty: the scene's skin each) and measured at x.
+PairMargins part_margins(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, const std::vector<double>& skins,
+                         const std::vector<int>& owner, int part, double skin, double shift, bool points = false) {
+  const std::vector<Quat> q(x0.size(), Quat::Identity());
+  RebuildTrigger t;
+  t.mark_built(x0, q, points);
+  if (!points) t.set_skins(skins);
+  t.needs_rebuild(x, q, std::vector<double>(x0.size(), 0.25), skin);  // the step's measure: bounds kept
+  std::vector<std::uint8_t> ghost(x0.size());
+  for (std::size_t i = 0; i < ghost.size(); ++i) ghost[i] = owner[i] != part;
+  return t.margins(x, skin, shift, ghost.data());
+}
+
+TEST_CASE("the pair rule over parts: bodies past skin/2 on two ranks keep the lists while no pair can close", "[rebuild]") {
+  const double skin = 0.125;  // m (binary fractions: the sums below are exact)
+  const std::vector<Vec3> x0{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};
+  const std::vector<int> owner{0, 1, 1};  // body 0 on rank 0; bodies 1, 2 on rank 1
+  const auto moved = [&](double d0, double d1, double d2) {  // m, along x
+    std::vector<Vec3> x = x0;
+    x[0].x() += d0, x[1].x() += d1, x[2].x() += d2;
+    return x;
+  };
+  const auto exceeded = [&](const std::vector<Vec3>& x, const std::vector<double>& skins, double shift = 0.0) {
+    const PairMargins parts[2] = {part_margins(x0, x, skins, owner, 0, skin, shift),
+                                  part_margins(x0, x, skins, owner, 1, skin, shift)};
+    const PairMargins swapped[2] = {parts[1], parts[0]};
+    const bool answer = pair_rule_exceeded(parts, 2, skin);
+    CHECK(pair_rule_exceeded(swapped, 2, skin) == answer);  // in any order
+    RebuildTrigger one;  // one process over all three bodies
+    const std::vector<Quat> q(3, Quat::Identity());
+    one.mark_built(x0, q);
+    one.set_skins(skins);
+    one.needs_rebuild(x, q, std::vector<double>(3, 0.25), skin);
+    CHECK(one.pair_exceeded(x, skin, shift) == answer);
+    return answer;
+  };
+  // Uniform skins: body 0 past skin/2 (a rank's old rule rebuilt), body 1 far under: d1 + d2 = 0.875 skin.
+  CHECK_FALSE(exceeded(moved(0.09375, 0.015625, 0.0), {}));
+  CHECK(exceeded(moved(0.09375, 0.046875, 0.0), {}));          // 1.125 skin over two ranks
+  CHECK(exceeded(moved(0.09375, 0.015625, 0.0), {}, 0.0625));  // d1 + the driver's shift
+  CHECK(exceeded(moved(0.0, 0.078125, 0.0625), {}));           // both on rank 1: 1.125 skin
+  // Per-body skins: body 0 fast at the build (4 skin), bodies 1 and 2 at the skin.
+  const std::vector<double> own{0.5, skin, skin};
+  CHECK_FALSE(exceeded(moved(0.1875, 0.09375, 0.0), own));  // margins -0.0625 + 0.03125: each past the scene's half
+  CHECK(exceeded(moved(0.25, 0.09375, 0.0), own));           // 0 + 0.03125
+  CHECK(exceeded(moved(0.0, 0.09375, 0.078125), own));       // 0.03125 + 0.015625, both on rank 1
+  // Rank 1 with no per-body skins (its bodies all at the skin) reads as margins d - skin/2.
+  const PairMargins mixed[2] = {part_margins(x0, moved(0.1875, 0.09375, 0.0), own, owner, 0, skin, 0.0),
+                                part_margins(x0, moved(0.1875, 0.09375, 0.0), {}, owner, 1, skin, 0.0)};
+  REQUIRE(mixed[1].uniform);
+  CHECK_FALSE(pair_rule_exceeded(mixed, 2, skin));
+  // A ghost is its owner's to measure: rank 0's copy of body 1, far off, does not count there.
+  std::vector<Vec3> far = moved(0.0, 10.0, 0.0);
+  CHECK_FALSE(part_margins(x0, far, {}, owner, 0, skin, 0.0).alone);
+  CHECK(part_margins(x0, far, {}, owner, 1, skin, 0.0).alone);
+  far[2].x() = std::nan("");
+  CHECK(part_margins(x0, far, {}, owner, 1, skin, 0.0).alone);
+}
+
+TEST_CASE("the pair rule over parts answers as one process over all bodies, any split, any order", "[rebuild]") {
+  const double skin = 0.125;  // m
+  std::mt19937_64 rng(20);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int yes = 0, no = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const std::size_t n = 2 + trial % 9;
+    const int parts = 1 + trial % 4;
+    const bool points = trial % 5 == 0, own_skins = !points && trial % 3 != 0;
+    std::vector<Vec3> x0(n), x(n);
+    std::vector<double> skins;
+    std::vector<int> owner(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      x0[i] = Vec3(double(i), 0.0, 0.0);
+      const double s = own_skins ? skin * (1.0 + 3.0 * unit(rng)) : skin;  // m
+      if (own_skins) skins.push_back(s);
+      x[i] = x0[i] + Vec3(0.0, 0.6 * s * unit(rng), 0.0);  // most bodies under their half, some past
+      owner[i] = int(rng() % parts);
+    }
+    const double shift = trial % 7 == 0 ? 0.3 * skin * unit(rng) : 0.0;  // m
+    std::vector<PairMargins> m;
+    for (int p = 0; p < parts; ++p) m.push_back(part_margins(x0, x, skins, owner, p, skin, shift, points));
+    std::shuffle(m.begin(), m.end(), rng);
+    const std::vector<Quat> q(n, Quat::Identity());
+    RebuildTrigger one;
+    one.mark_built(x0, q, points);
+    if (!points) one.set_skins(skins);
+    one.needs_rebuild(x, q, std::vector<double>(n, 0.25), skin);
+    const bool answer = one.pair_exceeded(x, skin, shift);
+    INFO("trial " << trial);
+    CHECK(pair_rule_exceeded(m.data(), m.size(), skin) == answer);
+    (answer ? yes : no) += 1;
+  }
+  CHECK(yes > 100);  // both answers met often
+  CHECK(no > 100);
+}
+
 }  // namespace
 }  // namespace polydem

@@ -20,7 +20,7 @@ ContactSettings pile_settings(const Scene& scene) {
   s.particle = prepare_law(scene.forces.contact.config);
   s.driver = prepare_law(scene.forces.contact.config_driver, &scene.forces.contact.config);
   s.skin = 0.0005;  // m
-  s.pair_trigger = false;  // as RankContacts: each part's bodies skin/2 apiece, ORed over the parts
+  s.pair_trigger = false;  // each part's bodies skin/2 apiece, ORed over the parts
   return s;
 }
 
