@@ -174,8 +174,10 @@ class RankContacts {
   // and (0, 97) 285.9e6 / 365.9e6 (read from the environment: a few e6 more), (500, 185)
   // 285.6e6 / 329.5e6; s32's fixed weights (a polyhedron 8, a candidate 1 a side) 315.7e6 / 405.2e6.
   static constexpr std::uint64_t kBodyStep = 500, kHalfCandidate = 185;
-  // The most loaded part over the mean past which a rebuild cuts again: a 5% wait at most.
-  static constexpr double kRecutImbalance = 1.05;
+  // Instructions a cut again costs the slower rank, a body of the scene (RecutRule): the gather and
+  // cut of a sample point (~500) and the movers' parcels and new searches (a 5% shift moves ~2.5%
+  // of the bodies at ~20,000 each); estimated from the pours' counted rebuilds.
+  static constexpr double kCutCost = 1000.0;
   // Points of the sample a cut is made from, over all ranks (32 bytes each: 4 MB to each
   // rank at most) and at least per rank.
   static constexpr std::size_t kCutSample = std::size_t(1) << 17, kCutSampleRank = 64;
@@ -211,7 +213,9 @@ class RankContacts {
   std::size_t n_bodies_;
   double halo_;  // m, ghosts: bodies within this distance of the box
   DomainCut cut_;  // the ranks' boxes, kept while balanced
+  RecutRule recut_;  // whether the kept cut's imbalance has cost more than a new cut
   std::size_t cuts_ = 0;
+  std::size_t steps_listed_ = 0;  // steps since the last rebuild (the same on every rank)
   double load_share_ = 0.0;
   GhostPlan plan_;
   std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)

@@ -42,12 +42,13 @@ std::vector<double> RankContacts::summed_loads(const std::vector<std::uint32_t>&
   return std::vector<double>(all.begin(), all.end());
 }
 
-// Keeps the cut while its most loaded part stays within kRecutImbalance of the mean (fewer
-// bodies change owner); past it, cuts again from a sample of the owned bodies (cut_sample).
+// Keeps the cut until its imbalance over the steps since the last cut has cost more than a new
+// cut (recut_: the loads and steps are the same on every rank, so is the decision); then cuts
+// again from a sample of the owned bodies (cut_sample).
 void RankContacts::recut_if_unbalanced(const std::vector<std::uint32_t>& rows) {
   const std::vector<std::uint64_t> w = owned_weights(rows);
   std::vector<double> loads = summed_loads(rows, w);
-  if (imbalance(loads) > kRecutImbalance) {
+  if (recut_.pays(loads, steps_listed_, kCutCost * double(n_bodies_))) {
     cut_from_sample(rows, w);
     loads = summed_loads(rows, w);
   }
@@ -66,6 +67,7 @@ void RankContacts::cut_from_sample(const std::vector<std::uint32_t>& rows, const
     }
   }
   cut_ = cut_domain(x, weight, link_.ranks());
+  recut_.cut();
   ++cuts_;
 }
 
