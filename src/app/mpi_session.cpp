@@ -27,16 +27,17 @@ double thread_cpu_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// Adds its scope's wall and CPU seconds to one kind of `times`, when `times` is given.
+// Adds its scope's wall seconds to one kind of `times` (the cut in time reads them: RankContacts::
+// time_by_clock), and its CPU seconds when `cpu` (POLYDEM_MPI_TIMES: a system call each).
 class TimedCall {
  public:
-  TimedCall(LinkTimes* times, LinkTimes::Kind kind) : times_(times), kind_(kind) {
-    if (times_) wall_ = std::chrono::steady_clock::now(), cpu_ = thread_cpu_seconds();
+  TimedCall(LinkTimes* times, LinkTimes::Kind kind, bool cpu) : times_(times), kind_(kind), timed_cpu_(cpu) {
+    wall_ = std::chrono::steady_clock::now();
+    if (timed_cpu_) cpu_ = thread_cpu_seconds();
   }
   ~TimedCall() {
-    if (!times_) return;
     times_->wall[kind_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count();
-    times_->cpu[kind_] += thread_cpu_seconds() - cpu_;
+    if (timed_cpu_) times_->cpu[kind_] += thread_cpu_seconds() - cpu_;
   }
   TimedCall(const TimedCall&) = delete;
   TimedCall& operator=(const TimedCall&) = delete;
@@ -44,6 +45,7 @@ class TimedCall {
  private:
   LinkTimes* times_;
   LinkTimes::Kind kind_;
+  bool timed_cpu_;
   std::chrono::steady_clock::time_point wall_;
   double cpu_ = 0.0;  // s
 };
@@ -95,7 +97,7 @@ class MpiLink final : public RankLink {
 
  private:
   static constexpr int kEveryRank = -1;
-  TimedCall timer(LinkTimes::Kind kind) const { return TimedCall(timed_ ? &times_ : nullptr, kind); }
+  TimedCall timer(LinkTimes::Kind kind) const { return TimedCall(&times_, kind, timed_); }
   // A collective of `n` values each way (the bytes in: what a reduction or a transpose brings).
   void count_collective(std::size_t n) const {
     ++counts_.collectives;

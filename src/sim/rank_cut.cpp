@@ -2,6 +2,8 @@
 // the ranks (a value per rank), and a cut again from a sample of the owned bodies' centres
 // when they are unbalanced. The cut decides only who computes what: never the bits.
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 
 #include "sim/rank_contacts.hpp"
 
@@ -46,7 +48,9 @@ std::vector<double> RankContacts::summed_loads(const std::vector<std::uint32_t>&
 // cut (recut_: the loads and steps are the same on every rank, so is the decision); then cuts
 // again from a sample of the owned bodies (cut_sample).
 void RankContacts::recut_if_unbalanced(const std::vector<std::uint32_t>& rows) {
-  const std::vector<std::uint64_t> w = owned_weights(rows);
+  std::vector<std::uint64_t> w = owned_weights(rows);
+  scale_ = measure_time(w);
+  for (std::uint64_t& x : w) x = x * scale_ / kScaleOne;
   std::vector<double> loads = summed_loads(rows, w);
   if (recut_.pays(loads, steps_listed_, kCutCost * double(n_bodies_))) {
     cut_from_sample(rows, w);
@@ -95,6 +99,41 @@ void RankContacts::set_load_share(const std::vector<double>& loads) {
   double total = 0.0;
   for (double l : loads) total += l;
   load_share_ = total > 0.0 ? loads[link_.rank()] / total : 0.0;
+}
+
+// The interval since the last rebuild: this rank's seconds over the instructions its bodies'
+// counted weights `w` (the interval's owned bodies) gave, smoothed; returns this rank's scale
+// (kScaleOne: no time on some rank yet). The ranks' mean is summed in fixed point
+// (attoseconds an instruction: exact), one reduction, only where a clock is set (time_by:
+// the same on every rank).
+std::uint64_t RankContacts::measure_time(const std::vector<std::uint64_t>& w) {
+  if (!busy_) return kScaleOne;
+  std::uint64_t step = 0;  // instructions a step
+  for (std::uint64_t x : w) step += x;
+  const double counted = double(step) * double(steps_listed_);
+  counted_done_ += counted;
+  const double now = busy_();  // s
+  if (busy_mark_ >= 0.0 && counted > 0.0 && now > busy_mark_) {
+    const double unit = (now - busy_mark_) / counted;  // s an instruction
+    unit_ = unit_ > 0.0 ? unit_ + kTimeSmoothing * (unit - unit_) : unit;
+  }
+  busy_mark_ = now;
+  const auto mine = std::uint64_t(std::llround(unit_ * 1e18));
+  const std::vector<std::uint64_t> all = link_.sum({mine, std::uint64_t(mine > 0)});
+  if (mine == 0 || all[1] < std::uint64_t(link_.ranks())) return kScaleOne;
+  const double mean = double(all[0]) / double(link_.ranks());
+  const auto scale = std::uint64_t(std::llround(double(kScaleOne) * double(mine) / mean));
+  return std::clamp(scale, kScaleOne / 4, kScaleOne * 4);
+}
+
+void RankContacts::time_by_clock() {
+  const auto start = std::chrono::steady_clock::now();
+  time_by([this, start] {
+    const LinkTimes t = link_.times();
+    double waited = 0.0;  // s
+    for (double s : t.wall) waited += s;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - waited;
+  });
 }
 
 }  // namespace polydem
