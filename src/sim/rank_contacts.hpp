@@ -170,7 +170,7 @@ class RankContacts {
   // their counted weights times that over the ranks' mean (time_scale, integers), so the next cut
   // balances time. The cut never changes a value: the bits hold. Unset: counted weights alone.
   void time_by(std::function<double()> busy) { busy_ = std::move(busy); }
-  // The same from the steady clock less the link's waits (RankLink::times: ghost waits, sums, gathers).
+  // The same from the process's CPU clock less the link's (RankLink::times: ghost waits, sums, gathers).
   void time_by_clock();
   double counted_done() const { return counted_done_; }  // instructions counted since time_by, read before busy
   double time_scale() const { return double(scale_) / double(kScaleOne); }  // at the last rebuild (1: none yet)

@@ -2,8 +2,8 @@
 // the ranks (a value per rank), and a cut again from a sample of the owned bodies' centres
 // when they are unbalanced. The cut decides only who computes what: never the bits.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <ctime>
 
 #include "sim/rank_contacts.hpp"
 
@@ -126,13 +126,17 @@ std::uint64_t RankContacts::measure_time(const std::vector<std::uint64_t>& w) {
   return std::clamp(scale, kScaleOne / 4, kScaleOne * 4);
 }
 
+// The process's CPU seconds less those inside the link's calls (a waiting rank polls): the wall
+// clock less the waits counted the seconds a loaded machine gave other processes too (at load
+// 12 on 2 cores, 80 cuts in 283 rebuilds of the box-fill pour at -np 2, against 10 counted).
 void RankContacts::time_by_clock() {
-  const auto start = std::chrono::steady_clock::now();
-  time_by([this, start] {
+  time_by([this] {
     const LinkTimes t = link_.times();
     double waited = 0.0;  // s
-    for (double s : t.wall) waited += s;
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - waited;
+    for (double s : t.cpu) waited += s;
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec) - waited;
   });
 }
 
