@@ -253,7 +253,7 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
                  sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), team, team > 1 ? "s" : "",
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "",
                  team > 1 ? wait_note().c_str() : "", o.out_dir.c_str());
-  if (RankContacts* r = sim.rank_contacts(); r && !std::getenv("POLYDEM_CUT_COUNTED")) r->time_by_clock();  // README: the cut in time
+  if (RankContacts* r = sim.rank_contacts(); r && std::getenv("POLYDEM_CUT_TIMED")) r->time_by_clock();  // README: the cut in time
   const std::clock_t cpu_start = std::clock();
   const RunSummary s = run_simulation(sim, o);
   const double loop_cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;  // s, every thread of the process

@@ -34,9 +34,8 @@ echo "ok: pour: skin_max gives the plain run's bits, alone and at -np 2"
 # come point to point from the boxes near its own; the cut by measured work keeps each rank's
 # share of the weight near a third, cut again only at some rebuilds; a rebuild sends the movers
 # and the ghosts point to point, no rank gathers the state of all 100 bodies (224 bytes each)
-# nor keeps it after its first cut (POLYDEM_MPI_COUNTS: three lines per rank). The counted weights
-# alone (POLYDEM_CUT_COUNTED): a third of them, not of a loaded machine's clock.
-POLYDEM_CUT_COUNTED=1 POLYDEM_MPI_COUNTS=1 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/counted" --threads 1 > /dev/null 2> "$tmp/counts" ||
+# nor keeps it after its first cut (POLYDEM_MPI_COUNTS: three lines per rank).
+POLYDEM_MPI_COUNTS=1 mpi 3 run "$here/mpi_pour.yaml" --out "$tmp/counted" --threads 1 > /dev/null 2> "$tmp/counts" ||
   fail "counted pour at -np 3"
 same_outputs "$tmp/pour" "$tmp/counted" "$here/mpi_pour.yaml"
 /usr/bin/python3 - "$tmp/counts" <<'PY'
