@@ -204,9 +204,10 @@ void print_link_counts(const Simulation& sim, const RankLink& link, std::int64_t
                double(c.collectives) / n, double(c.collective_bytes) / n, double(c.collective_bytes_in) / n);
   if (const RankContacts* r = sim.rank_contacts()) {
     std::fprintf(stderr, "polydem: rank %d of %d: last lists: %zu pairs, %zu candidate feature pairs; %.1f%% of the "
-                 "weight; %zu cuts in %zu rebuilds; the scene's arrays hold %.0f bytes a body\n", link.rank(),
-                 link.ranks(), r->pairs(), r->candidates(), 100.0 * r->load_share(), r->cuts(), r->rebuilds(),
-                 double(sim.bodies.held_bytes()) / double(std::max<std::size_t>(1, sim.bodies.size())));
+                 "weight; %zu cuts in %zu rebuilds; the scene's arrays hold %.0f bytes a body; its weights x %.3f (the cut "
+                 "in time)\n", link.rank(), link.ranks(), r->pairs(), r->candidates(), 100.0 * r->load_share(),
+                 r->cuts(), r->rebuilds(), double(sim.bodies.held_bytes()) / double(std::max<std::size_t>(1, sim.bodies.size())),
+                 r->time_scale());
     const LinkCounts& b = r->rebuild_traffic();  // the share of the totals above spent at rebuilds
     const double k = double(std::max<std::size_t>(1, r->rebuilds()));
     std::fprintf(stderr, "polydem: rank %d of %d: per rebuild: %.3g point-to-point messages, %.4g bytes; %.3g "
@@ -252,6 +253,7 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
                  sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), team, team > 1 ? "s" : "",
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "",
                  team > 1 ? wait_note().c_str() : "", o.out_dir.c_str());
+  if (RankContacts* r = sim.rank_contacts(); r && std::getenv("POLYDEM_CUT_TIMED")) r->time_by_clock();  // README: the cut in time
   const std::clock_t cpu_start = std::clock();
   const RunSummary s = run_simulation(sim, o);
   const double loop_cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;  // s, every thread of the process

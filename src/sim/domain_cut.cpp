@@ -106,6 +106,13 @@ double imbalance(const std::vector<double>& loads) {
   return total > 0.0 ? most * double(loads.size()) / total : 1.0;
 }
 
+bool RecutRule::pays(const std::vector<double>& loads, std::size_t steps, double cost) {
+  double total = 0.0, most = 0.0;
+  for (double l : loads) total += l, most = std::max(most, l);
+  lost += (most - total / double(std::max<std::size_t>(loads.size(), 1))) * double(steps);
+  return imbalance(loads) > floor && lost > cost;
+}
+
 // A part in a million over the reach: the box distance and the pair test round differently.
 double ghost_halo(double max_bounding_radius, double range) { return (2.0 * max_bounding_radius + range) * (1.0 + 1e-6); }
 

@@ -44,6 +44,19 @@ std::vector<double> part_loads(const DomainCut& cut, const std::vector<Vec3>& x,
 // The largest load over the mean (1: balanced; a rank's step waits for the most loaded).
 double imbalance(const std::vector<double>& loads);
 
+// When to cut again (ski rental): while a cut is kept, every step waits for its most loaded part's
+// excess over the mean (instructions); a new cut costs about `cost` instructions (the sample
+// gathered and cut, the movers sent and their pairs searched again). Cutting once the loss since
+// the last cut passes the cost loses at most twice what the best schedule of cuts would, so a
+// noisy load cuts again only when its imbalance lasts. `floor`: no cut at or below this imbalance.
+struct RecutRule {
+  double floor = 1.05;
+  double lost = 0.0;  // instructions lost to the imbalance since the last cut
+  // Adds `steps` steps at `loads` (the parts' loads, instructions a step); true when a new cut pays.
+  bool pays(const std::vector<double>& loads, std::size_t steps, double cost);
+  void cut() { lost = 0.0; }
+};
+
 // m, the halo that holds every partner of an owned body: a pair is listed when its centres
 // are closer than R_i + R_j + range, R the bounding radii, range the skin and cohesion band.
 double ghost_halo(double max_bounding_radius, double range);

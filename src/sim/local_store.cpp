@@ -39,6 +39,23 @@ T blank() {
   else return T{};
 }
 
+// Where each row of two increasing id sequences goes in their merge: a[k] for the first's k-th
+// (its id id_a(k)), b[k] for the second's.
+struct MergedRows {
+  std::vector<std::uint32_t> a, b;
+};
+
+template <class IdA>
+MergedRows merged_rows(std::size_t n_a, IdA id_a, const std::vector<std::uint32_t>& ids_b) {
+  MergedRows to{std::vector<std::uint32_t>(n_a), std::vector<std::uint32_t>(ids_b.size())};
+  std::size_t i = 0, j = 0;
+  while (i < n_a || j < ids_b.size()) {
+    if (j == ids_b.size() || (i < n_a && id_a(i) < ids_b[j])) to.a[i] = std::uint32_t(i + j), ++i;
+    else to.b[j] = std::uint32_t(i + j), ++j;
+  }
+  return to;
+}
+
 }  // namespace
 
 void LocalStore::select(const Bodies& all, std::vector<std::uint32_t> ids, std::vector<std::uint8_t> is_ghost) {
@@ -65,6 +82,34 @@ void LocalStore::append(const LocalStore& from, const std::vector<std::uint32_t>
     const std::size_t first = to.size();
     to.resize(first + rows.size());
     for (std::size_t k = 0; k < rows.size(); ++k) to[first + k] = at[rows[k]];
+  });
+}
+
+void LocalStore::merge_of(const LocalStore& from, const std::vector<std::uint32_t>& rows, const LocalStore& add,
+                          std::size_t spare) {
+  const MergedRows to = merged_rows(rows.size(), [&](std::size_t k) { return from.global_id[rows[k]]; }, add.global_id);
+  const std::size_t n = rows.size() + add.size();
+  with_arrays(from, [&](auto& v, const auto& at) {
+    v.clear();
+    v.reserve(n + spare);
+    v.resize(n);
+    for (std::size_t k = 0; k < rows.size(); ++k) v[to.a[k]] = at[rows[k]];
+  });
+  with_arrays(add, [&](auto& v, const auto& at) {
+    for (std::size_t k = 0; k < at.size(); ++k) v[to.b[k]] = at[k];
+  });
+}
+
+void LocalStore::merge_in(const LocalStore& add) {
+  const std::size_t held = size();
+  const MergedRows to = merged_rows(held, [&](std::size_t k) { return global_id[k]; }, add.global_id);
+  with_arrays(add, [&](auto& v, const auto& at) {
+    v.resize(held + at.size());
+    std::size_t i = held, k = v.size();  // the next row held to move; one past the next row to write
+    for (std::size_t g = at.size(); g-- > 0;) {
+      while (k > to.b[g] + 1) v[--k] = v[--i];
+      v[--k] = at[g];
+    }
   });
 }
 

@@ -41,6 +41,14 @@ struct LocalStore {
   // (every field), then all put in increasing global id.
   void append(const LocalStore& from, const std::vector<std::uint32_t>& rows);
   void sort_by_id();
+  // A rebuild's store, each field written once: the rows `rows` of `from` (a rank's kept bodies)
+  // merged with every row of `add` (the movers landed), both in increasing id, with room for
+  // `spare` more rows (the ghosts merge_in lands next: no reallocation).
+  void merge_of(const LocalStore& from, const std::vector<std::uint32_t>& rows, const LocalStore& add,
+                std::size_t spare);
+  // Every row of `add` (increasing id, none held here) merged in place from the back: a row moves
+  // at most once, the rows below `add`'s least id not at all.
+  void merge_in(const LocalStore& add);
   void resize(std::size_t n);
   std::size_t size() const { return global_id.size(); }
   // The owned bodies' integration state into `all` at their global ids (a gather:

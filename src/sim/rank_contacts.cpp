@@ -95,6 +95,7 @@ void RankContacts::redistribute(Bodies& bodies, const ContactEngine& whole) {
   for (std::size_t b = 0; b < bodies.size(); ++b)  // every rank sees the same state: all throw
     if (!bodies.position[b].allFinite()) throw non_finite_position(b);
   cut_ = cut_domain(bodies.position, std::vector<double>(bodies.size(), 1.0), link_.ranks());
+  recut_.cut();
   ++cuts_;
   set_load_share(part_loads(cut_, bodies.position, std::vector<double>(bodies.size(), 1.0)));
   plan_ = plan_ghosts(cut_, link_.rank(), bodies.position, halo_);
@@ -197,6 +198,7 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {
+  ++steps_listed_;
   const bool stale = !forced_ && engine_ ? exchange_ghosts(drivers, dt) : lists_stale(drivers);
   watched_ = false;  // the next step's pass tells again
   if (stale) {
@@ -214,6 +216,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
       migrate_bodies();
     }
     forced_ = rebuild_asked_ = false;
+    steps_listed_ = 0;
     ++rebuilds_;
     add_traffic(rebuild_traffic_, before, link_.counts());
   }

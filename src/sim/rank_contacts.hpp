@@ -17,6 +17,7 @@
 // gather writes it (sync_bodies: the start and a one-file resume; rank 0 at output with probes or
 // fluid); a resume of pieces lands each rank's share in its store (land, sim/rank_landing.hpp).
 // Drag and fluid forces act on each rank's owned bodies in its store (add_external).
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -164,6 +165,16 @@ class RankContacts {
   std::size_t cuts() const { return cuts_; }          // rebuilds that cut the domain again
   double load_share() const { return load_share_; }   // this rank's share of the weight at the last rebuild
   const LinkCounts& rebuild_traffic() const { return rebuild_traffic_; }  // what the rebuilds sent, all told
+  // The cut in time: from the next rebuild on, each rank's busy seconds between two rebuilds
+  // (`busy`: seconds since some start, read at rebuilds) over the instructions its bodies' weights
+  // counted then give its seconds an instruction (smoothed: kTimeSmoothing); its bodies weigh
+  // their counted weights times that over the ranks' mean (time_scale, integers), so the next cut
+  // balances time. The cut never changes a value: the bits hold. Unset: counted weights alone.
+  void time_by(std::function<double()> busy) { busy_ = std::move(busy); }
+  // The same from the process's CPU clock less the link's (RankLink::times: ghost waits, sums, gathers).
+  void time_by_clock();
+  double counted_done() const { return counted_done_; }  // instructions counted since time_by, read before busy
+  double time_scale() const { return double(scale_) / double(kScaleOne); }  // at the last rebuild (1: none yet)
   // This rank's lists: pairs with an owned body and their candidate feature pairs.
   std::size_t pairs() const;
   std::size_t candidates() const;
@@ -175,8 +186,14 @@ class RankContacts {
   // and (0, 97) 285.9e6 / 365.9e6 (read from the environment: a few e6 more), (500, 185)
   // 285.6e6 / 329.5e6; s32's fixed weights (a polyhedron 8, a candidate 1 a side) 315.7e6 / 405.2e6.
   static constexpr std::uint64_t kBodyStep = 500, kHalfCandidate = 185;
-  // The most loaded part over the mean past which a rebuild cuts again: a 5% wait at most.
-  static constexpr double kRecutImbalance = 1.05;
+  // Instructions a cut again costs the slower rank, a body of the scene (RecutRule): the gather and
+  // cut of a sample point (~500) and the movers' parcels and new searches (a 5% shift moves ~2.5%
+  // of the bodies at ~20,000 each); estimated from the pours' counted rebuilds.
+  static constexpr double kCutCost = 1000.0;
+  // Each interval's share in the smoothed seconds an instruction (the clock is noisy), and the
+  // weights' scale in fixed point: 1 is kScaleOne, kept within 1/4 and 4.
+  static constexpr double kTimeSmoothing = 0.25;
+  static constexpr std::uint64_t kScaleOne = 1024;
   // Points of the sample a cut is made from, over all ranks (32 bytes each: 4 MB to each
   // rank at most) and at least per rank.
   static constexpr std::size_t kCutSample = std::size_t(1) << 17, kCutSampleRank = 64;
@@ -206,6 +223,7 @@ class RankContacts {
   void cut_from_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w);
   std::vector<char> cut_sample(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void set_load_share(const std::vector<double>& loads);
+  std::uint64_t measure_time(const std::vector<std::uint64_t>& w);
   void pack_parcels(const Ask& mine);
   void unpack_parcels(double dt);
   void split_listed();
@@ -220,7 +238,14 @@ class RankContacts {
   std::size_t n_bodies_;
   double halo_;  // m, ghosts: bodies within this distance of the box
   DomainCut cut_;  // the ranks' boxes, kept while balanced
+  RecutRule recut_;  // whether the kept cut's imbalance has cost more than a new cut
   std::size_t cuts_ = 0;
+  std::size_t steps_listed_ = 0;  // steps since the last rebuild (the same on every rank)
+  std::function<double()> busy_;  // s, time_by; empty: counted weights alone
+  double busy_mark_ = -1.0;       // s, busy_ at the last rebuild (< 0: none)
+  double counted_done_ = 0.0;     // instructions counted over the measured intervals
+  double unit_ = 0.0;             // s an instruction, smoothed (0: none yet)
+  std::uint64_t scale_ = kScaleOne;  // this rank's weights' factor at the last rebuild
   double load_share_ = 0.0;
   GhostPlan plan_;
   std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)

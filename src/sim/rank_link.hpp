@@ -27,8 +27,9 @@ struct LinkCounts {
   std::uint64_t collective_bytes_in = 0;                // the other ranks' bytes they brought to this rank
 };
 
-// Seconds a rank spent inside MPI calls since the start, by kind (POLYDEM_MPI_TIMES set, else
-// zeros): timed, to split a step's clock into work and waiting (README, MPI section).
+// Seconds a rank spent inside MPI calls since the start, by kind: timed, to split a step's clock
+// into work and waiting (POLYDEM_MPI_TIMES prints them: README, MPI section), and the CPU seconds
+// for a rank's busy seconds (the cut in time: RankContacts::time_by_clock).
 struct LinkTimes {
   enum Kind { kExchange, kReduction, kGather, kKinds };  // ghost waits; sums (the step's decision); gathers, transposes
   double wall[kKinds] = {}, cpu[kKinds] = {};  // s elapsed, s of this thread's CPU (a waiting rank polls)

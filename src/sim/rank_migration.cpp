@@ -57,16 +57,18 @@ Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& s
     append_section(p.bytes, driver_to[q]);
     parcels.push_back(std::move(p));
   }
-  Handover out;
-  out.owned.append(store, kept);
+  LocalStore landed;  // the movers that come, few: then merged with the kept rows, each field written once
   std::vector<TableSlot> body_slots = std::move(body_to[me]), driver_slots = std::move(driver_to[me]);
   for (const Parcel& p : link.deliver(std::move(parcels))) {
     std::size_t at = 0;
-    unpack_movers(read_section<char>(p.bytes, at), out.owned);
+    unpack_movers(read_section<char>(p.bytes, at), landed);
     for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) body_slots.push_back(t);
     for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) driver_slots.push_back(t);
   }
-  out.owned.sort_by_id();
+  landed.sort_by_id();
+  const auto ghosts = std::size_t(std::count(store.ghost.begin(), store.ghost.end(), std::uint8_t(1)));
+  Handover out;
+  out.owned.merge_of(store, kept, landed, ghosts + ghosts / 8 + 16);  // room for about as many ghosts as before
   out.body_table = table_of(std::move(body_slots));  // each pair's slots from one rank: the old owner of i
   out.driver_table = table_of(std::move(driver_slots));
   return out;
@@ -94,12 +96,14 @@ GhostPlan share_ghosts(const RankLink& link, const DomainCut& cut, double halo, 
     append_bytes(p.bytes, pack_ghosts(store, rows[q]));
     parcels.push_back(std::move(p));
   }
+  LocalStore ghosts;  // then merged into the owned rows in place
   for (const Parcel& p : link.deliver(std::move(parcels))) {
     std::size_t at = 0;
     plan.receive[p.rank] = read_section<std::uint32_t>(p.bytes, at);
-    unpack_ghosts(read_section<char>(p.bytes, at), plan.receive[p.rank], store);
+    unpack_ghosts(read_section<char>(p.bytes, at), plan.receive[p.rank], ghosts);
   }
-  store.sort_by_id();
+  ghosts.sort_by_id();
+  store.merge_in(ghosts);
   plan.local = store.global_id;
   plan.ghost = store.ghost;
   return plan;

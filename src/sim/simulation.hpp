@@ -130,6 +130,7 @@ class Simulation {
   std::size_t owned_bodies() const { return ranks_ ? ranks_->owned() : bodies.size(); }
   std::size_t ghost_bodies() const { return ranks_ ? ranks_->ghosts() : 0; }
   const RankContacts* rank_contacts() const { return ranks_.get(); }  // null: one process
+  RankContacts* rank_contacts() { return ranks_.get(); }
   const RankLink* link() const { return ranks_ ? link_ : nullptr; }  // null: one process
   // Distributed runs: the next step's driver reactions are read (output after it); a moving
   // driver's are read every step (servo, driver work), a fixed one's only then.

@@ -75,3 +75,18 @@ TEST_CASE("imbalance is the largest load over the mean") {
   CHECK(imbalance({2.0, 2.0, 2.0}) == 1.0);
   CHECK(imbalance({0.0, 0.0}) == 1.0);
 }
+
+TEST_CASE("A kept cut is cut again once its imbalance has cost more than a cut, never within the floor") {
+  RecutRule rule;  // floor 1.05
+  const std::vector<double> loads{110.0, 90.0};  // a step: the run waits 10 for the most loaded part
+  CHECK_FALSE(rule.pays(loads, 10, 250.0));      // lost 100
+  CHECK_FALSE(rule.pays(loads, 10, 250.0));      // 200
+  CHECK(rule.pays(loads, 10, 250.0));            // 300: past the cost
+  rule.cut();
+  CHECK_FALSE(rule.pays(loads, 20, 250.0));      // from zero again: 200
+  CHECK(rule.pays({140.0, 60.0}, 2, 250.0));     // 200 + 2 x 40: a larger wait pays sooner
+  RecutRule fine;
+  for (int k = 0; k < 100; ++k) CHECK_FALSE(fine.pays({102.0, 98.0}, 1000, 250.0));  // 1.02: within the floor
+  CHECK(fine.lost == 2000.0 * 100);  // lost all the same: a cut once past the floor
+  CHECK(fine.pays({106.0, 94.0}, 1, 250.0));
+}

@@ -225,3 +225,27 @@ TEST_CASE("id_order merges a few increasing runs and sorts many, as a sort of th
     CHECK(id_order(ids) == want);
   }
 }
+
+TEST_CASE("A rebuild's store merges its kept rows with the movers, then the ghosts in place, bit for bit") {
+  const LocalStore from = twelve_owned();
+  LocalStore want;
+  want.append(from, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
+  LocalStore movers, ghosts;
+  movers.append(from, {1, 4, 11});
+  ghosts.append(from, {0, 5, 6, 10});
+  LocalStore store;
+  store.merge_of(from, {2, 3, 7, 8, 9}, movers, ghosts.size());
+  CHECK(store.global_id == std::vector<std::uint32_t>{1, 2, 3, 4, 7, 8, 9, 11});
+  const Vec3* held = store.position.data();
+  store.merge_in(ghosts);
+  check_bit_equal(store, want);
+  CHECK(store.position.data() == held);  // within the room kept: no reallocation
+  LocalStore none;
+  store.merge_in(none);  // nothing lands: nothing moves
+  check_bit_equal(store, want);
+  LocalStore first;
+  first.merge_of(from, {}, movers, 0);  // no kept row: the movers alone
+  LocalStore only;
+  only.append(from, {1, 4, 11});
+  check_bit_equal(first, only);
+}

@@ -215,3 +215,38 @@ TEST_CASE("Driver reactions from ranks' sorted runs are summed in one process's 
   add_reactions(sorted, drivers);
   CHECK(same_bits(std::vector<Vec3>{drivers[0].force}, std::vector<Vec3>{expect[0].force}));
 }
+
+TEST_CASE("The cut in time moves bodies to the rank whose instructions take fewer seconds, the bits kept") {
+  const Pile p;
+  const int kSteps = steps_to_contacts(p, 150, 300);
+  const Outcome one = run(p, kSteps, nullptr);
+  // Each rank's busy seconds as its counted instructions times `rate` (s an instruction), injected.
+  const auto timed = [&](double slow_rate) {
+    ThreadRanks all(2);
+    std::vector<Outcome> got(2);
+    std::vector<double> scale(2);
+    std::vector<std::thread> ranks;
+    for (int r = 0; r < 2; ++r)
+      ranks.emplace_back([&, r] {
+        const ThreadLink link(all, r);
+        Simulation sim(p.scene, p.lib, p.specs, &link);
+        RankContacts& mine = *sim.rank_contacts();
+        const double rate = r == 1 ? slow_rate : 1e-9;
+        mine.time_by([&mine, rate] { return rate * mine.counted_done(); });
+        for (int s = 0; s < kSteps; ++s) sim.step();
+        scale[r] = mine.time_scale();
+        got[r] = outcome(sim);
+      });
+    for (std::thread& t : ranks) t.join();
+    CHECK_FALSE(all.mismatch);
+    for (const Outcome& o : got) require_same(one, o);  // the cut decides who computes, never a value
+    return std::pair{got, scale};
+  };
+  const auto [even, even_scale] = timed(1e-9);
+  const auto [slow, slow_scale] = timed(3e-9);
+  CHECK(even_scale == std::vector<double>{1.0, 1.0});
+  CHECK(slow_scale == std::vector<double>{0.5, 1.5});  // each rank's rate over the mean, 2e-9
+  CHECK(slow[1].owned < even[1].owned);  // the slow rank's share moved to the other
+  CHECK(slow[0].owned > even[0].owned);
+  CHECK(slow[1].cuts > 1);
+}
