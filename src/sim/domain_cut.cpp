@@ -102,13 +102,19 @@ std::vector<double> part_loads(const DomainCut& cut, const std::vector<Vec3>& x,
 
 double imbalance(const std::vector<double>& loads) {
   double total = 0.0, most = 0.0;
-  for (double l : loads) total += l, most = std::max(most, l);
+  for (double l : loads) {
+    total += l;
+    most = std::max(most, l);
+  }
   return total > 0.0 ? most * double(loads.size()) / total : 1.0;
 }
 
 bool RecutRule::pays(const std::vector<double>& loads, std::size_t steps, double cost) {
   double total = 0.0, most = 0.0;
-  for (double l : loads) total += l, most = std::max(most, l);
+  for (double l : loads) {
+    total += l;
+    most = std::max(most, l);
+  }
   lost += (most - total / double(std::max<std::size_t>(loads.size(), 1))) * double(steps);
   return imbalance(loads) > floor && lost > cost;
 }

@@ -50,8 +50,13 @@ MergedRows merged_rows(std::size_t n_a, IdA id_a, const std::vector<std::uint32_
   MergedRows to{std::vector<std::uint32_t>(n_a), std::vector<std::uint32_t>(ids_b.size())};
   std::size_t i = 0, j = 0;
   while (i < n_a || j < ids_b.size()) {
-    if (j == ids_b.size() || (i < n_a && id_a(i) < ids_b[j])) to.a[i] = std::uint32_t(i + j), ++i;
-    else to.b[j] = std::uint32_t(i + j), ++j;
+    if (j == ids_b.size() || (i < n_a && id_a(i) < ids_b[j])) {
+      to.a[i] = std::uint32_t(i + j);
+      ++i;
+    } else {
+      to.b[j] = std::uint32_t(i + j);
+      ++j;
+    }
   }
   return to;
 }
