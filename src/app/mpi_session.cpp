@@ -27,15 +27,16 @@ double thread_cpu_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// Adds its scope's wall and CPU seconds to one kind of `times` (the cut in time reads the CPU
-// seconds: RankContacts::time_by_clock).
+// Adds its scope's wall and CPU seconds to one kind of `times`, when `times` is given.
 class TimedCall {
  public:
   TimedCall(LinkTimes* times, LinkTimes::Kind kind) : times_(times), kind_(kind) {
+    if (!times_) return;
     wall_ = std::chrono::steady_clock::now();
     cpu_ = thread_cpu_seconds();
   }
   ~TimedCall() {
+    if (!times_) return;
     times_->wall[kind_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count();
     times_->cpu[kind_] += thread_cpu_seconds() - cpu_;
   }
@@ -51,7 +52,9 @@ class TimedCall {
 
 class MpiLink final : public RankLink {
  public:
-  MpiLink(int rank, int ranks) : rank_(rank), ranks_(ranks) {}
+  // Timed where read: POLYDEM_MPI_TIMES prints the times, the cut in time (POLYDEM_CUT_TIMED) reads the CPU seconds.
+  MpiLink(int rank, int ranks)
+      : rank_(rank), ranks_(ranks), timed_(std::getenv("POLYDEM_MPI_TIMES") || std::getenv("POLYDEM_CUT_TIMED")) {}
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const override {
@@ -96,7 +99,7 @@ class MpiLink final : public RankLink {
 
  private:
   static constexpr int kEveryRank = -1;
-  TimedCall timer(LinkTimes::Kind kind) const { return TimedCall(&times_, kind); }
+  TimedCall timer(LinkTimes::Kind kind) const { return TimedCall(timed_ ? &times_ : nullptr, kind); }
   // A collective of `n` values each way (the bytes in: what a reduction or a transpose brings).
   void count_collective(std::size_t n) const {
     ++counts_.collectives;
@@ -130,6 +133,7 @@ class MpiLink final : public RankLink {
   }
   static constexpr int kGhostTag = 20;  // the number: one kind of point-to-point message
   int rank_, ranks_;
+  bool timed_;
   mutable LinkCounts counts_;
   mutable LinkTimes times_;
   mutable std::vector<MPI_Request> pending_;  // an exchange's requests (kept: no allocation a step)

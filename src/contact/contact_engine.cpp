@@ -342,7 +342,7 @@ std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodi
 }
 
 void ContactEngine::choose_skins(const LocalBodies& bodies) {
-  if (!(settings_.skin_max > settings_.skin) || !settings_.pair_trigger || spheres_only_) {
+  if (!per_body_skins(settings_, spheres_only_)) {
     skin_.clear();
     return;
   }

@@ -42,6 +42,11 @@ constexpr double kSkinSteps = 30.0;
 // skin_max over the skin where the scene gives none: the pours counted at 4 (box-fill -8.3%, the
 // cubes pour -17.9% instructions), a settled pile +0.07% (README, "A skin per body").
 constexpr double kSkinMaxFactor = 4.0;
+// Whether lists give each body its own skin (ContactEngine::choose_skins): the pair trigger, a
+// skin_max above the skin, and some body not a sphere (a rank's ghost halo holds skin_max then).
+inline bool per_body_skins(const ContactSettings& s, bool spheres_only) {
+  return s.pair_trigger && s.skin_max > s.skin && !spheres_only;
+}
 
 // Over this process's lists: a pair across a cut between processes is listed by both.
 struct ContactStats {

@@ -138,40 +138,10 @@ bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch)
   return true;
 }
 
+// One process is one part: the pair rule over all its bodies (pair_rule_exceeded).
 bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const {
-  const std::size_t n = x.size();
-  if (rebuild_count == 0 || x_built.size() != n) return true;
-  if (!skin_.empty()) return pair_exceeded_own(driver_shift);
-  double d1 = 0.0, d2 = 0.0;  // m, the two largest bounds, d1 >= d2
-  for (std::size_t i = 0; i < n; ++i) {
-    const double d = q_built.empty() ? (x[i] - x_built[i]).norm() : displacement_[i];
-    if (!(d <= skin)) return true;  // alone past the skin, or NaN
-    if (d > d1) {
-      d2 = d1;
-      d1 = d;
-    } else if (d > d2) {
-      d2 = d;
-    }
-  }
-  return !(d1 + std::max(d2, driver_shift) <= skin);
-}
-
-// A pair (i, j) was listed within range + (s_i + s_j) / 2 and has closed at most d_i + d_j of it:
-// it holds while e_i + e_j <= 0, e = d - s / 2, so the two largest e's answer for every pair.
-bool RebuildTrigger::pair_exceeded_own(double driver_shift) const {
-  double e1 = -std::numeric_limits<double>::infinity(), e2 = e1;  // m, the two largest, e1 >= e2
-  for (std::size_t i = 0; i < skin_.size(); ++i) {
-    const double d = displacement_[i];
-    if (!(d + driver_shift <= skin_[i])) return true;  // past a driver's reach, or NaN
-    const double e = d - 0.5 * skin_[i];
-    if (e > e1) {
-      e2 = e1;
-      e1 = e;
-    } else if (e > e2) {
-      e2 = e;
-    }
-  }
-  return e1 + e2 > 0.0;
+  const PairMargins all = margins(x, skin, driver_shift, nullptr);
+  return pair_rule_exceeded(&all, 1, skin);
 }
 
 PairMargins RebuildTrigger::margins(const std::vector<Vec3>& x, double skin, double driver_shift,
@@ -198,7 +168,7 @@ bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin) {
   PairMargins all;  // the two largest of every part's
   for (std::size_t k = 0; k < n; ++k) {
     if (parts[k].alone) return true;
-    for (double v : parts[k].top)  // a uniform part's bound as a margin: d - skin/2, as pair_exceeded_own's
+    for (double v : parts[k].top)  // a uniform part's bound as a margin: d - skin/2, as a per-body part's
       all.add(uniform || !parts[k].uniform ? v : v - 0.5 * skin);
   }
   return uniform ? !(all.top[0] + all.top[1] <= skin) : all.top[0] + all.top[1] > 0.0;

@@ -136,8 +136,6 @@ class RebuildTrigger {
   void round_points();
   // measure's loop for points: |x - x_built| alone.
   bool points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const;
-  // pair_exceeded's test with per-body skins (skin_ set).
-  bool pair_exceeded_own(double driver_shift) const;
 
   std::vector<Vec3> x_built;  // m
   std::vector<Eigen::Vector3f> x_near;  // m, x_built rounded to float, for points (PointWatch)

@@ -49,9 +49,9 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
     return shapes[s].is_sphere();
   });
   const double band = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;  // m
-  // Pairs listed within R_i + R_j + (s_i + s_j) / 2 + band: the widest skins (ContactEngine's choose_skins).
-  const bool own_skins = settings_.pair_trigger && settings_.skin_max > settings_.skin && !settings_.spheres_only;
-  halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), (own_skins ? settings_.skin_max : settings_.skin) + band);
+  // Pairs listed within R_i + R_j + (s_i + s_j) / 2 + band: the widest skins.
+  const double widest = per_body_skins(settings_, settings_.spheres_only) ? settings_.skin_max : settings_.skin;  // m
+  halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), widest + band);
 }
 
 // This rank's word: a rebuild (none listed yet, or asked for), a stop, its owned bodies' margins.
