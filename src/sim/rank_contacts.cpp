@@ -63,6 +63,7 @@ RankContacts::Ask RankContacts::ask_here(const Drivers& drivers) {
 
 bool RankContacts::lists_stale(const Drivers& drivers) {
   const Ask mine = ask_here(drivers);  // the store refreshed by exchange_ghosts
+  if (!(mine.requests & 1)) engine_->remeasure(store_.view(), ghost_local_);  // left out by ask_here's measure
   std::vector<char> bytes;
   append_record(bytes, mine);
   std::vector<Ask> asks;
@@ -287,7 +288,7 @@ void RankContacts::sums_taken() {
 // bytes are undefined until then; the thread link's test poisons them). Those poses are wasted
 // only where a rebuild follows (it poses its new lists); the ghosts are posed once landed.
 bool RankContacts::exchange_ghosts(const Drivers& drivers, double dt) {
-  const Ask mine = fold_ ? ask_here(drivers) : Ask{};  // the store measured, its ghosts a step old
+  const Ask mine = fold_ ? ask_here(drivers) : Ask{};  // its owned bodies measured (polyhedral ghosts: once landed)
   pack_parcels(mine);
   link_.post(out_, in_);
   if (!mine.rebuild_here()) engine_->pose_listed(store_.view(), owned_listed_);  // no rebuild asked here
