@@ -146,7 +146,7 @@ struct PoseArrays {
 }  // namespace
 
 ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies,
-                             ContactSettings settings)
+                             ContactSettings settings, ContactEngine* was)
     : shapes_(shapes), settings_(settings), memory_(kSearchExtra * settings.skin) {
   band_particle_ = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;
   band_driver_ = settings_.driver.cohesion ? settings_.driver.dncut : 0.0;
@@ -172,6 +172,7 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   for (std::size_t b = 0; b < n; ++b) radius_[b] = shapes_[shape[b]].radius * scale[b];
   if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
   world_vertices_.resize(vertex_offset_[n]);
+  if (was && !was->spheres_only_) posed_ = std::move(was->posed_);  // its rows are posed again before read
   posed_.resize(n);
 }
 
@@ -417,10 +418,11 @@ void ContactEngine::measure_in_team(const LocalBodies& bodies, bool watched, con
   });  // the barrier: for a caller inside a team already
 }
 
-PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
+PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched,
+                                         bool ghosts_later) {
   const double shift = driver_shift(drivers);  // m
   const std::uint8_t* ghost = bodies.ghost ? bodies.ghost->data() : nullptr;
-  const OwnedPart owned{ghost, shift};
+  const OwnedPart owned{ghost, shift, ghosts_later};
   measure_in_team(bodies, watched, spheres_only_ ? nullptr : &owned);
   const bool past_half = trigger_.take_exceeded();
   PairMargins m;

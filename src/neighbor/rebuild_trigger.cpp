@@ -125,12 +125,18 @@ namespace {
 // pointers and locals: the out-of-line bound's call makes the compiler reload anything reachable.
 template <bool kUniform>
 bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* q, const double* radius,
-                const Vec3* x_built, const Quat* q_built, const double* skins, double skin, const std::uint8_t* ghost,
-                double driver_shift, double* bound, PairMargins& m) {
+                const Vec3* x_built, const Quat* q_built, const double* skins, double skin, const OwnedPart& owned,
+                double* bound, PairMargins& m) {
+  const std::uint8_t* ghost = owned.ghost;
+  const double driver_shift = owned.driver_shift;  // m
+  const bool ghosts_later = owned.ghosts_later;
   bool exceeded = false, alone = false;
   PairMargins top;  // a local copy: kept in registers
   for (std::size_t i = first; i < last; ++i) {
-    if (ghost && ghost[i]) continue;  // measured once landed; its owner's part answers for it
+    if (ghost && ghost[i]) {  // its owner's part answers for it
+      if (!ghosts_later) bound[i] = displacement_bound(x[i] - x_built[i], q[i], q_built[i], radius[i]);
+      continue;
+    }
     const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], radius[i]);  // m
     bound[i] = d;
     const double s = kUniform ? skin : skins[i];  // m
@@ -155,7 +161,7 @@ bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* 
   for (const auto [first, last] : team_shares(x.size(), cut)) {
     const auto loop = skin_.empty() ? owned_loop<true> : owned_loop<false>;
     if (loop(first, last, x.data(), q.data(), bounding_radius.data(), x_built.data(), q_built.data(), skin_.data(),
-             skin, owned.ghost, owned.driver_shift, displacement_.data(), m))
+             skin, owned, displacement_.data(), m))
       exceeded = true;
   }
 #pragma omp critical(polydem_owned_margins)

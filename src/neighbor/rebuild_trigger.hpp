@@ -79,10 +79,12 @@ static_assert(sizeof(PairMargins) == 24, "a rank sends it each step: 24 bytes");
 // two largest margins d - s/2 past 0, a uniform part's bounds read as margins d - skin/2.
 bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin);
 
-// A rank's part for RebuildTrigger::measure: its ghosts (1) and the drivers' shift (m) its margins read.
+// A rank's part for RebuildTrigger::measure: its ghosts (1) and the drivers' shift (m) its margins
+// read; `ghosts_later`: the ghosts are a step old, measured once landed (remeasure), so left out.
 struct OwnedPart {
   const std::uint8_t* ghost = nullptr;
   double driver_shift = 0.0;
+  bool ghosts_later = false;
 };
 
 class RebuildTrigger {
@@ -106,8 +108,8 @@ class RebuildTrigger {
   // region, `take_exceeded` answers as needs_rebuild would and clears the answer. Inside a team
   // the threads leave `measure` without meeting: the region's end is the barrier before the answer.
   // Each thread measures its bodies of `cut` (those its passes moved). With `owned` (a rank's
-  // polyhedra): its ghosts are left unmeasured (remeasure, once landed) and the same pass keeps
-  // the owned bodies' margins for take_margins.
+  // polyhedra): the same pass keeps the owned bodies' margins for take_margins (the ghosts
+  // unmeasured where they land later).
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
                double skin, TeamCut cut = {}, const OwnedPart* owned = nullptr);
   bool take_exceeded();
