@@ -131,8 +131,8 @@ TEST_CASE("an engine lent the poses of the engine before lists and forces as a n
   const ContactSettings settings = pile_settings(p.scene);
   ContactEngine before(sim.shapes(), all_owned(bodies), settings);  // every body posed, in global ids
   before.compute(all_owned(bodies), drivers, sim.dt(), true);
-  const DomainCut cut = cut_domain(bodies.position, std::vector<double>(bodies.size(), 1.0), 2);
-  GhostPlan plan = plan_ghosts(cut, 1, bodies.position, ghost_halo(max_bounding_radius(bodies, sim.shapes()), settings.skin));
+  const DomainCut cut = cut_domain(bodies.position, std::vector<double>(bodies.size(), 1.0), 3);
+  GhostPlan plan = plan_ghosts(cut, 1, bodies.position, max_bounding_radius(bodies, sim.shapes()));  // m: some ghosts
   LocalStore fresh_store;
   fresh_store.select(bodies, std::move(plan.local), std::move(plan.ghost));
   LocalStore lent_store = fresh_store;
