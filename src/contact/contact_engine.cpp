@@ -146,7 +146,7 @@ struct PoseArrays {
 }  // namespace
 
 ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies,
-                             ContactSettings settings)
+                             ContactSettings settings, ContactEngine* was)
     : shapes_(shapes), settings_(settings), memory_(kSearchExtra * settings.skin) {
   band_particle_ = settings_.particle.cohesion ? settings_.particle.dncut : 0.0;
   band_driver_ = settings_.driver.cohesion ? settings_.driver.dncut : 0.0;
@@ -172,6 +172,7 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   for (std::size_t b = 0; b < n; ++b) radius_[b] = shapes_[shape[b]].radius * scale[b];
   if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
   world_vertices_.resize(vertex_offset_[n]);
+  if (was && !was->spheres_only_) posed_ = std::move(was->posed_);  // its rows are posed again before read
   posed_.resize(n);
 }
 
@@ -410,35 +411,38 @@ bool ContactEngine::lists_stale(const LocalBodies& bodies, const Drivers& driver
   return stale_after_measure(bodies, drivers);
 }
 
-void ContactEngine::measure_in_team(const LocalBodies& bodies, bool watched) {
+void ContactEngine::measure_in_team(const LocalBodies& bodies, bool watched, const OwnedPart* owned) {
   in_team(bodies.size() >= kParallelMinItems, [&] {
-    measure_motion(bodies, watched);
+    measure_motion(bodies, watched, owned);
 #pragma omp barrier
   });  // the barrier: for a caller inside a team already
 }
 
-PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched) {
-  measure_in_team(bodies, watched);
-  const bool past_half = trigger_.take_exceeded();
+PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched,
+                                         bool ghosts_later) {
   const double shift = driver_shift(drivers);  // m
+  const std::uint8_t* ghost = bodies.ghost ? bodies.ghost->data() : nullptr;
+  const OwnedPart owned{ghost, shift, ghosts_later};
+  measure_in_team(bodies, watched, spheres_only_ ? nullptr : &owned);
+  const bool past_half = trigger_.take_exceeded();
   PairMargins m;
   if (spheres_only_) {  // points: skin/2 apiece (their margins, a pass of their own, would cost more than they save)
     m.alone = past_half || must_rebuild_ || shift > 0.5 * settings_.skin;
     return m;
   }
-  m = trigger_.margins(*bodies.position, settings_.skin, shift, bodies.ghost ? bodies.ghost->data() : nullptr);
+  m = trigger_.take_margins(*bodies.position, settings_.skin, shift, ghost);
   m.alone = m.alone || must_rebuild_;
   return m;
 }
 
-void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched) {
+void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched, const OwnedPart* owned) {
   // A sphere's pose is its centre: set in this pass, no loop (and barrier) of its own.
   if (spheres_only_ && spheres_posed_each_step_) {
     const std::vector<Vec3>& position = *bodies.position;
     for (const auto [first, last] : team_shares(position.size(), pass_cut()))
       for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
-  if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut());
+  if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut(), owned);
 }
 
 void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {

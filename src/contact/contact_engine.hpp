@@ -97,7 +97,11 @@ struct ForceSums {
 
 class ContactEngine {
  public:
-  ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies, ContactSettings settings);
+  // `was` (a rank's rebuild: its engine of the bodies before, null otherwise) lends its poses'
+  // storage, so only the bodies past its count are cleared: a rebuild poses every listed body
+  // before any read (new engine: ~128 bytes a body written, ~30% of a rank's adopt).
+  ContactEngine(const std::vector<Shape>& shapes, const LocalBodies& bodies, ContactSettings settings,
+                ContactEngine* was = nullptr);
 
   // Adds the contact forces and torques of this step to the owned bodies' force / torque and
   // the reactions to the drivers; rebuilds the lists first when lists_stale says so.
@@ -113,12 +117,16 @@ class ContactEngine {
   // `alone` set too where a rebuild is due here); the ranks' answers join in pair_rule_exceeded.
   // Spheres alone (points) answer skin/2 apiece: `alone` when one moved so far, no margins (a
   // pass over them each step: ~2% of a sphere bed rank's step, against ~2 rebuilds in 5,000 steps).
-  PairMargins owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched = false);
+  // Polyhedra: the margins come from the measure's own pass (RebuildTrigger::take_margins);
+  // `ghosts_later`: the ghosts are a step old and measured once landed (remeasure), so left out.
+  PairMargins owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched = false,
+                            bool ghosts_later = false);
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
   // `watched`: the pass that moved the bodies ran the trigger's test (watch_motion), so only the poses.
-  void measure_motion(const LocalBodies& bodies, bool watched = false);
+  // `owned`: a rank's part (RebuildTrigger::measure).
+  void measure_motion(const LocalBodies& bodies, bool watched = false, const OwnedPart* owned = nullptr);
   // Polyhedra's poses for this step's forces, by every thread of the team after measure_motion,
   // each its share of the cut (the bodies its opening pass moved), with no barrier: the region's
   // end is the one forces(..., pose_bodies false) needs. A rebuild then poses its newly listed bodies.
@@ -237,7 +245,7 @@ class ContactEngine {
   // The bodies `some` (increasing: listed_ or some of it), each thread its share of the cut.
   void pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait = true);  // `wait`: a barrier at its end
   void keep_sphere_poses(const LocalBodies& bodies, bool needed);
-  void measure_in_team(const LocalBodies& bodies, bool watched);  // measure_motion in a team of its own, or the caller's
+  void measure_in_team(const LocalBodies& bodies, bool watched, const OwnedPart* owned = nullptr);  // measure_motion in a team of its own, or the caller's
   // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.
   PosedBody sphere_pose(const LocalBodies& bodies, std::size_t b) const {
     const Vec3& x = (*bodies.position)[b];

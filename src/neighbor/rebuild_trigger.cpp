@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
@@ -84,7 +85,8 @@ bool RebuildTrigger::needs_rebuild(const std::vector<Vec3>& x, const std::vector
 }
 
 void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>& q,
-                             const std::vector<double>& bounding_radius, double skin, TeamCut cut) {
+                             const std::vector<double>& bounding_radius, double skin, TeamCut cut,
+                             const OwnedPart* owned) {
   const std::size_t n = x.size();  // q and bounding_radius: as many (needs_rebuild checks)
   if (rebuild_count == 0 || x_built.size() != n) {
     exceeded_.store(true, std::memory_order_relaxed);
@@ -94,6 +96,8 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   bool exceeded = false;            // by this thread's bodies
   if (q_built.empty()) {  // points: radius 0, displacement_bound is |dx|, and no bound is kept
     exceeded = points_exceed(x, limit, cut);
+  } else if (owned) {
+    exceeded = measure_owned(x, q, bounding_radius, skin, cut, *owned);
   } else if (skin_.empty()) {
     for (const auto [first, last] : team_shares(n, cut))
       for (std::size_t i = first; i < last; ++i) {
@@ -113,6 +117,60 @@ void RebuildTrigger::measure(const std::vector<Vec3>& x, const std::vector<Quat>
   // Only ever set: any order gives the same. No barrier here: take_exceeded comes after the
   // region's end (needs_rebuild, ContactEngine::lists_stale, Simulation::step), its barrier.
   if (exceeded) exceeded_.store(true, std::memory_order_relaxed);
+}
+
+namespace {
+
+// measure_owned's loop over [first, last) (kUniform: every skin `skin`, else skins[i]), on plain
+// pointers and locals: the out-of-line bound's call makes the compiler reload anything reachable.
+template <bool kUniform>
+bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* q, const double* radius,
+                const Vec3* x_built, const Quat* q_built, const double* skins, double skin, const OwnedPart& owned,
+                double* bound, PairMargins& m) {
+  const std::uint8_t* ghost = owned.ghost;
+  const double driver_shift = owned.driver_shift;  // m
+  const bool ghosts_later = owned.ghosts_later;
+  bool exceeded = false, alone = false;
+  PairMargins top;  // a local copy: kept in registers
+  for (std::size_t i = first; i < last; ++i) {
+    if (ghost && ghost[i]) {  // its owner's part answers for it
+      if (!ghosts_later) bound[i] = displacement_bound(x[i] - x_built[i], q[i], q_built[i], radius[i]);
+      continue;
+    }
+    const double d = displacement_bound(x[i] - x_built[i], q[i], q_built[i], radius[i]);  // m
+    bound[i] = d;
+    const double s = kUniform ? skin : skins[i];  // m
+    if (!(d <= move_limit(s))) exceeded = true;
+    if (!(d + driver_shift <= s)) alone = true;  // past a driver's reach, or NaN
+    top.add(kUniform ? d : d - 0.5 * s);
+  }
+  for (double v : top.top) m.add(v);
+  m.alone = m.alone || alone;
+  return exceeded;
+}
+
+}  // namespace
+
+// Out of line, so one process's loops stay as they were. The threads' margins join in any
+// order: the two largest of a set, `alone` ORed.
+[[gnu::noinline]] bool RebuildTrigger::measure_owned(const std::vector<Vec3>& x, const std::vector<Quat>& q,
+                                                     const std::vector<double>& bounding_radius, double skin,
+                                                     TeamCut cut, const OwnedPart& owned) {
+  bool exceeded = false;  // by this thread's bodies
+  PairMargins m;          // of this thread's owned bodies: add_margins' arithmetic
+  for (const auto [first, last] : team_shares(x.size(), cut)) {
+    const auto loop = skin_.empty() ? owned_loop<true> : owned_loop<false>;
+    if (loop(first, last, x.data(), q.data(), bounding_radius.data(), x_built.data(), q_built.data(), skin_.data(),
+             skin, owned, displacement_.data(), m))
+      exceeded = true;
+  }
+#pragma omp critical(polydem_owned_margins)
+  {
+    for (double v : m.top) owned_.add(v);
+    owned_.alone = owned_.alone || m.alone;
+    owned_kept_ = true;
+  }
+  return exceeded;
 }
 
 // Not inlined: measure with both loops no longer inlines displacement_bound (+12% of its cost, cubes).
@@ -160,6 +218,15 @@ PairMargins RebuildTrigger::margins(const std::vector<Vec3>& x, double skin, dou
   else
     add_margins<false>(m, x.size(), ghost, driver_shift, [&](std::size_t i) { return displacement_[i]; },
                        [&](std::size_t i) { return skin_[i]; });
+  return m;
+}
+
+PairMargins RebuildTrigger::take_margins(const std::vector<Vec3>& x, double skin, double driver_shift,
+                                         const std::uint8_t* ghost) {
+  if (!owned_kept_) return margins(x, skin, driver_shift, ghost);
+  PairMargins m = std::exchange(owned_, PairMargins{});
+  owned_kept_ = false;
+  m.uniform = skin_.empty();
   return m;
 }
 

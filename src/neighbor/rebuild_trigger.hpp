@@ -79,6 +79,14 @@ static_assert(sizeof(PairMargins) == 24, "a rank sends it each step: 24 bytes");
 // two largest margins d - s/2 past 0, a uniform part's bounds read as margins d - skin/2.
 bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin);
 
+// A rank's part for RebuildTrigger::measure: its ghosts (1) and the drivers' shift (m) its margins
+// read; `ghosts_later`: the ghosts are a step old, measured once landed (remeasure), so left out.
+struct OwnedPart {
+  const std::uint8_t* ghost = nullptr;
+  double driver_shift = 0.0;
+  bool ghosts_later = false;
+};
+
 class RebuildTrigger {
  public:
   // Remembers the state the lists were built at; counts one rebuild. `points`: every body's
@@ -99,9 +107,11 @@ class RebuildTrigger {
   // `measure` keeps each body's bound (every thread of the team calls it), then, after the
   // region, `take_exceeded` answers as needs_rebuild would and clears the answer. Inside a team
   // the threads leave `measure` without meeting: the region's end is the barrier before the answer.
-  // Each thread measures its bodies of `cut` (those its passes moved).
+  // Each thread measures its bodies of `cut` (those its passes moved). With `owned` (a rank's
+  // polyhedra): the same pass keeps the owned bodies' margins for take_margins (the ghosts
+  // unmeasured where they land later).
   void measure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
-               double skin, TeamCut cut = {});
+               double skin, TeamCut cut = {}, const OwnedPart* owned = nullptr);
   bool take_exceeded();
   // The sharper test once some body moved past skin/2 or a driver as far (m, `driver_shift`: the
   // largest driver surface motion since the build): true when the two largest bounds d1 >= d2
@@ -117,6 +127,9 @@ class RebuildTrigger {
   // parts' (pair_rule_exceeded): their two largest bounds (or margins d - s/2 with per-body skins),
   // and whether one alone passes a driver's reach. Needs this step's measure of them (points: x).
   PairMargins margins(const std::vector<Vec3>& x, double skin, double driver_shift, const std::uint8_t* ghost) const;
+  // margins as measure's pass with `owned` kept them (`driver_shift` and `ghost` the same as
+  // there), else margins itself; the kept ones are cleared for the next step's measure.
+  PairMargins take_margins(const std::vector<Vec3>& x, double skin, double driver_shift, const std::uint8_t* ghost);
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
   // bodies are points and a build was marked for as many; the pass then stands for measure.
   bool watch_points(std::size_t n, double skin, PointWatch& watch);
@@ -136,6 +149,9 @@ class RebuildTrigger {
   void round_points();
   // measure's loop for points: |x - x_built| alone.
   bool points_exceed(const std::vector<Vec3>& x, double limit, TeamCut cut) const;
+  // measure's loop with `owned`: true when one of the bodies measured passed its limit.
+  bool measure_owned(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
+                     double skin, TeamCut cut, const OwnedPart& owned);
 
   std::vector<Vec3> x_built;  // m
   std::vector<Eigen::Vector3f> x_near;  // m, x_built rounded to float, for points (PointWatch)
@@ -145,6 +161,8 @@ class RebuildTrigger {
   std::vector<double> skin_;  // m, per body (set_skins); empty: the skin given each call
   std::size_t rebuild_count = 0;
   std::atomic<bool> exceeded_{false};  // some body moved past skin/2 since the last take_exceeded
+  PairMargins owned_;         // measure_owned's threads' margins, joined (take_margins)
+  bool owned_kept_ = false;   // owned_ holds this step's
 };
 
 }  // namespace polydem

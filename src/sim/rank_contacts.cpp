@@ -55,14 +55,15 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
 }
 
 // This rank's word: a rebuild (none listed yet, or asked for), a stop, its owned bodies' margins.
-RankContacts::Ask RankContacts::ask_here(const Drivers& drivers) {
+// `ghosts_later`: the ghosts are a step old, measured once landed (fold_asks).
+RankContacts::Ask RankContacts::ask_here(const Drivers& drivers, bool ghosts_later) {
   Ask mine{Requests(forced_ || rebuild_asked_ || !engine_) | Requests(stop_asked_) << 1, {}};
-  if (!(mine.requests & 1)) mine.margins = engine_->owned_margins(store_.view(), drivers, watched_);
+  if (!(mine.requests & 1)) mine.margins = engine_->owned_margins(store_.view(), drivers, watched_, ghosts_later);
   return mine;
 }
 
 bool RankContacts::lists_stale(const Drivers& drivers) {
-  const Ask mine = ask_here(drivers);  // the store refreshed by exchange_ghosts
+  const Ask mine = ask_here(drivers, false);  // the store refreshed by exchange_ghosts
   std::vector<char> bytes;
   append_record(bytes, mine);
   std::vector<Ask> asks;
@@ -175,7 +176,7 @@ void RankContacts::adopt(const PairList& body_table, const PairList& driver_tabl
     if (plan_.ghost[k]) ghost_local_.push_back(std::uint32_t(k));
   owned_rotors_ = with_runs(group_rotors(store_, store_.owned_rows(), shapes_));
   size_parcels();
-  engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_);
+  engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_, engine_.get());
   engine_->body_pairs() = localise(body_table, store_.global_id, false);
   engine_->driver_pairs() = localise(driver_table, store_.global_id, true);
 }
@@ -287,7 +288,7 @@ void RankContacts::sums_taken() {
 // bytes are undefined until then; the thread link's test poisons them). Those poses are wasted
 // only where a rebuild follows (it poses its new lists); the ghosts are posed once landed.
 bool RankContacts::exchange_ghosts(const Drivers& drivers, double dt) {
-  const Ask mine = fold_ ? ask_here(drivers) : Ask{};  // the store measured, its ghosts a step old
+  const Ask mine = fold_ ? ask_here(drivers, true) : Ask{};  // its owned bodies measured (polyhedral ghosts: once landed)
   pack_parcels(mine);
   link_.post(out_, in_);
   if (!mine.rebuild_here()) engine_->pose_listed(store_.view(), owned_listed_);  // no rebuild asked here

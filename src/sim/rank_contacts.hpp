@@ -207,7 +207,7 @@ class RankContacts {
     PairMargins margins;
     bool rebuild_here() const { return (requests & 1) || margins.alone; }
   };
-  Ask ask_here(const Drivers& drivers);
+  Ask ask_here(const Drivers& drivers, bool ghosts_later);
   bool lists_stale(const Drivers& drivers);
   bool exchange_ghosts(const Drivers& drivers, double dt);
   bool fold_asks(const Ask& mine);

@@ -371,5 +371,66 @@ TEST_CASE("the pair rule over parts answers as one process over all bodies, any 
   CHECK(no > 100);
 }
 
+TEST_CASE("a rank's measure keeps its owned margins in its own pass, ghosts left for once they land", "[rebuild]") {
+  const double skin = 0.125;  // m
+  std::mt19937_64 rng(35);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int yes = 0, no = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const std::size_t n = 1 + trial % 40;
+    const bool own_skins = trial % 3 != 0;
+    const int threads = 1 + trial % 2;
+    std::vector<Vec3> x0(n), before(n), x(n);
+    std::vector<Quat> q0(n, Quat::Identity()), q(n);
+    std::vector<double> skins, radius(n);
+    std::vector<std::uint8_t> ghost(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      x0[i] = Vec3(double(i), 0.0, 0.0);
+      const double s = own_skins ? skin * (1.0 + 3.0 * unit(rng)) : skin;  // m
+      if (own_skins) skins.push_back(s);
+      before[i] = x0[i] + Vec3(0.0, 0.1 * s * unit(rng), 0.0);
+      x[i] = x0[i] + Vec3(0.45 * s * unit(rng), 0.0, 0.3 * s * unit(rng));  // some past their half
+      q[i] = rotation(0.2 * s * unit(rng), Vec3(unit(rng), 1.0, unit(rng)));
+      radius[i] = 0.25 * unit(rng);  // m
+      ghost[i] = unit(rng) < 0.3;
+    }
+    const double shift = trial % 7 == 0 ? 0.3 * skin * unit(rng) : 0.0;  // m
+    RebuildTrigger all, rank;  // all: the full measure, then margins' own pass
+    for (RebuildTrigger* t : {&all, &rank}) {
+      t->mark_built(x0, q0);
+      t->set_skins(skins);
+      t->needs_rebuild(before, q0, radius, skin);  // a step before: the ghosts' bounds as they were
+    }
+    const std::vector<double> was = all.displacement();  // m, the bounds a step before
+    all.needs_rebuild(x, q, radius, skin);
+    const PairMargins want = all.margins(x, skin, shift, ghost.data());
+    const bool later = trial % 4 != 0;  // the ghosts a step old (a rank's folded word), else current
+    const OwnedPart owned{ghost.data(), shift, later};
+#pragma omp parallel num_threads(threads)
+    rank.measure(x, q, radius, skin, {}, &owned);
+    rank.take_exceeded();
+    INFO("trial " << trial << ", " << threads << " threads");
+    for (std::size_t i = 0; i < n; ++i)  // owned as the full measure; ghosts a step old untouched until they land
+      CHECK(rank.displacement()[i] == (ghost[i] && later ? was[i] : all.displacement()[i]));
+    const PairMargins got = rank.take_margins(x, skin, shift, ghost.data());
+    CHECK(got.alone == want.alone);
+    CHECK(got.uniform == want.uniform);
+    CHECK(got.top[0] == want.top[0]);
+    CHECK(got.top[1] == want.top[1]);
+    std::vector<std::uint32_t> ghosts;
+    for (std::size_t i = 0; i < n; ++i)
+      if (ghost[i]) ghosts.push_back(std::uint32_t(i));
+    rank.remeasure(x, q, radius, ghosts);
+    CHECK(rank.displacement() == all.displacement());
+    const PairMargins again = rank.take_margins(x, skin, shift, ghost.data());  // nothing kept: margins' own loop
+    CHECK(again.top[0] == want.top[0]);
+    CHECK(again.top[1] == want.top[1]);
+    (pair_rule_exceeded(&got, 1, skin) ? yes : no) += 1;
+  }
+  INFO(yes << " rebuilds, " << no << " not");
+  CHECK(yes > 50);  // both answers met often
+  CHECK(no > 50);
+}
+
 }  // namespace
 }  // namespace polydem

@@ -117,3 +117,42 @@ TEST_CASE("parts without ghosts miss the pairs across the cut: the comparison se
   CHECK(r.ghosts == 0);
   CHECK(r.mismatches > 0);
 }
+
+// A rank's rebuild makes its engine anew over its new bodies, lent the old engine's poses'
+// storage (ContactEngine's `was`): rows left from other bodies are posed again before any read,
+// so the lists, their candidates and the forces are a new engine's, step after step.
+TEST_CASE("an engine lent the poses of the engine before lists and forces as a new one") {
+  Pile p;
+  Simulation sim(p.scene, p.lib, p.specs);
+  for (int s = 0; s < 100000 && sim.engine().stats().contacts < 150; ++s) sim.step();
+  REQUIRE(sim.engine().stats().contacts >= 150);
+  Bodies bodies = sim.bodies;
+  Drivers drivers = sim.drivers, drivers_lent = sim.drivers;
+  const ContactSettings settings = pile_settings(p.scene);
+  ContactEngine before(sim.shapes(), all_owned(bodies), settings);  // every body posed, in global ids
+  before.compute(all_owned(bodies), drivers, sim.dt(), true);
+  const DomainCut cut = cut_domain(bodies.position, std::vector<double>(bodies.size(), 1.0), 3);
+  GhostPlan plan = plan_ghosts(cut, 1, bodies.position, max_bounding_radius(bodies, sim.shapes()));  // m: some ghosts
+  LocalStore fresh_store;
+  fresh_store.select(bodies, std::move(plan.local), std::move(plan.ghost));
+  LocalStore lent_store = fresh_store;
+  REQUIRE(fresh_store.size() < bodies.size());  // the lent rows outnumber the new bodies: none cleared
+  ContactEngine fresh(sim.shapes(), fresh_store.view(), settings);
+  ContactEngine lent(sim.shapes(), lent_store.view(), settings, &before);
+  std::size_t contacts = 0;
+  for (int s = 0; s < 40; ++s) {  // the state held: each step's lists and forces on the same bodies
+    const bool stale = s == 0 || fresh.lists_stale(fresh_store.view(), drivers);
+    CHECK((s == 0 || lent.lists_stale(lent_store.view(), drivers_lent)) == stale);
+    fresh.compute(fresh_store.view(), drivers, sim.dt(), stale);
+    lent.compute(lent_store.view(), drivers_lent, sim.dt(), stale);
+    REQUIRE(lent.body_pairs().pairs == fresh.body_pairs().pairs);
+    const std::vector<FeaturePair>&a = lent.body_pairs().features, &b = fresh.body_pairs().features;  // the candidates
+    REQUIRE(a.size() == b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) CHECK((a[k].type == b[k].type && a[k].a == b[k].a && a[k].b == b[k].b));
+    CHECK(lent.driver_pairs().pairs == fresh.driver_pairs().pairs);
+    CHECK(lent_store.force == fresh_store.force);
+    CHECK(lent_store.torque == fresh_store.torque);
+    contacts = std::max(contacts, fresh.stats().contacts);
+  }
+  CHECK(contacts > 20);  // pairs in contact, not an empty list
+}
