@@ -1,7 +1,5 @@
 #include "contact/contact_lists.hpp"
 
-#include "polydem/parallel.hpp"
-
 namespace polydem {
 
 std::vector<std::uint32_t> pairs_by_body(const std::vector<BodyPair>& pairs, std::size_t n_bodies) {
@@ -19,16 +17,11 @@ bool pair_less(const BodyPair& a, const BodyPair& b) {
 
 PairList active_part(const PairList& list) {
   PairList kept;
-  std::vector<std::uint32_t> active(list.size());  // per pair, its active slots: counted on the team
-  parallel_for(list.size(), [&](std::size_t k) {
-    std::uint32_t count = 0;
-    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) count += list.active[s];
-    active[k] = count;
-  });
   std::size_t n_slots = 0, n_pairs = 0;  // sized exactly: this copy is held at a rebuild's peak
-  for (const std::uint32_t count : active) {
-    n_slots += count;
-    n_pairs += count > 0;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::size_t before = n_slots;
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) n_slots += list.active[s];
+    n_pairs += n_slots > before;
   }
   kept.pairs.reserve(n_pairs);
   kept.slot_begin.reserve(n_pairs + 1);
@@ -37,7 +30,6 @@ PairList active_part(const PairList& list) {
   if (list.recording) kept.records.reserve(n_slots);
   kept.slot_begin.push_back(0);
   for (std::size_t k = 0; k < list.size(); ++k) {
-    if (!active[k]) continue;  // most of a pour's listed pairs: their slots not read again
     const std::size_t before = kept.slots.size();
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
       if (!list.active[s]) continue;
@@ -45,6 +37,7 @@ PairList active_part(const PairList& list) {
       kept.slots.push_back(ContactSlot{list.history(s), {}});
       if (list.recording) kept.records.push_back(list.record(s));
     }
+    if (kept.slots.size() == before) continue;
     kept.pairs.push_back(list.pairs[k]);
     kept.slots[before].pending = list.open_energy_or_zero(k);  // dense: on the pair's first slot
     kept.slot_begin.push_back(std::uint32_t(kept.slots.size()));

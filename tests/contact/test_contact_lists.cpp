@@ -1,7 +1,5 @@
 // A rebuild keeps only the old lists' active slots (active_part) to hand their history over:
 // the new lists must come out as they did from the whole old lists.
-#include <omp.h>
-
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -97,50 +95,6 @@ TEST_CASE("active_part keeps the active slots with their pairs, keys and state, 
   CHECK(kept.slots[2].history.fd == 6.0);  // old slot 5
   CHECK(kept.records[2].fn == 6.0);  // its record with it
   CHECK(kept.active == std::vector<std::uint8_t>{1, 1, 1});
-}
-
-// The pairs' active slots are counted on the team: the part must not depend on the thread count.
-TEST_CASE("active_part of a long list is the slot-by-slot copy at 1, 2 and 3 threads") {
-  std::vector<BodyPair> pairs;
-  std::vector<std::vector<std::pair<std::uint32_t, bool>>> runs;
-  std::uint32_t draw = 12345;  // a fixed LCG: 1..4 slots a pair, about one in five active
-  const auto next = [&] { return draw = draw * 1664525u + 1013904223u, draw >> 16; };
-  for (std::uint32_t k = 0; k < 3000; ++k) {  // pairs: several static chunks per thread
-    pairs.push_back({k / 3, k / 3 + 1 + k % 3});
-    std::vector<std::pair<std::uint32_t, bool>> run;
-    for (std::uint32_t s = 0, n = 1 + next() % 4; s < n; ++s) run.push_back({s, next() % 5 == 0});
-    runs.push_back(run);
-  }
-  PairList old = make_list(pairs, runs);
-  for (std::size_t k = 0; k < old.size(); ++k) old.open_energy(k) = EnergyParts{0.5 * double(k), 0.0, 0.0, 0.0};  // J
-  std::vector<std::size_t> want_pairs, want_slots;  // the old list's, in order
-  for (std::size_t k = 0; k < old.size(); ++k)
-    for (std::uint32_t s = old.slot_begin[k]; s < old.slot_begin[k + 1]; ++s)
-      if (old.active[s]) {
-        if (want_pairs.empty() || want_pairs.back() != k) want_pairs.push_back(k);
-        want_slots.push_back(s);
-      }
-  REQUIRE(want_pairs.size() > 256);  // past parallel_for's threshold
-  const int threads_before = omp_get_max_threads();
-  for (int threads : {1, 2, 3}) {
-    omp_set_num_threads(threads);
-    const PairList kept = active_part(old);
-    REQUIRE(kept.pairs.size() == want_pairs.size());
-    REQUIRE(kept.slots.size() == want_slots.size());
-    std::size_t wrong = 0;
-    for (std::size_t k = 0; k < want_pairs.size(); ++k) {
-      wrong += !(kept.pairs[k] == old.pairs[want_pairs[k]]);
-      wrong += kept.slots[kept.slot_begin[k]].pending.net != old.open_energy(want_pairs[k]).net;
-    }
-    for (std::size_t s = 0; s < want_slots.size(); ++s) {
-      wrong += kept.slots[s].history.fd != old.slots[want_slots[s]].history.fd;
-      wrong += kept.features[s].b != old.features[want_slots[s]].b;
-      wrong += kept.records[s].fn != old.records[want_slots[s]].fn;
-    }
-    CHECK(wrong == 0);
-    CHECK(kept.slot_begin.back() == want_slots.size());
-  }
-  omp_set_num_threads(threads_before);
 }
 
 TEST_CASE("carry_history from the active part gives the new list the whole old list gives") {
