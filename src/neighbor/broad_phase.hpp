@@ -50,7 +50,6 @@ class CellList {
   std::size_t used_levels = 0;
   std::vector<CellGrid> grids;                       // coarsest first; the first used_levels
   std::vector<std::vector<std::uint32_t>> members;  // bodies of each level, in index order
-  std::vector<std::uint8_t> level;                   // each body's level (of kMaxLevels), found on the team
   std::vector<std::size_t> cell_offset;              // flat cell numbering over the grids
   // Output assembly.
   std::vector<std::vector<BodyPair>> thread_pairs;

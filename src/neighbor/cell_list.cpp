@@ -90,7 +90,8 @@ void pairs_across(const CellGrid& fine, std::size_t c, const CellGrid& coarse, c
   }
 }
 
-// Each level's bounding box of centres over some bodies, and the first body with a non-finite centre.
+// Some bodies (a thread's run) by level: each level's bodies in index order and the bounding box
+// of their centres, and the first body with a non-finite centre.
 struct LevelBoxes {
   explicit LevelBoxes(std::size_t none) : bad(none) {
     for (int l = 0; l < CellList::kMaxLevels; ++l) {
@@ -99,6 +100,7 @@ struct LevelBoxes {
     }
   }
   void add(int l, std::size_t i, const Vec3& x) {
+    members[l].push_back(static_cast<std::uint32_t>(i));
     if (!x.allFinite()) {
       bad = std::min(bad, i);
       return;
@@ -106,13 +108,16 @@ struct LevelBoxes {
     lo[l] = lo[l].cwiseMin(x);
     hi[l] = hi[l].cwiseMax(x);
   }
-  void join(const LevelBoxes& other) {
-    bad = std::min(bad, other.bad);
+  // The bodies after this one's (a later run): appended, boxes joined (min and max: exact in any order).
+  void join(const LevelBoxes& later) {
+    bad = std::min(bad, later.bad);
     for (int l = 0; l < CellList::kMaxLevels; ++l) {
-      lo[l] = lo[l].cwiseMin(other.lo[l]);
-      hi[l] = hi[l].cwiseMax(other.hi[l]);
+      members[l].insert(members[l].end(), later.members[l].begin(), later.members[l].end());
+      lo[l] = lo[l].cwiseMin(later.lo[l]);
+      hi[l] = hi[l].cwiseMax(later.hi[l]);
     }
   }
+  std::vector<std::uint32_t> members[CellList::kMaxLevels];
   Vec3 lo[CellList::kMaxLevels], hi[CellList::kMaxLevels];  // m
   std::size_t bad;
 };
@@ -139,27 +144,21 @@ void CellList::bin_levels(const std::vector<Vec3>& centers, const std::vector<do
   for (int level = 0; level < kMaxLevels; ++level) sides[level] = std::ldexp(top_cell, -level);
   const std::size_t n = radii.size();
   const std::size_t threads = n >= kMinParallel ? std::size_t(omp_get_max_threads()) : 1;
-  std::vector<LevelBoxes> parts(threads, LevelBoxes(n));  // a smaller team's rest: empty boxes
-  level.resize(n);
+  std::vector<LevelBoxes> parts(threads, LevelBoxes(n));  // a smaller team's rest: empty
 #pragma omp parallel num_threads(int(threads)) if (threads > 1)
   {
     const std::size_t t = std::size_t(omp_get_thread_num()), team = std::size_t(omp_get_num_threads());
-    LevelBoxes mine(n);
-    for (std::size_t i = n * t / team; i < n * (t + 1) / team; ++i) {
-      const int l = level_of(radii[i], skin, sides);
-      level[i] = std::uint8_t(l);
-      mine.add(l, i, centers[i]);
-    }
-    parts[t] = mine;
+    LevelBoxes& mine = parts[t];
+    for (std::size_t i = n * t / team; i < n * (t + 1) / team; ++i)
+      mine.add(level_of(radii[i], skin, sides), i, centers[i]);
   }
-  LevelBoxes all(n);  // the threads' boxes joined (min and max are exact in any order)
-  for (const LevelBoxes& part : parts) all.join(part);
+  LevelBoxes& all = parts[0];  // the runs joined in order: each level's bodies in index order
+  for (std::size_t t = 1; t < threads; ++t) all.join(parts[t]);
   if (all.bad < n) {
     throw RunError("broad phase: body " + std::to_string(all.bad) + " has a non-finite position");
   }
   members.resize(kMaxLevels);
-  for (auto& list : members) list.clear();
-  for (std::size_t i = 0; i < n; ++i) members[level[i]].push_back(static_cast<std::uint32_t>(i));
+  for (int l = 0; l < kMaxLevels; ++l) std::swap(members[static_cast<std::size_t>(l)], all.members[l]);
   double used_sides[kMaxLevels];
   int used_level[kMaxLevels];
   for (int l = 0; l < kMaxLevels; ++l) {
@@ -224,7 +223,6 @@ std::size_t CellList::bytes() const {
                       row_fill.capacity() * sizeof(std::uint32_t);
   for (const CellGrid& g : grids) total += g.bytes();
   for (const auto& list : members) total += list.capacity() * sizeof(std::uint32_t);
-  total += level.capacity();
   for (const auto& buffer : thread_pairs) total += buffer.capacity() * sizeof(BodyPair);
   return total;
 }

@@ -44,22 +44,16 @@ void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Qu
     throw std::invalid_argument("mark_built: " + std::to_string(x.size()) + " positions but " +
                                 std::to_string(q.size()) + " orientations");
   }
+  x_built = x;
   skin_.clear();  // set_skins, if any, comes after
-  if (points) {  // a copy (memcpy) and round_points: as cheap on one thread
-    x_built = x;
+  if (points) {
     release(q_built);
     release(displacement_);
     round_points();
   } else {
-    x_built.resize(x.size());
-    q_built.resize(q.size());
-    displacement_.resize(x.size());
+    q_built = q;
+    displacement_.assign(x.size(), 0.0);
     release(x_near);
-    parallel_for(x.size(), [&](std::size_t i) {  // each body its own: a pour's 2,000 were ~2% of its serial rebuild
-      x_built[i] = x[i];
-      q_built[i] = q[i];
-      displacement_[i] = 0.0;
-    }, kMinParallel);
   }
   exceeded_.store(false, std::memory_order_relaxed);
   ++rebuild_count;
