@@ -41,16 +41,16 @@ void PairSearches::add(BodyPair p, const BodyMotion& now, double reach, const st
   begin.push_back(std::uint32_t(features.size()));
 }
 
-std::vector<std::int64_t> CandidateMemory::match(const std::vector<BodyPair>& near) const {
-  std::vector<std::int64_t> old(near.size(), -1);
+void CandidateMemory::match(const std::vector<BodyPair>& near, std::size_t first, std::size_t last,
+                            std::vector<std::int64_t>& old) const {
   const std::vector<BodyPair>& had = searches_.pairs;
   const auto less = [](BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; };
-  std::size_t e = 0;
-  for (std::size_t k = 0; k < near.size(); ++k) {
+  auto e = std::size_t(std::lower_bound(had.begin(), had.end(), near[first], less) - had.begin());
+  old.resize(last - first);
+  for (std::size_t k = first; k < last; ++k) {
     while (e < had.size() && less(had[e], near[k])) ++e;
-    if (e < had.size() && had[e] == near[k]) old[k] = std::int64_t(e);
+    old[k - first] = e < had.size() && had[e] == near[k] ? std::int64_t(e) : -1;
   }
-  return old;
 }
 
 double CandidateMemory::motion(std::size_t e, BodyPair p, const BodyMotion& now) const {
@@ -65,7 +65,6 @@ double CandidateMemory::motion(std::size_t e, BodyPair p, const BodyMotion& now)
 
 void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<PosedBody>& posed,
                            const BodyMotion& now, PairRange pair_range, PairList& list) {
-  const std::vector<std::int64_t> old = match(near);
   const std::size_t n_blocks = (near.size() + kCandidateBlock - 1) / kCandidateBlock;
   std::vector<CandidateBlock> blocks(n_blocks);
   std::vector<PairSearches> made(n_blocks);  // the new searches, block by block
@@ -75,11 +74,14 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
     std::vector<FeaturePair> wide, found;
     std::vector<double> wide2, found2;  // m^2
     std::vector<std::uint32_t> order;
+    std::vector<std::int64_t> old;  // the block's pairs' searches (match)
     CandidateBlock block;  // grown once per thread; each block is copied out at its exact size
 #pragma omp for schedule(dynamic, 1) nowait
     for (std::size_t blk = 0; blk < n_blocks; ++blk) {
       block.clear();
-      for (std::size_t k = blk * kCandidateBlock; k < std::min(near.size(), (blk + 1) * kCandidateBlock); ++k) {
+      const std::size_t first = blk * kCandidateBlock, last = std::min(near.size(), first + kCandidateBlock);
+      match(near, first, last, old);
+      for (std::size_t k = first; k < last; ++k) {
         const BodyPair p = near[k];
         const PosedBody& a = posed[p.i];
         const PosedBody& b = posed[p.j];
@@ -95,9 +97,10 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
           found2.push_back(d2);
           nearest2 = std::min(nearest2, d2);
         };
-        const double moved = old[k] >= 0 ? motion(std::size_t(old[k]), p, now) : 0.0;  // m
-        if (old[k] >= 0 && moved < searches_.looked[std::size_t(old[k])] - range) {  // false for NaN
-          const std::size_t e = std::size_t(old[k]);
+        const std::int64_t had = old[k - first];  // its last search, -1 when none
+        const double moved = had >= 0 ? motion(std::size_t(had), p, now) : 0.0;  // m
+        if (had >= 0 && moved < searches_.looked[std::size_t(had)] - range) {  // false for NaN
+          const std::size_t e = std::size_t(had);
           // A candidate that far then is beyond the cutoff now: no distance to take.
           const double beyond2 = (cutoff + moved) * (cutoff + moved);  // m^2
           for (std::uint32_t c = searches_.begin[e]; c < searches_.begin[e + 1]; ++c)

@@ -62,8 +62,10 @@ class CandidateMemory {
   std::size_t recalled() const { return recalled_; }  // pairs whose search was kept
 
  private:
-  // Index in searches_ of each near pair's search, -1 when none (both lists sorted by (i, j)).
-  std::vector<std::int64_t> match(const std::vector<BodyPair>& near) const;
+  // old[k - first]: the index in searches_ of near pair k's search, -1 when none, for k in
+  // [first, last) (both lists sorted by (i, j)): a block's own, so the blocks match on the team.
+  void match(const std::vector<BodyPair>& near, std::size_t first, std::size_t last,
+             std::vector<std::int64_t>& old) const;
   // m, how far pair p's core points may have come closer since its search e, with a margin
   // for round-off (NaN for a NaN state).
   double motion(std::size_t e, BodyPair p, const BodyMotion& now) const;

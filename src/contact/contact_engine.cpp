@@ -197,7 +197,8 @@ void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
   parallel_for(n, [&](std::size_t b) { posed_[b].position = world_vertices_[b] = position[b]; });
 }
 
-void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait) {
+void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait,
+                         std::size_t min_items) {
   const std::size_t n = some.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   // The arrays' addresses, copied into each thread's loop: read through the vectors, each body
@@ -207,7 +208,7 @@ void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint3
                           some.data(),             vertex_offset_.data(),      world_vertices_.data(),
                           posed_.data()};
   wait = wait && omp_get_level() > 0;  // a region of its own ends at its own barrier
-  in_team(n >= kParallelMinItems, [&] {
+  in_team(n >= min_items, [&] {
     const PoseArrays a = arrays;
     for (const auto [first, last] : team_shares(some, pass_cut()))  // the bodies this thread moved
       for (std::size_t e = first; e < last; ++e) pose_body(a, a.listed[e]);
@@ -282,7 +283,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
     } else {
       std::vector<std::uint32_t> posed_before = listed_posed ? std::move(listed_) : std::vector<std::uint32_t>{};
       mark_listed(bodies.size(), near, fresh_d.pairs);
-      pose(bodies, listed_posed ? newcomers(listed_, posed_before) : listed_);
+      // ~500 instructions a body: a pour's ~100 newcomers pay for the team, where the step has one
+      const std::size_t min_posed = bodies.size() >= kParallelMinItems ? kParallelMinHeavyItems : kParallelMinItems;
+      pose(bodies, listed_posed ? newcomers(listed_, posed_before) : listed_, true, min_posed);
       const PairRange range = skin_.empty() ? PairRange(range_p) : PairRange(band_particle_, skin_.data());
       memory_.find(near, posed_, {bodies.position->data(), bodies.orientation->data(), core_reach_.data()}, range,
                    fresh);
@@ -350,11 +353,11 @@ void ContactEngine::choose_skins(const LocalBodies& bodies) {
   const std::vector<Vec3>& v = *bodies.velocity;       // m/s
   const std::vector<Vec3>& w = *bodies.angular_velocity;  // rad/s
   skin_.resize(v.size());
-  for (std::size_t b = 0; b < v.size(); ++b) {
+  parallel_for(v.size(), [&](std::size_t b) {  // each body its own: 2,000 of them were ~4% of a pour's serial rebuild
     const double speed = v[b].norm() + core_reach_[b] * w[b].norm();  // m/s, of its fastest core point
     // NaN speed: std::max keeps the scene's skin (the trigger then sees the NaN position)
     skin_[b] = std::min(settings_.skin_max, std::max(settings_.skin, 2.0 * speed * skin_time_));
-  }
+  });
   // No body fast enough for more (a settled pile): the scene's skin each, by the lists' own path.
   if (std::all_of(skin_.begin(), skin_.end(), [&](double s) { return s == settings_.skin; })) skin_.clear();
 }

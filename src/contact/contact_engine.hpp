@@ -7,6 +7,7 @@
 
 #include "driver/drivers.hpp"
 #include "geometry/box_pose.hpp"
+#include "polydem/parallel.hpp"
 #include "polydem/shape.hpp"
 #include "contact/candidate_memory.hpp"
 #include "contact/contact_lists.hpp"
@@ -243,7 +244,9 @@ class ContactEngine {
 
  private:
   // The bodies `some` (increasing: listed_ or some of it), each thread its share of the cut.
-  void pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait = true);  // `wait`: a barrier at its end
+  // `wait`: a barrier at its end; min_items: the bodies that pay for waking a team outside one
+  void pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait = true,
+            std::size_t min_items = kParallelMinItems);
   void keep_sphere_poses(const LocalBodies& bodies, bool needed);
   void measure_in_team(const LocalBodies& bodies, bool watched, const OwnedPart* owned = nullptr);  // measure_motion in a team of its own, or the caller's
   // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.

@@ -3,11 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <string>
 
 #include "neighbor/cell_common.hpp"
-#include "polydem/error.hpp"
 
 namespace polydem {
 namespace {
@@ -24,20 +21,6 @@ constexpr double kDenseCellsPerBody = 8.0;
 constexpr double kMaxCoord = 1099511627776.0;  // 2^40 cells per axis
 constexpr double kMinCoord = -2.0;
 
-// Throws on a non-finite centre (a blown-up run); returns the bounding box corners.
-void bounding_box(const std::vector<Vec3>& centers, const std::vector<std::uint32_t>& members,
-                  Vec3& lo, Vec3& hi) {
-  lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  hi = -lo;
-  for (const std::uint32_t i : members) {
-    if (!centers[i].allFinite()) {
-      throw RunError("broad phase: body " + std::to_string(i) + " has a non-finite position");
-    }
-    lo = lo.cwiseMin(centers[i]);
-    hi = hi.cwiseMax(centers[i]);
-  }
-}
-
 // Cell index along one axis, as a double so a huge domain cannot overflow.
 double cell_coordinate(double x, double lo, double cell) {
   return std::clamp(std::floor((x - lo) / cell), kMinCoord, kMaxCoord);
@@ -46,9 +29,9 @@ double cell_coordinate(double x, double lo, double cell) {
 }  // namespace
 
 void CellGrid::build(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                     const std::vector<std::uint32_t>& members, double cell) {
-  Vec3 hi;
-  bounding_box(centers, members, lo, hi);
+                     const std::vector<std::uint32_t>& members, double cell, const Vec3& box_lo,
+                     const Vec3& hi) {
+  lo = box_lo;
   side = cell;
   double grid_cells = 1.0;
   for (int d = 0; d < 3; ++d) grid_cells *= cell_coordinate(hi[d], lo[d], cell) + 1.0;

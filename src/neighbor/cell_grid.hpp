@@ -21,10 +21,10 @@ class CellGrid {
   static constexpr int kForward = 13;  // half of the 26 neighbour cells: each cell pair once
   static constexpr int kAround = 27;   // a cell and its 26 neighbours
 
-  // Sorts the bodies `members` (indices into centers and radii) into cells of side `cell` (m).
-  // Throws RunError on a non-finite centre.
+  // Sorts the bodies `members` (indices into centers and radii, finite) into cells of side `cell`
+  // (m) over their centres' bounding box [lo, hi] (m).
   void build(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-             const std::vector<std::uint32_t>& members, double cell);
+             const std::vector<std::uint32_t>& members, double cell, const Vec3& lo, const Vec3& hi);
 
   std::size_t cell_count() const { return cells; }
   bool hashed() const { return !dense; }

@@ -9,6 +9,7 @@
 
 #include "neighbor/broad_phase.hpp"
 #include "neighbor/cell_common.hpp"
+#include "polydem/error.hpp"
 
 namespace polydem {
 namespace {
@@ -32,13 +33,17 @@ double cell_side(const std::vector<Vec3>& centers, const std::vector<double>& ra
   if (centers.size() >= std::numeric_limits<std::uint32_t>::max()) {
     throw std::invalid_argument("build_pairs: 2^32 - 1 bodies or more");
   }
-  double max_r = 0.0;
-  for (std::size_t i = 0; i < radii.size(); ++i) {
-    if (!(radii[i] >= 0.0) || !std::isfinite(radii[i])) {
-      throw std::invalid_argument("build_pairs: body " + std::to_string(i) +
-                                  " has bounding radius " + std::to_string(radii[i]));
-    }
-    max_r = std::max(max_r, radii[i]);
+  const std::size_t n = radii.size();
+  double max_r = 0.0;   // m, exact in any order
+  std::size_t bad = n;  // the first body with a negative or non-finite radius
+#pragma omp parallel for schedule(static) reduction(max : max_r) reduction(min : bad) if (n >= kMinParallel)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(radii[i] >= 0.0) || !std::isfinite(radii[i])) bad = std::min(bad, i);
+    else max_r = std::max(max_r, radii[i]);
+  }
+  if (bad < n) {
+    throw std::invalid_argument("build_pairs: body " + std::to_string(bad) + " has bounding radius " +
+                                std::to_string(radii[bad]));
   }
   return (2.0 * max_r + skin) * kCellMargin;
 }
@@ -85,6 +90,38 @@ void pairs_across(const CellGrid& fine, std::size_t c, const CellGrid& coarse, c
   }
 }
 
+// Some bodies (a thread's run) by level: each level's bodies in index order and the bounding box
+// of their centres, and the first body with a non-finite centre.
+struct LevelBoxes {
+  explicit LevelBoxes(std::size_t none) : bad(none) {
+    for (int l = 0; l < CellList::kMaxLevels; ++l) {
+      lo[l] = Vec3::Constant(std::numeric_limits<double>::infinity());
+      hi[l] = -lo[l];
+    }
+  }
+  void add(int l, std::size_t i, const Vec3& x) {
+    members[l].push_back(static_cast<std::uint32_t>(i));
+    if (!x.allFinite()) {
+      bad = std::min(bad, i);
+      return;
+    }
+    lo[l] = lo[l].cwiseMin(x);
+    hi[l] = hi[l].cwiseMax(x);
+  }
+  // The bodies after this one's (a later run): appended, boxes joined (min and max: exact in any order).
+  void join(const LevelBoxes& later) {
+    bad = std::min(bad, later.bad);
+    for (int l = 0; l < CellList::kMaxLevels; ++l) {
+      members[l].insert(members[l].end(), later.members[l].begin(), later.members[l].end());
+      lo[l] = lo[l].cwiseMin(later.lo[l]);
+      hi[l] = hi[l].cwiseMax(later.hi[l]);
+    }
+  }
+  std::vector<std::uint32_t> members[CellList::kMaxLevels];
+  Vec3 lo[CellList::kMaxLevels], hi[CellList::kMaxLevels];  // m
+  std::size_t bad;
+};
+
 }  // namespace
 
 void CellList::build_pairs(const std::vector<Vec3>& centers, const std::vector<double>& radii,
@@ -105,22 +142,35 @@ void CellList::bin_levels(const std::vector<Vec3>& centers, const std::vector<do
                           double skin, double top_cell) {
   double sides[kMaxLevels];  // m, exact halvings of the top cell side
   for (int level = 0; level < kMaxLevels; ++level) sides[level] = std::ldexp(top_cell, -level);
-  members.resize(kMaxLevels);
-  for (auto& list : members) list.clear();
-  for (std::size_t i = 0; i < radii.size(); ++i) {
-    members[static_cast<std::size_t>(level_of(radii[i], skin, sides))].push_back(
-        static_cast<std::uint32_t>(i));
+  const std::size_t n = radii.size();
+  const std::size_t threads = n >= kMinParallel ? std::size_t(omp_get_max_threads()) : 1;
+  std::vector<LevelBoxes> parts(threads, LevelBoxes(n));  // a smaller team's rest: empty
+#pragma omp parallel num_threads(int(threads)) if (threads > 1)
+  {
+    const std::size_t t = std::size_t(omp_get_thread_num()), team = std::size_t(omp_get_num_threads());
+    LevelBoxes& mine = parts[t];
+    for (std::size_t i = n * t / team; i < n * (t + 1) / team; ++i)
+      mine.add(level_of(radii[i], skin, sides), i, centers[i]);
   }
+  LevelBoxes& all = parts[0];  // the runs joined in order: each level's bodies in index order
+  for (std::size_t t = 1; t < threads; ++t) all.join(parts[t]);
+  if (all.bad < n) {
+    throw RunError("broad phase: body " + std::to_string(all.bad) + " has a non-finite position");
+  }
+  members.resize(kMaxLevels);
+  for (int l = 0; l < kMaxLevels; ++l) std::swap(members[static_cast<std::size_t>(l)], all.members[l]);
   double used_sides[kMaxLevels];
-  for (int level = 0; level < kMaxLevels; ++level) {
-    if (members[static_cast<std::size_t>(level)].empty()) continue;
-    std::swap(members[used_levels], members[static_cast<std::size_t>(level)]);
-    used_sides[used_levels++] = sides[level];
+  int used_level[kMaxLevels];
+  for (int l = 0; l < kMaxLevels; ++l) {
+    if (members[static_cast<std::size_t>(l)].empty()) continue;
+    std::swap(members[used_levels], members[static_cast<std::size_t>(l)]);
+    used_level[used_levels] = l;
+    used_sides[used_levels++] = sides[l];
   }
   if (grids.size() < used_levels) grids.resize(used_levels);
   cell_offset.assign(1, 0);
   for (std::size_t g = 0; g < used_levels; ++g) {
-    grids[g].build(centers, radii, members[g], used_sides[g]);
+    grids[g].build(centers, radii, members[g], used_sides[g], all.lo[used_level[g]], all.hi[used_level[g]]);
     cell_offset.push_back(cell_offset.back() + grids[g].cell_count());
   }
 }

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -153,7 +154,7 @@ TEST_CASE("candidate tests per body stay bounded as N grows at fixed density", "
   }
 }
 
-TEST_CASE("output is identical with 1 and 2 threads", "[broad_phase][determinism]") {
+TEST_CASE("output is identical with 1, 2 and 3 threads", "[broad_phase][determinism]") {
   // A compact scene (one dense grid), a sparse clustered one (hashed cells) and a 1:10
   // polydisperse one (four size classes): every code path.
   const Scene compact = test::uniform_scene(20000, 35.0, 0.5, 1.0, 18);
@@ -166,18 +167,20 @@ TEST_CASE("output is identical with 1 and 2 threads", "[broad_phase][determinism
   const Scene* scenes[3] = {&compact, &sparse, &mixed};
   for (int k = 0; k < 3; ++k) {
     std::vector<BodyPair> one;
-    std::vector<BodyPair> two;
     omp_set_num_threads(1);
     cells.build_pairs(scenes[k]->centers, scenes[k]->radii, 0.1, one);
     const std::size_t tests_one = cells.candidate_tests();
-    omp_set_num_threads(2);
-    cells.build_pairs(scenes[k]->centers, scenes[k]->radii, 0.1, two);
+    REQUIRE(!one.empty());
+    for (int team : {2, 3}) {  // the levels and boxes binned by threads, each its run of bodies
+      std::vector<BodyPair> more;
+      omp_set_num_threads(team);
+      cells.build_pairs(scenes[k]->centers, scenes[k]->radii, 0.1, more);
+      REQUIRE(one == more);
+      REQUIRE(tests_one == cells.candidate_tests());
+    }
     omp_set_num_threads(threads);
     used_hash[k] = cells.hashed();
     levels[k] = cells.levels();
-    REQUIRE(!one.empty());
-    REQUIRE(one == two);
-    REQUIRE(tests_one == cells.candidate_tests());
   }
   REQUIRE_FALSE(used_hash[0]);
   REQUIRE(levels[0] == 1);
@@ -194,6 +197,21 @@ TEST_CASE("bad arguments and a blown-up state are reported", "[broad_phase]") {
   REQUIRE_THROWS_AS(cells.build_pairs(x, {1.0, 1.0}, -0.1, out), std::invalid_argument);
   const std::vector<Vec3> nan{Vec3::Zero(), Vec3(0.0, std::nan(""), 0.0)};
   REQUIRE_THROWS_AS(cells.build_pairs(nan, {1.0, 1.0}, 0.1, out), RunError);
+  // Enough bodies to bin on the team: each error names the first bad body, at any thread count.
+  const int threads = omp_get_max_threads();
+  for (int team : {1, 2, 3}) {
+    omp_set_num_threads(team);
+    const test::Scene s = test::uniform_scene(5000, 30.0, 0.5, 1.0, 19);
+    std::vector<Vec3> blown = s.centers;
+    blown[4321].y() = std::numeric_limits<double>::infinity();
+    blown[2718].x() = std::nan("");
+    REQUIRE_THROWS_WITH(cells.build_pairs(blown, s.radii, 0.1, out), Catch::Contains("body 2718 "));
+    std::vector<double> radii = s.radii;
+    radii[3999] = -1.0;
+    radii[1414] = std::nan("");
+    REQUIRE_THROWS_WITH(cells.build_pairs(s.centers, radii, 0.1, out), Catch::Contains("body 1414 "));
+  }
+  omp_set_num_threads(threads);
 }
 
 }  // namespace
