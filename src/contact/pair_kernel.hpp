@@ -148,8 +148,6 @@ struct PairScratch {
   std::vector<PatchDrift> all_drift;  // the pair's sub-contacts over the step (patch_pushes)
   std::vector<PatchDrift> drift;      // one region's of them
   bool pushes = false;                // patch_push is set for some contact of this pair
-  std::vector<FoundContact> waiting_found;  // a waiting pair's sub-contacts and weights (lone_pairs.hpp), swapped in
-  std::vector<double> waiting_weight;
 };
 
 // The sub-contacts whose overlap starts this step (none at n) in a patch of several (their region;
@@ -346,25 +344,17 @@ struct PairLaw {
   PairTotals& totals;
 };
 
-// A pair whose sub-contacts go through the lanes' law as a stream across pairs (lone_pairs.hpp):
-// what apply_law made of it, its sub-contacts (the scratch's, or where it waits for the next such
-// pair: parked), its totals (the hand-over's energy) until the law has added every contact.
+// A pair of one sub-contact through the lanes' law, waiting for another such pair to run the
+// two contacts side by side (lone_pairs.hpp): what apply_law made of it, its contact (copied out
+// of the scratch only when it waits), its totals (the hand-over's energy) until the law adds it.
 struct LonePair {
   std::uint32_t k;
-  const FoundContact* found;  // its n sub-contacts and their patch weights
-  const double* weight;
-  std::uint32_t n;
-  FoundContact one;     // a waiting pair's lone sub-contact, copied (a larger one's vectors are swapped)
-  double one_weight;
+  FoundContact contact;
   LaneConstants lc;
   double nu_t, r_star;  // N s/m, m
   bool exact_step;
   PairTotals totals;
 };
-
-// What stream_lanes did with pair b: its contacts all done (a, if waiting, still waits), or its
-// last beside the waiting pair a's (both done), or its last left to wait for the next such pair.
-enum class Streamed { kDone, kBoth, kWaits };
 
 // Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
 // kSteady: a steady lane's contact (law_lanes.hpp), whose sliding and rolling shares are +0: not
@@ -472,8 +462,8 @@ constexpr bool lanes_law() {
 }
 
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
-// their forces, torques and energy to `totals`. With `lone` (kLone), a pair whose sub-contacts go
-// through the lanes is left there instead (its totals too), for lone_pairs.hpp: false then.
+// their forces, torques and energy to `totals`. With `lone` (kLone), a pair whose one sub-contact
+// goes through the lanes is left there instead (its totals too), for lone_pairs.hpp: false then.
 template <class Parts, bool kLone = false, class Partner>
 [[gnu::always_inline]] inline bool apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, double r_star,
@@ -500,11 +490,8 @@ template <class Parts, bool kLone = false, class Partner>
     laned = !law.contact_mass && !(law.exact_step && exact_step && law.alpha_n > 0.0) && law.mu > 0.0 && nu >= 0.0 &&
             !scratch.pushes;  // a changed patch's shares move: every one takes its push
     if constexpr (kLone) {
-      if (laned && !scratch.onsets) {  // `totals` are lone->totals (lone_paired_pairs)
-        lone->k = k;
-        lone->found = scratch.found.data();
-        lone->weight = scratch.weight.data();
-        lone->n = std::uint32_t(scratch.found.size());
+      if (laned && scratch.found.size() == 1) {  // `totals` are lone->totals (lone_paired_pairs)
+        lone->k = k;  // its contact stays in the scratch until it waits (LonePairKernel::park)
         lone->lc = {xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt};
         lone->nu_t = nu_t;
         lone->r_star = r_star;
@@ -554,7 +541,7 @@ template <class Partner>
 }
 
 // Pair k's forces, torques and energy in `totals`; true. With `lone` (kLone), false where the
-// pair's sub-contacts are left there for the lanes' law instead (apply_law).
+// pair's one sub-contact waits there for the lanes' law instead (apply_law).
 template <class Parts, bool kLone, class Partner>
 [[gnu::always_inline]] inline bool pair_forces_into(const LawParams& law, double band, double dt,
                                                     const BodyView& bodies, const Partner& partner, PairList& list,

@@ -145,52 +145,44 @@ template <class Kernel, class Add>
   if (waiting != kNone) lone(waiting);
 }
 
-// Pairs [k, stop) through a kernel that runs the sub-contacts of pairs through the lanes two at a
-// time (lone_pairs.hpp): a pair whose odd last contact has no lane partner waits, and the next such
-// pair's odd last takes the other lane. Each pair's terms go to `add` in list order: up
-// to kHeld pairs with contacts between the two wait with them (their totals made in their slot);
-// one more sends the waiting pair alone and the held ones after it. The slots are a ring: the pair
-// left waiting stays where it was made.
+// Pairs [k, stop) through a kernel that leaves a pair of one steady sub-contact waiting
+// (lone_pairs.hpp): the next such pair takes the other lane. Each pair's terms go to `add` in
+// list order: up to kHeld pairs with contacts between the two wait with them (their totals made
+// in their slot); one more sends the waiting pair alone and the held ones after it.
 template <class Kernel, class Add>
 [[gnu::always_inline]] inline void lone_paired_pairs(PairList& list, const Kernel& kernel, const Add& add,
                                                      PairScratch& scratch, std::uint32_t k, std::uint32_t stop,
                                                      std::uint32_t& contacts, bool& ended) {
   using Lone = typename Kernel::Lone;
-  constexpr int kHeld = 2, kSlots = 4;  // kSlots >= kHeld + 2, a power of two
-  Lone slot[kSlots];  // from `head`: the waiting pair, then the held ones in list order, then the next pair
-  int head = 0, used = 0;  // slots head + [0, used) wait
-  const auto at = [&](int i) -> Lone& { return slot[(head + i) & (kSlots - 1)]; };
+  constexpr int kHeld = 2;
+  Lone slot[kHeld + 2];  // slot[0] the waiting pair, then the held ones in list order, then the next pair
+  int used = 0;          // slots [0, used) wait
   const auto take = [&](const Lone& l) __attribute__((always_inline)) {
     add(l.k, l.totals);
     keep_pair(list, l.k, l.totals, contacts, ended);
   };
-  const auto held = [&]() __attribute__((always_inline)) {
-    for (int h = 1; h < used; ++h) add(at(h).k, at(h).totals);
-  };
   const auto alone = [&]() __attribute__((noinline)) {  // the waiting pair without a partner, then the held ones
-    kernel.alone(at(0), scratch);
-    take(at(0));
-    held();
+    kernel.alone(slot[0], scratch);
+    take(slot[0]);
+    for (int h = 1; h < used; ++h) add(slot[h].k, slot[h].totals);
     used = 0;
   };
   for (; k < stop; ++k) {
-    Lone& next = at(used);
+    Lone& next = slot[used];
     PairTotals& pt = next.totals;  // made in place: a waiting or held pair's stay there
     pt = PairTotals{};
     if (!kernel.forces(k, scratch, pt, next)) {
-      const Streamed s = kernel.lanes(used ? &at(0) : nullptr, next, scratch);
-      if (s == Streamed::kWaits) {
-        head = (head + used) & (kSlots - 1);
+      if (used == 0) {
+        kernel.park(next, scratch);
         used = 1;
         continue;
       }
-      if (s == Streamed::kBoth) {
-        take(at(0));
-        held();
-        take(next);
-        used = 0;
-        continue;
-      }
+      kernel.lanes(slot[0], next, scratch);
+      take(slot[0]);
+      for (int h = 1; h < used; ++h) add(slot[h].k, slot[h].totals);
+      take(next);
+      used = 0;
+      continue;
     }
     keep_pair(list, k, pt, contacts, ended);
     if (pt.contacts == 0) {  // out of reach: its terms are +0

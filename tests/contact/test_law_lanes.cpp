@@ -6,10 +6,8 @@
 #include <cstring>
 #include <random>
 #include <tuple>
-#include <vector>
 
 #include "contact/law_lanes.hpp"
-#include "contact/lone_pairs.hpp"
 
 using namespace polydem;
 
@@ -153,128 +151,5 @@ TEST_CASE("law lanes across pairs: each lane has its own pair's one-lane bits", 
     }
   }
   CHECK(steady > 15000);
-  CHECK(left > 1000);
-}
-
-namespace {
-
-// A pair of 1 to 4 sub-contacts (patch weights summing to 1) in a stream of pairs, with its
-// own motions, m_eff and nu; its states (histories, records) in `states` from `first`.
-struct StreamPair {
-  LaneConstants lc;
-  std::vector<FoundContact> found;
-  std::vector<double> weight;
-};
-
-StreamPair random_stream_pair(Draw& d, const LawParams& law) {
-  const double m_eff = d.uniform(1e-3, 3e-3);  // kg
-  StreamPair p{LaneConstants{d.vec(0.1), d.vec(0.01), d.vec(1.0), d.vec(0.01), d.vec(1.0), m_eff,
-                             pair_damping(law, m_eff), law.kn, law.kt, law.mu, 6.6e-6},
-               {},
-               {}};
-  const int n = 1 + int(d.uniform(0.0, 4.0));
-  double total = 0.0;
-  for (int c = 0; c < n; ++c) {
-    p.found.emplace_back(std::uint32_t(c), random_point(d));
-    p.weight.push_back(n == 1 ? 1.0 : d.uniform(0.05, 1.0));
-    total += p.weight.back();
-  }
-  if (n > 1)
-    for (double& w : p.weight) w /= total;
-  return p;
-}
-
-// Where each sub-contact went: its lane's force added (steady), or left to contact_force.
-struct Settled {
-  std::vector<PairTotals> totals;
-  std::vector<std::vector<int>> steady;  // per pair and contact: 1 steady, 0 left
-};
-
-// The pairs' sub-contacts (states in `states`, one per contact in order) each through
-// steady_alone in its pair's order: the one-lane reference.
-Settled one_lane(const std::vector<StreamPair>& pairs, std::vector<SlotState>& states) {
-  Settled out{std::vector<PairTotals>(pairs.size()), std::vector<std::vector<int>>(pairs.size())};
-  std::size_t s = 0;
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    for (std::size_t c = 0; c < pairs[i].found.size(); ++c, ++s) {
-      FoundContact found = pairs[i].found[c];
-      found.state = &states[s];
-      ContactForce f;
-      Vec3 torque;
-      const bool steady = steady_alone(pairs[i].lc, found.geometry, pairs[i].weight[c], states[s].history, f, torque);
-      if (steady) add_to_totals<true>(found, out.totals[i], f, torque);
-      out.steady[i].push_back(steady);
-    }
-  return out;
-}
-
-// The same pairs as one stream through the lanes (lone_pairs.hpp's stream_lanes, stream_last).
-Settled streamed(const std::vector<StreamPair>& pairs, std::vector<SlotState>& states) {
-  std::vector<std::vector<FoundContact>> found;
-  for (const StreamPair& p : pairs) found.push_back(p.found);
-  std::vector<LonePair> lone(pairs.size());
-  std::size_t s = 0;
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    for (FoundContact& f : found[i]) f.state = &states[s++];
-    lone[i].found = found[i].data();
-    lone[i].weight = pairs[i].weight.data();
-    lone[i].n = std::uint32_t(found[i].size());
-    lone[i].lc = pairs[i].lc;
-  }
-  Settled out{std::vector<PairTotals>(pairs.size()), std::vector<std::vector<int>>(pairs.size())};
-  for (std::size_t i = 0; i < pairs.size(); ++i) out.steady[i].assign(found[i].size(), -1);
-  const auto settle = [&](LonePair& a, std::uint32_t c, bool steady, const ContactForce& f, const Vec3& torque) {
-    const std::size_t i = std::size_t(&a - lone.data());
-    REQUIRE(out.steady[i][c] == -1);  // each contact once
-    for (std::uint32_t before = 0; before < c; ++before) REQUIRE(out.steady[i][before] != -1);  // in its pair's order
-    if (steady) add_to_totals<true>(a.found[c], a.totals, f, torque);
-    out.steady[i][c] = steady;
-  };
-  LonePair* waiting = nullptr;
-  for (LonePair& b : lone) {
-    const Streamed s = stream_lanes(waiting, b, settle);
-    if (s != Streamed::kDone) waiting = s == Streamed::kWaits ? &b : nullptr;
-  }
-  if (waiting) stream_last(*waiting, settle);
-  for (std::size_t i = 0; i < pairs.size(); ++i) out.totals[i] = lone[i].totals;
-  return out;
-}
-
-}  // namespace
-
-TEST_CASE("law lanes as a stream across pairs: each pair's contacts have its own one-lane bits", "[law]") {
-  const LawParams law = pile_law();
-  Draw d;
-  int across = 0, left = 0;
-  for (int trial = 0; trial < 3000; ++trial) {
-    std::vector<StreamPair> pairs;
-    std::vector<SlotState> start;
-    for (int i = 0; i < 6; ++i) {
-      pairs.push_back(random_stream_pair(d, law));
-      for (double w : pairs.back().weight) start.push_back(SlotState{random_history(d, w), SlotRecord{}});
-    }
-    std::vector<SlotState> alone = start, lanes = start;
-    const Settled expected = one_lane(pairs, alone), got = streamed(pairs, lanes);
-    for (std::size_t s = 0; s < start.size(); ++s) {
-      REQUIRE(same_bits(lanes[s].history, alone[s].history));
-      REQUIRE(same_bits(lanes[s].record.force, alone[s].record.force));
-      REQUIRE(same_bits(lanes[s].record.point, alone[s].record.point));
-      REQUIRE(same_bits(lanes[s].record.fn, alone[s].record.fn));
-    }
-    bool odd = false;  // a pair of an odd count waits
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-      REQUIRE(got.steady[i] == expected.steady[i]);
-      REQUIRE(same_bits(got.totals[i].force_i, expected.totals[i].force_i));
-      REQUIRE(same_bits(got.totals[i].torque_i, expected.totals[i].torque_i));
-      REQUIRE(same_bits(got.totals[i].energy.net, expected.totals[i].energy.net));
-      REQUIRE(same_bits(got.totals[i].energy.patch, expected.totals[i].energy.patch));
-      if (pairs[i].found.size() % 2 == 1) {  // its last beside the waiting pair's, or waits
-        across += odd;
-        odd = !odd;
-      }
-      for (int steady : got.steady[i]) left += steady == 0;
-    }
-  }
-  CHECK(across > 3000);
   CHECK(left > 1000);
 }
