@@ -29,31 +29,39 @@ struct LonePairKernel {
   [[gnu::always_inline]] bool forces(std::uint32_t k, PairScratch& scratch, PairTotals& totals, LonePair& lone) const {
     return pair_forces_into<Parts, true>(law, band, dt, bodies, partner, list, k, scratch, totals, &lone);
   }
-  // Two waiting pairs' contacts side by side: each one's totals made.
+  // The pair made last leaves the scratch to wait: its contact copied out.
+  [[gnu::always_inline]] void park(LonePair& a, const PairScratch& scratch) const { a.contact = scratch.found[0]; }
+  // The waiting pair a's contact beside b's, still in the scratch: each one's totals made.
   [[gnu::always_inline]] void lanes(LonePair& a, LonePair& b, PairScratch& scratch) const {
+    const FoundContact* bc = &scratch.found[0];
     const LaneConstants* const pc[2] = {&a.lc, &b.lc};
-    const ContactPoint* const g[2] = {&a.contact.geometry, &b.contact.geometry};
+    const ContactPoint* const g[2] = {&a.contact.geometry, &bc->geometry};
     const double w[2] = {1.0, 1.0};  // a lone contact's patch weight
-    ContactHistory* const h[2] = {&a.contact.state->history, &b.contact.state->history};
+    ContactHistory* const h[2] = {&a.contact.state->history, &bc->state->history};
     ContactForce f[2];
     Vec3 torque[2];
     const unsigned steady = steady_law<2, true>(pc, g, w, h, f, torque);
-    finish(a, (steady & 1u) != 0, f[0], torque[0], scratch);
-    finish(b, (steady & 2u) != 0, f[1], torque[1], scratch);
+    if (steady != 3u) [[unlikely]] {  // by_law takes the scratch: b's contact copied out first
+      b.contact = *bc;
+      bc = &b.contact;
+    }
+    finish(a, a.contact, (steady & 1u) != 0, f[0], torque[0], scratch);
+    finish(b, *bc, (steady & 2u) != 0, f[1], torque[1], scratch);
   }
   // A waiting pair without a partner: its contact in one lane.
   void alone(LonePair& a, PairScratch& scratch) const {
     ContactForce f;
     Vec3 torque;
     const bool steady = steady_alone(a.lc, a.contact.geometry, 1.0, a.contact.state->history, f, torque);
-    finish(a, steady, f, torque, scratch);
+    finish(a, a.contact, steady, f, torque, scratch);
   }
 
  private:
-  // a's totals from its lane's force f and torque (steady) or contact_force, as apply_law's.
-  [[gnu::always_inline]] void finish(LonePair& a, bool steady, const ContactForce& f, const Vec3& torque,
-                                     PairScratch& scratch) const {
-    if (steady) add_to_totals<true>(a.contact, a.totals, f, torque);
+  // a's totals from its lane's force f and torque (steady) or contact_force, as apply_law's; its
+  // contact c (a.contact, or b's in the scratch while it is steady).
+  [[gnu::always_inline]] void finish(LonePair& a, const FoundContact& c, bool steady, const ContactForce& f,
+                                     const Vec3& torque, PairScratch& scratch) const {
+    if (steady) add_to_totals<true>(c, a.totals, f, torque);
     else by_law(a, scratch);
     const Vec3& xi = a.lc.xi;  // m
     a.totals.torque_j = -(a.totals.torque_i + (xi - partner.center(list.pairs[a.k].j)).cross(a.totals.force_i));

@@ -345,8 +345,8 @@ struct PairLaw {
 };
 
 // A pair of one sub-contact through the lanes' law, waiting for another such pair to run the
-// two contacts side by side (lone_pairs.hpp): what apply_law made of it, its contact copied out
-// of the scratch, its totals (the hand-over's energy) until the law adds the contact.
+// two contacts side by side (lone_pairs.hpp): what apply_law made of it, its contact (copied out
+// of the scratch only when it waits), its totals (the hand-over's energy) until the law adds it.
 struct LonePair {
   std::uint32_t k;
   FoundContact contact;
@@ -491,8 +491,7 @@ template <class Parts, bool kLone = false, class Partner>
             !scratch.pushes;  // a changed patch's shares move: every one takes its push
     if constexpr (kLone) {
       if (laned && scratch.found.size() == 1) {  // `totals` are lone->totals (lone_paired_pairs)
-        lone->k = k;
-        lone->contact = scratch.found[0];
+        lone->k = k;  // its contact stays in the scratch until it waits (LonePairKernel::park)
         lone->lc = {xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt};
         lone->nu_t = nu_t;
         lone->r_star = r_star;

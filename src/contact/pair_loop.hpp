@@ -173,6 +173,7 @@ template <class Kernel, class Add>
     pt = PairTotals{};
     if (!kernel.forces(k, scratch, pt, next)) {
       if (used == 0) {
+        kernel.park(next, scratch);
         used = 1;
         continue;
       }
