@@ -8,14 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 bin=$1 rounds=${2:-5} steps=${3:-5000}
-case ${SCENE:-spheres} in
-  spheres) state=build/bench/peers/polydem scene=tools/bench/peers/spheres.yaml ;;
-  cubes) state=build/bench/cubes scene=tools/bench/cubes.yaml ;;
-  *) echo "SCENE is spheres or cubes, not '$SCENE'" >&2; exit 1 ;;
-esac
-[ -f "$state/settled.bin" ] || { echo "no $state/settled.bin: see run_efficiency.sh" >&2; exit 1; }
-dt=$("$bin" check "$scene" | awk '/chosen time step/ {print $4}')  # s
-until=$(python3 -c "print($(tail -1 "$state/energy.csv" | cut -d, -f1) + $steps * $dt)")
+source tools/bench/peers/settled_bed.sh
+settled_bed "$bin" "$steps"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 out=build/bench/ceiling
 run() {  # output tag, then the launcher's words before the binary; prints the run's log

@@ -8,14 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 new=$1 old=$2 rounds=${3:-5} steps=${4:-10000}
-case ${SCENE:-spheres} in
-  spheres) state=build/bench/peers/polydem scene=tools/bench/peers/spheres.yaml maker=run_peers.sh ;;
-  cubes) state=build/bench/cubes scene=tools/bench/cubes.yaml maker=run_bench.sh ;;
-  *) echo "SCENE is spheres or cubes, not '$SCENE'" >&2; exit 1 ;;
-esac
-[ -f "$state/settled.bin" ] || { echo "no $state/settled.bin: run tools/bench/$maker first" >&2; exit 1; }
-dt=$("$new" check "$scene" | awk '/chosen time step/ {print $4}')  # s
-until=$(python3 -c "print($(tail -1 "$state/energy.csv" | cut -d, -f1) + $steps * $dt)")
+source tools/bench/peers/settled_bed.sh
+settled_bed "$new" "$steps"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 out=build/bench/efficiency
 loop_seconds() {  # launcher and binary (unquoted: words), threads
