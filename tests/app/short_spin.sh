@@ -16,6 +16,11 @@ first_line | grep -q "2 threads, OMP_WAIT_POLICY=passive, output" || fail "the u
 bare GOMP_SPINCOUNT=20000 "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until 2e-3 --threads 2 2> "$tmp/err"
 first_line | grep -q "2 threads, GOMP_SPINCOUNT=20000, output" || fail "the user's spin lost: $(first_line)"
 
+# Threads the user binds: no second image, which would inherit the first thread's one core.
+bare OMP_PROC_BIND=true "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until 2e-3 --threads 2 2> "$tmp/err"
+first_line | grep -q "2 threads, OMP_PROC_BIND=true, output" || fail "bound threads started again: $(first_line)"
+if [ "$(nproc)" -ge 2 ] && grep -q "on 1 cores" "$tmp/err"; then fail "bound threads on one core: $(cat "$tmp/err")"; fi
+
 # Arguments and exit code through the second image.
 expect_exit 1 "--until: expected a time" bare "$polydem" run "$tmp/drop.yaml" --out "$tmp/o" --until nan
 
