@@ -16,15 +16,19 @@ namespace {
 // (~30 ns a body).
 constexpr std::size_t kMinParallel = 1024;
 
-// margins' loop, one per kind of bound and skin (no test of the kind a body): each body's bound
-// d (m) against its skin s (m), the ghosts left out.
+// One body's part of the pair rule: its bound d (m) against its skin s (m).
+template <bool kUniform>
+[[gnu::always_inline]] inline void add_margin(PairMargins& m, double d, double s, double driver_shift) {
+  if (!(d + driver_shift <= s)) m.alone = true;  // past a driver's reach, or NaN
+  m.add(kUniform ? d : d - 0.5 * s);
+}
+
+// margins' loop, one per kind of bound and skin (no test of the kind a body), the ghosts left out.
 template <bool kUniform, class Bound, class Skin>
 void add_margins(PairMargins& m, std::size_t n, const std::uint8_t* ghost, double driver_shift, Bound d_of, Skin s_of) {
   for (std::size_t i = 0; i < n; ++i) {
     if (ghost && ghost[i]) continue;  // its owner's part answers for it
-    const double d = d_of(i), s = s_of(i);  // m
-    if (!(d + driver_shift <= s)) m.alone = true;  // past a driver's reach, or NaN
-    m.add(kUniform ? d : d - 0.5 * s);
+    add_margin<kUniform>(m, d_of(i), s_of(i), driver_shift);
   }
 }
 
@@ -130,7 +134,7 @@ bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* 
   const std::uint8_t* ghost = owned.ghost;
   const double driver_shift = owned.driver_shift;  // m
   const bool ghosts_later = owned.ghosts_later;
-  bool exceeded = false, alone = false;
+  bool exceeded = false;
   PairMargins top;  // a local copy: kept in registers
   for (std::size_t i = first; i < last; ++i) {
     if (ghost && ghost[i]) {  // its owner's part answers for it
@@ -141,11 +145,10 @@ bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* 
     bound[i] = d;
     const double s = kUniform ? skin : skins[i];  // m
     if (!(d <= move_limit(s))) exceeded = true;
-    if (!(d + driver_shift <= s)) alone = true;  // past a driver's reach, or NaN
-    top.add(kUniform ? d : d - 0.5 * s);
+    add_margin<kUniform>(top, d, s, driver_shift);
   }
   for (double v : top.top) m.add(v);
-  m.alone = m.alone || alone;
+  m.alone = m.alone || top.alone;
   return exceeded;
 }
 
@@ -157,7 +160,7 @@ bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* 
                                                      const std::vector<double>& bounding_radius, double skin,
                                                      TeamCut cut, const OwnedPart& owned) {
   bool exceeded = false;  // by this thread's bodies
-  PairMargins m;          // of this thread's owned bodies: add_margins' arithmetic
+  PairMargins m;          // of this thread's owned bodies: add_margin's arithmetic
   for (const auto [first, last] : team_shares(x.size(), cut)) {
     const auto loop = skin_.empty() ? owned_loop<true> : owned_loop<false>;
     if (loop(first, last, x.data(), q.data(), bounding_radius.data(), x_built.data(), q_built.data(), skin_.data(),
