@@ -641,7 +641,7 @@ std::vector<BodyTurn> ContactEngine::take_turns(const std::vector<std::uint8_t>*
 void ContactEngine::close_forces(const LocalBodies& bodies, Drivers& drivers) {
   add_totals();
   flush_ended(bodies.ghost);
-  reduce_drivers(drivers);
+  if (reactions_wanted_) reduce_drivers(drivers);
 }
 
 void ContactEngine::add_totals() {

@@ -202,6 +202,11 @@ class ContactEngine {
     if (spheres_only_) body_list_.set_recording(on);
   }
   bool records_contacts() const { return record_contacts_; }
+  // Whether close_forces sums the drivers' reactions (pair order, on one thread: ~24k
+  // instructions a sphere bed step): on by default; the run loop turns it off for steps after
+  // which nothing reads them (fixed drivers: no servo, no driver work). The drivers then keep
+  // their last reactions, as a rank's do (RankContacts::want_reactions).
+  void want_reactions(bool on) { reactions_wanted_ = on; }
 
   // The turns the pair loops left this step (PairTurn, pair_kernel.hpp: rare, where a patch's
   // shares moved within the step), summed per owned body over its pairs in the order of their
@@ -300,6 +305,7 @@ class ContactEngine {
   bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
   std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
+  bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)
   // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
   // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves;
   // false before the first, which needs none: keep_sphere_poses sizes posed_ there).

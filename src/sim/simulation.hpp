@@ -132,10 +132,11 @@ class Simulation {
   const RankContacts* rank_contacts() const { return ranks_.get(); }  // null: one process
   RankContacts* rank_contacts() { return ranks_.get(); }
   const RankLink* link() const { return ranks_ ? link_ : nullptr; }  // null: one process
-  // Distributed runs: the next step's driver reactions are read (output after it); a moving
-  // driver's are read every step (servo, driver work), a fixed one's only then.
+  // The next step's driver reactions are read (output after it); a moving driver's are read
+  // every step (servo, driver work), a fixed one's only then (its work is +0 either way).
   void want_driver_reactions(bool read) {
     if (ranks_) ranks_->want_reactions(read || drivers_move_);
+    else engine_->want_reactions(read || drivers_move_);
   }
   bool any_rank(bool mine) const { return ranks_ ? link_->any(mine) : mine; }  // a collective
   // Distributed runs with contacts: the step's one collective ORs each rank's `asked` (the run
