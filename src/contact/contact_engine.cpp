@@ -331,6 +331,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
   trigger_.set_skins(skin_);
   must_rebuild_ = false;
+  margins_read_ = false;
   ++stats_.rebuilds;
   stats_.body_pairs = body_list_.size();
   stats_.driver_pairs = driver_list_.size();
@@ -446,6 +447,7 @@ void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched, cons
       for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
   if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut(), owned);
+  else if (keep_margins_) trigger_.keep_point_margins(*bodies.position, pass_cut());
 }
 
 void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {
@@ -456,10 +458,18 @@ void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::
 }
 
 bool ContactEngine::stale_after_measure(const LocalBodies& bodies, const Drivers& drivers) {
+  const bool stale = lists_past_skin(bodies, drivers);
+  trigger_.forget_point_margins();  // this step's, read or not
+  keep_margins_ = false;
+  return stale;
+}
+
+bool ContactEngine::lists_past_skin(const LocalBodies& bodies, const Drivers& drivers) {
   const bool past_half = trigger_.take_exceeded();  // taken every step: the next step measures afresh
   if (must_rebuild_) return true;
   const double shift = driver_shift(drivers);  // m
   if (!past_half && !(shift > 0.5 * settings_.skin)) return false;  // every body and driver within skin/2
+  margins_read_ = settings_.pair_trigger;  // likely again at the next steps, until the rebuild
   return !settings_.pair_trigger || trigger_.pair_exceeded(*bodies.position, settings_.skin, shift);
 }
 

@@ -143,8 +143,12 @@ class ContactEngine {
   const std::vector<std::uint32_t>& listed() const { return listed_; }  // the bodies of some pair, increasing
   // True, with `watch` set, where the trigger's test of every local body can run in the pass
   // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
+  // Once a step read the pair rule, the next steps' measure_motion keeps the points' margins for
+  // it (RebuildTrigger::keep_point_margins: on the team, not a serial loop after the region).
   bool watch_motion(const LocalBodies& bodies, PointWatch& watch) {
-    return trigger_.watch_points(bodies.position->size(), settings_.skin, watch);
+    const bool watched = trigger_.watch_points(bodies.position->size(), settings_.skin, watch);
+    keep_margins_ = watched && margins_read_;
+    return watched;
   }
   // measure_motion's poses and bounds again for the bodies `some` alone, their answer left out:
   // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
@@ -267,6 +271,7 @@ class ContactEngine {
   void name_arrays(const LocalBodies& bodies) const;
 #endif
   void reduce_drivers(Drivers& drivers) const;
+  bool lists_past_skin(const LocalBodies& bodies, const Drivers& drivers);  // stale_after_measure's answer
   void add_totals();
   void flush_pair(PairList& list, std::size_t k, const std::vector<std::uint8_t>* ghost);
   void flush_pairs(PairList& list, const std::vector<std::uint32_t>& pairs, const std::vector<std::uint8_t>* ghost);
@@ -306,6 +311,8 @@ class ContactEngine {
   std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
   bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)
+  bool margins_read_ = false;              // a step since the last rebuild read the pair rule (watch_motion)
+  bool keep_margins_ = false;              // this step's measure_motion keeps the points' margins
   // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
   // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves;
   // false before the first, which needs none: keep_sphere_poses sizes posed_ there).

@@ -199,10 +199,31 @@ bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch)
   return true;
 }
 
-// One process is one part: the pair rule over all its bodies (pair_rule_exceeded).
+// One process is one part: the pair rule over all its bodies (pair_rule_exceeded). Kept points'
+// margins give margins' answer: `alone` where one d passes d + driver_shift > skin is where the
+// largest does (rounding is monotone), or a d is not a number.
 bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const {
-  const PairMargins all = margins(x, skin, driver_shift, nullptr);
+  PairMargins all = points_kept_ ? points_ : margins(x, skin, driver_shift, nullptr);
+  if (points_kept_) all.alone = points_nan_ || !(points_.top[0] + driver_shift <= skin);
   return pair_rule_exceeded(&all, 1, skin);
+}
+
+void RebuildTrigger::keep_point_margins(const std::vector<Vec3>& x, TeamCut cut) {
+  if (rebuild_count == 0 || x_built.size() != x.size() || !q_built.empty()) return;  // margins' other paths
+  PairMargins m;     // of this thread's bodies
+  bool nan = false;  // m.add would keep a NaN as a second largest
+  for (const auto [first, last] : team_shares(x.size(), cut))
+    for (std::size_t i = first; i < last; ++i) {
+      const double d = (x[i] - x_built[i]).norm();  // m, margins' bound of a point
+      if (d == d) m.add(d);
+      else nan = true;
+    }
+#pragma omp critical(polydem_point_margins)
+  {
+    for (double v : m.top) points_.add(v);
+    points_nan_ = points_nan_ || nan;
+    points_kept_ = true;
+  }
 }
 
 PairMargins RebuildTrigger::margins(const std::vector<Vec3>& x, double skin, double driver_shift,

@@ -121,7 +121,7 @@ class RebuildTrigger {
   // the skin). Serial: called only on the steps after a body passed skin/2, before the rebuild.
   // With per-body skins s_i (set_skins), the same test on e_i = d_i - s_i / 2: true when the two
   // largest e's sum above 0, or some d_i + driver_shift passes s_i.
-  // Needs this step's measure (or watch) of every body; points read x.
+  // Needs this step's measure (or watch) of every body; points read x, or keep_point_margins'.
   bool pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const;
   // pair_exceeded's answer for the bodies `ghost` leaves out (null: all), to be joined with other
   // parts' (pair_rule_exceeded): their two largest bounds (or margins d - s/2 with per-body skins),
@@ -133,6 +133,12 @@ class RebuildTrigger {
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
   // bodies are points and a build was marked for as many; the pass then stands for measure.
   bool watch_points(std::size_t n, double skin, PointWatch& watch);
+  // pair_exceeded's margins of points, kept by a team's threads after the pass that moved them
+  // (each its bodies of `cut`, joined in any order: the two largest of a set), on the steps where
+  // the pair rule is likely read, so pair_exceeded answers from them without a serial loop.
+  // forget_point_margins (outside any region) drops the last step's first.
+  void keep_point_margins(const std::vector<Vec3>& x, TeamCut cut);
+  void forget_point_margins() { points_kept_ = false, points_ = PairMargins{}, points_nan_ = false; }
   // measure's bounds again for the bodies `some` alone, the answer unchanged (a rank's ghosts:
   // their owners answer for them); nothing for points, which keep no bound.
   void remeasure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
@@ -163,6 +169,9 @@ class RebuildTrigger {
   std::atomic<bool> exceeded_{false};  // some body moved past skin/2 since the last take_exceeded
   PairMargins owned_;         // measure_owned's threads' margins, joined (take_margins)
   bool owned_kept_ = false;   // owned_ holds this step's
+  PairMargins points_;        // keep_point_margins' threads' two largest |x - x_built| (m), joined
+  bool points_nan_ = false;   // some |x - x_built| is not a number (kept apart from points_)
+  bool points_kept_ = false;  // points_ holds this step's: pair_exceeded reads them
 };
 
 }  // namespace polydem
