@@ -432,5 +432,46 @@ TEST_CASE("a rank's measure keeps its owned margins in its own pass, ghosts left
   CHECK(no > 50);
 }
 
+TEST_CASE("points' margins kept on a team answer the pair rule as margins' own loop", "[rebuild]") {
+  const double skin = 0.125;  // m
+  std::mt19937_64 rng(36);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int yes = 0, no = 0, by_shift = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const std::size_t n = 1 + trial % 50;
+    const int threads = 1 + trial % 3;
+    std::vector<Vec3> x0(n), x(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      x0[i] = Vec3(double(i), 0.5 * unit(rng), 0.0);
+      x[i] = x0[i] + Vec3(0.0, 0.0, 0.55 * skin * unit(rng));  // most under skin/2, some past
+    }
+    if (trial % 37 == 0) x[rng() % n].z() = std::nan("");
+    const double shift = trial % 3 == 0 ? 0.8 * skin * unit(rng) : 0.0;  // m, a driver's
+    const std::vector<Quat> q(n, Quat::Identity());
+    RebuildTrigger kept, loop;
+    kept.mark_built(x0, q, true);
+    loop.mark_built(x0, q, true);
+    // A cut of the bodies into the threads' shares (the first region's), uneven, or none (static).
+    std::vector<std::uint32_t> at{0};
+    for (int t = 1; t < threads; ++t) at.push_back(std::max(at.back(), std::uint32_t(rng() % (n + 1))));
+    at.push_back(std::uint32_t(n));
+    const TeamCut cut = trial % 2 ? TeamCut{at.data(), threads} : TeamCut{};
+#pragma omp parallel num_threads(threads)
+    kept.keep_point_margins(x, cut);
+    const bool answer = loop.pair_exceeded(x, skin, shift);
+    INFO("trial " << trial << ", " << threads << " threads");
+    CHECK(kept.pair_exceeded(x, skin, shift) == answer);
+    const PairMargins m = loop.margins(x, skin, 0.0, nullptr);  // the shift alone decides: d1 + shift > skin
+    by_shift += answer && !m.alone && m.top[0] + m.top[1] <= skin;
+    kept.forget_point_margins();  // then margins' loop again
+    CHECK(kept.pair_exceeded(x, skin, shift) == answer);
+    (answer ? yes : no) += 1;
+  }
+  INFO(yes << " rebuilds, " << no << " not, " << by_shift << " by the shift");
+  CHECK(yes > 100);  // both answers met often, and the driver's reach deciding some
+  CHECK(no > 100);
+  CHECK(by_shift > 10);
+}
+
 }  // namespace
 }  // namespace polydem
