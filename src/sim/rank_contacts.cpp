@@ -116,7 +116,6 @@ void RankContacts::land(LandedShare share) {
   RotorGroups groups = group_rotors(store_, store_.owned_rows(), shapes_);
   drop_sphere_orientations(store_, groups);  // files of older builds turned them
   owned_rotors_ = with_runs(std::move(groups));
-  owned_work_.clear();
   external_rows_ = ~std::size_t(0);
   engine_.reset();  // the lists of the cut before: the next step lists the share's owners' bodies
   forced_ = landed_ = true;
@@ -234,7 +233,7 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
     engine_->forces(view, drivers, dt, false, ContactEngine::AfterPairs::region_ends);
   });
   engine_->close_forces(view, drivers);
-  share_results(drivers, stale);
+  share_results(drivers);
 }
 
 void RankContacts::add_sums() {
@@ -427,10 +426,8 @@ long RankContacts::first_non_finite_owned() const {
   return -1;
 }
 
-// The touching driver pairs' reactions, gathered at the steps that read them; the owned bodies'
-// work (the next cut's weights) at rebuilds only (the lists hold until the next).
-void RankContacts::share_results(Drivers& drivers, bool rebuilt) {
-  if (rebuilt) owned_work_ = owned_work(engine_->body_pairs(), engine_->driver_pairs(), store_);
+// The touching driver pairs' reactions, gathered at the steps that read them.
+void RankContacts::share_results(Drivers& drivers) {
   if (!reactions_wanted_ && !stop_seen_) return;  // no collective: the drivers keep their last reactions
   std::vector<char> bytes;
   append_section(bytes, reaction_shares());

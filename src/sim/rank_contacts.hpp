@@ -179,13 +179,6 @@ class RankContacts {
   std::size_t pairs() const;
   std::size_t candidates() const;
 
-  // The weight of the cut (instructions a step): a body's own step beyond its passes (posing,
-  // the rebuild's share, its trigger) and a candidate feature pair's share on each of its two
-  // bodies. Fitted at -np 2 on the box-fill and cubes pours from 0.1 s (counted, the slower
-  // rank's instructions, pour / cubes): (kBodyStep, kHalfCandidate) = (0, 87) 294.2e6 / 358.3e6
-  // and (0, 97) 285.9e6 / 365.9e6 (read from the environment: a few e6 more), (500, 185)
-  // 285.6e6 / 329.5e6; s32's fixed weights (a polyhedron 8, a candidate 1 a side) 315.7e6 / 405.2e6.
-  static constexpr std::uint64_t kBodyStep = 500, kHalfCandidate = 185;
   // Instructions a cut again costs the slower rank, a body of the scene (RecutRule): the gather and
   // cut of a sample point (~500) and the movers' parcels and new searches (a 5% shift moves ~2.5%
   // of the bodies at ~20,000 each); estimated from the pours' counted rebuilds.
@@ -229,7 +222,7 @@ class RankContacts {
   void split_listed();
   ForceSums closing_sums();
   void size_parcels();
-  void share_results(Drivers& drivers, bool rebuilt);
+  void share_results(Drivers& drivers);
   std::vector<ReactionShare> reaction_shares() const;
 
   const RankLink& link_;
@@ -248,7 +241,6 @@ class RankContacts {
   std::uint64_t scale_ = kScaleOne;  // this rank's weights' factor at the last rebuild
   double load_share_ = 0.0;
   GhostPlan plan_;
-  std::vector<std::uint32_t> owned_work_;  // per owned body, from the last lists (rank_energy.hpp)
   RotorGroups owned_rotors_;  // the owned bodies by rotation path, local indices
   TurnTable kept_turns_;      // the turns close_and_start applies (keep_turns), by local index
   std::unique_ptr<ContactEngine> engine_;

@@ -22,16 +22,14 @@ struct CutPoint {
 
 }  // namespace
 
-// Each owned body's weight from the last lists (this rank counted them), in instructions a
-// step: its own step (its passes by rotation path, integrate.hpp's pass_weights, counted, and
-// kBodyStep) plus kHalfCandidate for each of its pairs' candidate feature pairs (work: counted
-// on both sides).
+// Each owned body's weight from the lists of the interval ending now (this rank counted them),
+// in instructions a step (CutWeight): its passes by rotation path, its pairs' candidate feature
+// pairs and their sub-contacts at the last step.
 std::vector<std::uint64_t> RankContacts::owned_weights(const std::vector<std::uint32_t>& rows) const {
   const std::vector<float> passes = pass_weights(owned_rotors_, store_.size());  // by local index
-  const bool listed = owned_work_.size() == rows.size();
+  const OwnedWork work = owned_work(engine_->body_pairs(), engine_->driver_pairs(), store_);
   std::vector<std::uint64_t> w(rows.size());
-  for (std::size_t k = 0; k < w.size(); ++k)
-    w[k] = std::uint64_t(passes[rows[k]]) + kBodyStep + (listed ? kHalfCandidate * owned_work_[k] : 0);
+  for (std::size_t k = 0; k < w.size(); ++k) w[k] = CutWeight::of(passes[rows[k]], work.candidates[k], work.contacts[k]);
   return w;
 }
 

@@ -2,10 +2,14 @@
 // give equal counts, a weighted bed and its falling grains get equal shares of the weight
 // where equal counts leave one rank 10 times the other's, the levels cut the longest side
 // of their own part, and the ghost distance is the Euclidean distance to a part's box.
+#include <algorithm>
+#include <cmath>
+
 #include <catch2/catch.hpp>
 
 #include "sim/domain_cut.hpp"
 #include "sim/ghost_plan.hpp"
+#include "sim/rank_energy.hpp"
 
 using namespace polydem;
 
@@ -89,4 +93,70 @@ TEST_CASE("A kept cut is cut again once its imbalance has cost more than a cut, 
   for (int k = 0; k < 100; ++k) CHECK_FALSE(fine.pays({102.0, 98.0}, 1000, 250.0));  // 1.02: within the floor
   CHECK(fine.lost == 2000.0 * 100);  // lost all the same: a cut once past the floor
   CHECK(fine.pays({106.0, 94.0}, 1, 250.0));
+}
+
+namespace {
+
+// A list of `pairs`, each with `slots` candidate feature pairs and `touching` active sub-contacts.
+PairList list_of(const std::vector<BodyPair>& pairs, const std::vector<std::uint32_t>& slots,
+                 const std::vector<std::uint16_t>& touching) {
+  PairList list;
+  list.pairs = pairs;
+  list.slot_begin = {0};
+  for (std::uint32_t s : slots) list.slot_begin.push_back(list.slot_begin.back() + s);
+  list.touching = touching;
+  return list;
+}
+
+// A column of 120 bodies 1 cm apart, all owned: the lower 60 a bed chained by pairs (k, k + 1) of
+// 6 candidate feature pairs each with `contacts` active sub-contacts, the upper 60 free. Each
+// body's cut weight (CutWeight, an isotropic body's passes) from owned_work.
+std::vector<double> column_weights(std::uint16_t contacts, std::vector<Vec3>& x) {
+  LocalStore store;
+  std::vector<BodyPair> pairs;
+  for (std::uint32_t k = 0; k < 120; ++k) {
+    store.global_id.push_back(k);
+    store.ghost.push_back(0);
+    x.push_back(Vec3(0.0, 0.0, 0.01 * k));
+    if (k + 1 < 60) pairs.push_back(BodyPair{k, k + 1});
+  }
+  const OwnedWork work = owned_work(list_of(pairs, std::vector<std::uint32_t>(pairs.size(), 6),
+                                            std::vector<std::uint16_t>(pairs.size(), contacts)),
+                                    PairList{}, store);
+  std::vector<double> w;
+  for (std::size_t k = 0; k < 120; ++k) w.push_back(double(CutWeight::of(280.0f, work.candidates[k], work.contacts[k])));
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("A body's work counts its pairs' candidates and sub-contacts on both sides, a ghost's pair and a driver pair twice") {
+  LocalStore store;
+  store.global_id = {0, 1, 2};
+  store.ghost = {0, 0, 1};  // body 2 a ghost: this rank computes the pair (1, 2) whole
+  const PairList bodies = list_of({BodyPair{0, 1}, BodyPair{1, 2}}, {3, 5}, {2, 1});
+  const PairList drivers = list_of({BodyPair{0, 0}}, {4}, {4});  // a wall on body 0
+  const OwnedWork work = owned_work(bodies, drivers, store);
+  CHECK(work.candidates == std::vector<std::uint32_t>{3 + 2 * 4, 3 + 2 * 5});
+  CHECK(work.contacts == std::vector<std::uint32_t>{2 + 2 * 4, 2 + 2 * 1});
+}
+
+TEST_CASE("A touching bed weighs its sub-contacts: its rank takes fewer bodies, the weights split equally") {
+  std::vector<Vec3> x, same;
+  const std::vector<double> near = column_weights(0, x), touching = column_weights(4, same);
+  const double heaviest = *std::max_element(touching.begin(), touching.end());
+  const DomainCut by_near = cut_domain(x, near, 2), by_touching = cut_domain(x, touching, 2);
+  const std::vector<double> loads = part_loads(by_touching, x, touching);
+  CHECK(std::abs(loads[0] - loads[1]) <= heaviest);  // the plane where the summed weights meet
+  int below_near = 0, below_touching = 0;
+  for (const Vec3& c : x) {
+    below_near += by_near.owner(c) == 0;
+    below_touching += by_touching.owner(c) == 0;
+  }
+  // Touching pairs cost the kernels and the law beyond their candidates (counted): the bed's
+  // rank holds fewer bodies than where its pairs are only near, every bed body weighing more.
+  CHECK(below_touching < below_near);
+  CHECK(below_touching < 60);
+  for (std::size_t k = 0; k < 60; ++k) CHECK(touching[k] > near[k]);
+  for (std::size_t k = 60; k < 120; ++k) CHECK(touching[k] == near[k]);
 }
