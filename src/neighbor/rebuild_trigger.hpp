@@ -138,7 +138,11 @@ class RebuildTrigger {
   // the pair rule is likely read, so pair_exceeded answers from them without a serial loop.
   // forget_point_margins (outside any region) drops the last step's first.
   void keep_point_margins(const std::vector<Vec3>& x, TeamCut cut);
-  void forget_point_margins() { points_kept_ = false, points_ = PairMargins{}, points_nan_ = false; }
+  void forget_point_margins() {
+    points_kept_ = false;
+    points_ = PairMargins{};
+    points_nan_ = false;
+  }
   // measure's bounds again for the bodies `some` alone, the answer unchanged (a rank's ghosts:
   // their owners answer for them); nothing for points, which keep no bound.
   void remeasure(const std::vector<Vec3>& x, const std::vector<Quat>& q, const std::vector<double>& bounding_radius,

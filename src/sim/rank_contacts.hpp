@@ -68,7 +68,10 @@ class RankContacts {
   void close_and_start(double h, double dt, const Vec3& gravity, const PointWatch* watch = nullptr);
   // Nothing but m gravity (m/s^2) and the contacts acts (no drag or fluid force): the joined
   // pass makes each owned body's force in registers (close_and_start_step<true>), as one process's.
-  void only_gravity(const Vec3& gravity) { gravity_only_ = true, gravity_ = gravity; }
+  void only_gravity(const Vec3& gravity) {
+    gravity_only_ = true;
+    gravity_ = gravity;
+  }
   // True, with `watch` set, where this step's joined pass can run the trigger's test on the
   // owned bodies (points: spheres' lists; a ghost's owner answers for it). Outside any team.
   bool watch_motion(PointWatch& watch);
