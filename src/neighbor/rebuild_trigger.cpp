@@ -147,8 +147,7 @@ bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* 
     if (!(d <= move_limit(s))) exceeded = true;
     add_margin<kUniform>(top, d, s, driver_shift);
   }
-  for (double v : top.top) m.add(v);
-  m.alone = m.alone || top.alone;
+  m.join(top);
   return exceeded;
 }
 
@@ -169,8 +168,7 @@ bool owned_loop(std::size_t first, std::size_t last, const Vec3* x, const Quat* 
   }
 #pragma omp critical(polydem_owned_margins)
   {
-    for (double v : m.top) owned_.add(v);
-    owned_.alone = owned_.alone || m.alone;
+    owned_.join(m);
     owned_kept_ = true;
   }
   return exceeded;
@@ -204,24 +202,22 @@ bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch)
 // largest does (rounding is monotone), or a d is not a number.
 bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const {
   PairMargins all = points_kept_ ? points_ : margins(x, skin, driver_shift, nullptr);
-  if (points_kept_) all.alone = points_nan_ || !(points_.top[0] + driver_shift <= skin);
+  if (points_kept_) all.alone = points_.alone || !(points_.top[0] + driver_shift <= skin);
   return pair_rule_exceeded(&all, 1, skin);
 }
 
 void RebuildTrigger::keep_point_margins(const std::vector<Vec3>& x, TeamCut cut) {
   if (rebuild_count == 0 || x_built.size() != x.size() || !q_built.empty()) return;  // margins' other paths
-  PairMargins m;     // of this thread's bodies
-  bool nan = false;  // m.add would keep a NaN as a second largest
+  PairMargins m;  // of this thread's bodies; alone: a NaN (pair_exceeded adds the driver's reach)
   for (const auto [first, last] : team_shares(x.size(), cut))
     for (std::size_t i = first; i < last; ++i) {
       const double d = (x[i] - x_built[i]).norm();  // m, margins' bound of a point
-      if (d == d) m.add(d);
-      else nan = true;
+      if (d == d) m.add(d);  // a NaN added would stand as the second largest
+      else m.alone = true;
     }
 #pragma omp critical(polydem_point_margins)
   {
-    for (double v : m.top) points_.add(v);
-    points_nan_ = points_nan_ || nan;
+    points_.join(m);
     points_kept_ = true;
   }
 }

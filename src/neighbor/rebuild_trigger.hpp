@@ -71,6 +71,11 @@ struct PairMargins {
       top[1] = v;
     }
   }
+  // Another part of the same kind of bound (a thread's): the two largest of both, `alone` ORed.
+  void join(const PairMargins& part) {
+    for (double v : part.top) add(v);
+    alone = alone || part.alone;
+  }
 };
 static_assert(sizeof(PairMargins) == 24, "a rank sends it each step: 24 bytes");
 
@@ -141,7 +146,6 @@ class RebuildTrigger {
   void forget_point_margins() {
     points_kept_ = false;
     points_ = PairMargins{};
-    points_nan_ = false;
   }
   // measure's bounds again for the bodies `some` alone, the answer unchanged (a rank's ghosts:
   // their owners answer for them); nothing for points, which keep no bound.
@@ -173,8 +177,7 @@ class RebuildTrigger {
   std::atomic<bool> exceeded_{false};  // some body moved past skin/2 since the last take_exceeded
   PairMargins owned_;         // measure_owned's threads' margins, joined (take_margins)
   bool owned_kept_ = false;   // owned_ holds this step's
-  PairMargins points_;        // keep_point_margins' threads' two largest |x - x_built| (m), joined
-  bool points_nan_ = false;   // some |x - x_built| is not a number (kept apart from points_)
+  PairMargins points_;        // keep_point_margins' threads' two largest |x - x_built| (m), joined; alone: a NaN
   bool points_kept_ = false;  // points_ holds this step's: pair_exceeded reads them
 };
 
