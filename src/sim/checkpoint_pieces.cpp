@@ -230,7 +230,7 @@ Assembly read_every_piece(const std::string& path, const std::vector<PieceEntry>
 // The table as read_active lays out one process's checkpoint: touching counts are the next
 // rebuild's to set.
 PairList checkpoint_list(std::vector<TableSlot> slots) {
-  PairList list = table_of(std::move(slots));
+  PairList list = table_of(slots);
   std::fill(list.touching.begin(), list.touching.end(), 0);
   return list;
 }

@@ -1,6 +1,7 @@
 #include "sim/contact_table.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 
 namespace polydem {
@@ -20,14 +21,43 @@ std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& stor
   return out;
 }
 
-PairList table_of(std::vector<TableSlot> slots) {
-  // stable: a pair's slots come from one rank, already in key order
-  std::stable_sort(slots.begin(), slots.end(), [](const TableSlot& a, const TableSlot& b) {
-    return a.i != b.i ? a.i < b.i : a.j < b.j;
-  });
+namespace {
+
+bool pair_before(const TableSlot& a, const TableSlot& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; }
+
+// The slots' places in pair order, stable (a pair's slots come from one rank, in key order).
+// The slots come as a few runs already in order (each rank's in its list's order: migrate's,
+// gather_table's), merged as indices so no 200-byte slot moves; more runs: sorted.
+std::vector<std::uint32_t> pair_order(const std::vector<TableSlot>& slots) {
+  constexpr std::size_t kMaxRuns = 64;
+  std::vector<std::uint32_t> order(slots.size());
+  std::iota(order.begin(), order.end(), 0u);
+  const auto before = [&](std::uint32_t a, std::uint32_t b) { return pair_before(slots[a], slots[b]); };
+  std::vector<std::size_t> ends;
+  for (std::size_t k = 1; k < slots.size() && ends.size() <= kMaxRuns; ++k)
+    if (pair_before(slots[k], slots[k - 1])) ends.push_back(k);
+  if (ends.size() > kMaxRuns) {
+    std::stable_sort(order.begin(), order.end(), before);
+    return order;
+  }
+  ends.push_back(slots.size());
+  for (std::size_t r = 0; r + 1 < ends.size(); ++r)  // the sorted prefix and the next run
+    std::inplace_merge(order.begin(), order.begin() + std::ptrdiff_t(ends[r]), order.begin() + std::ptrdiff_t(ends[r + 1]),
+                       before);
+  return order;
+}
+
+}  // namespace
+
+PairList table_of(const std::vector<TableSlot>& slots) {
   PairList table;
   table.slot_begin.push_back(0);
-  for (const TableSlot& t : slots) {
+  table.features.reserve(slots.size());
+  table.slots.reserve(slots.size());
+  table.records.reserve(slots.size());
+  table.active.assign(slots.size(), 1);
+  for (std::uint32_t at : pair_order(slots)) {
+    const TableSlot& t = slots[at];
     if (table.pairs.empty() || table.pairs.back().i != t.i || table.pairs.back().j != t.j) {
       table.pairs.push_back({t.i, t.j});
       table.slot_begin.push_back(table.slot_begin.back());
@@ -35,7 +65,6 @@ PairList table_of(std::vector<TableSlot> slots) {
     table.features.push_back(t.key);
     table.slots.push_back(t.slot);
     table.records.push_back(t.record);
-    table.active.push_back(1);
     ++table.slot_begin.back();
   }
   table.resize_results();
@@ -57,19 +86,26 @@ std::int64_t index_in(const std::vector<std::uint32_t>& held, std::uint32_t g) {
 PairList localise(const PairList& table, const std::vector<std::uint32_t>& held, bool driver) {
   PairList mine;
   mine.slot_begin.push_back(0);
+  mine.features.reserve(table.slots.size());
+  mine.slots.reserve(table.slots.size());
+  mine.records.reserve(table.slots.size());
+  std::size_t from = 0;  // held's place of the last pair's i: a table's i do not decrease
   for (std::size_t k = 0; k < table.size(); ++k) {
     const BodyPair p = table.pairs[k];
-    const std::int64_t i = index_in(held, p.i), j = driver ? std::int64_t(p.j) : index_in(held, p.j);
+    if (from < held.size() && held[from] > p.i) from = 0;  // out of order: search all
+    from = std::size_t(std::lower_bound(held.begin() + std::ptrdiff_t(from), held.end(), p.i) - held.begin());
+    const std::int64_t i = from < held.size() && held[from] == p.i ? std::int64_t(from) : -1;
+    const std::int64_t j = driver ? std::int64_t(p.j) : index_in(held, p.j);
     if (i < 0 || j < 0) continue;
     mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order
     for (std::uint32_t s = table.slot_begin[k]; s < table.slot_begin[k + 1]; ++s) {
       mine.features.push_back(table.features[s]);
       mine.slots.push_back(table.slots[s]);
       mine.records.push_back(table.recording ? table.records[s] : SlotRecord{});  // a sphere table between outputs
-      mine.active.push_back(1);
     }
     mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
   }
+  mine.active.assign(mine.slots.size(), 1);
   mine.resize_results();
   return mine;
 }

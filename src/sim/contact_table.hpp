@@ -26,7 +26,7 @@ struct TableSlot {
 std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& store, bool driver);
 
 // The table of all ranks' slots: pairs in increasing (i, j), each pair's slots from one rank in key order.
-PairList table_of(std::vector<TableSlot> slots);
+PairList table_of(const std::vector<TableSlot>& slots);
 
 // The table's pairs between local bodies (`held`: their global ids, increasing; a body's local
 // index is its place there), in local indices: the histories a rebuild on this rank hands over.

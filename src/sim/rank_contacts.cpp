@@ -193,8 +193,8 @@ void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {
     for (const TableSlot& t : read_section<TableSlot>(from, at)) body.push_back(t);
     for (const TableSlot& t : read_section<TableSlot>(from, at)) driver.push_back(t);
   }
-  whole.body_pairs() = table_of(std::move(body));
-  whole.driver_pairs() = table_of(std::move(driver));
+  whole.body_pairs() = table_of(body);
+  whole.driver_pairs() = table_of(driver);
 }
 
 void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactEngine& whole) {

@@ -29,25 +29,42 @@ std::vector<int> near_parts(const DomainCut& cut, int p, double halo) {
   return near;
 }
 
+// The row of id g in a store's increasing global ids `ids`: at() searches from the row it found
+// last (the slots' i do not decrease: one search over the store in all), after(row, g) from a
+// row below g's (a pair's j above its i).
+struct RowCursor {
+  const std::vector<std::uint32_t>& ids;
+  std::size_t last = 0;
+  std::size_t at(std::uint32_t g) {
+    if (last < ids.size() && ids[last] > g) last = 0;  // out of order: search all
+    return last = row_from(last, g);
+  }
+  std::size_t after(std::size_t row, std::uint32_t g) const { return row_from(row, g); }
+  std::size_t row_from(std::size_t from, std::uint32_t g) const {
+    return std::size_t(std::lower_bound(ids.begin() + std::ptrdiff_t(from), ids.end(), g) - ids.begin());
+  }
+};
+
 }  // namespace
 
 Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
                  const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver) {
   const int me = link.rank();
-  const auto owner = [&](std::uint32_t g) { return cut.owner(store.position[store.local_of(g)]); };
+  std::vector<int> owner(store.size());  // each row's new owner
+  for (std::size_t k = 0; k < store.size(); ++k) owner[k] = cut.owner(store.position[k]);
   std::vector<std::vector<std::uint32_t>> movers(link.ranks());  // store rows
   std::vector<std::vector<TableSlot>> body_to(link.ranks()), driver_to(link.ranks());
   std::vector<std::uint32_t> kept;
-  for (std::uint32_t k : store.owned_rows()) {
-    const int to = cut.owner(store.position[k]);
-    (to == me ? kept : movers[to]).push_back(k);
-  }
+  for (std::uint32_t k : store.owned_rows()) (owner[k] == me ? kept : movers[owner[k]]).push_back(k);
+  RowCursor rows{store.global_id};  // the slots come in pair order: i increasing, j > i
   for (const TableSlot& t : body) {  // a pair to both new owners: each lists it
-    const int to_i = owner(t.i), to_j = owner(t.j);
+    const std::size_t i = rows.at(t.i);
+    const int to_i = owner[i], to_j = owner[rows.after(i, t.j)];
     body_to[to_i].push_back(t);
     if (to_j != to_i) body_to[to_j].push_back(t);
   }
-  for (const TableSlot& t : driver) driver_to[owner(t.i)].push_back(t);
+  RowCursor driver_rows{store.global_id};
+  for (const TableSlot& t : driver) driver_to[owner[driver_rows.at(t.i)]].push_back(t);
   std::vector<Parcel> parcels;
   for (int q = 0; q < link.ranks(); ++q) {
     if (q == me || (movers[q].empty() && body_to[q].empty() && driver_to[q].empty())) continue;
@@ -69,8 +86,8 @@ Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& s
   const auto ghosts = std::size_t(std::count(store.ghost.begin(), store.ghost.end(), std::uint8_t(1)));
   Handover out;
   out.owned.merge_of(store, kept, landed, ghosts + ghosts / 8 + 16);  // room for about as many ghosts as before
-  out.body_table = table_of(std::move(body_slots));  // each pair's slots from one rank: the old owner of i
-  out.driver_table = table_of(std::move(driver_slots));
+  out.body_table = table_of(body_slots);  // each pair's slots from one rank: the old owner of i
+  out.driver_table = table_of(driver_slots);
   return out;
 }
 
