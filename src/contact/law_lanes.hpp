@@ -77,12 +77,18 @@ template <int N, bool kAcross = false>
   const V fn = fp + zero;  // + the push (0 here)
   const V fd = fp - spring;
   const V dissipated = splat<V>(0.5) * (h_fd + fd) * (h_gap - dn);
-  V patch = splat<V>(0.5) * kn * overlap_last * overlap * (w - h_w);
   // the tangential spring
   const V kt_w = w * splat<V>(p.kt);
   V3 ft = load<V>([&](int l) -> const Vec3& { return h[l]->ft; });
-  const V reweighted = splat<V>(0.5) * dot(ft, ft) * (h_w - w) / (splat<V>(p.kt) * h_w * w);
-  patch = patch + (h_w == w ? zero : reweighted);
+  // Where every lane kept its weight (a lone contact's 1), a steady lane's patch work is +0: the
+  // normal spring's 1/2 kn x_last x (w - w_last) is +-0, the tangential one's select adds +0. So it
+  // is not computed in the lanes of lone contacts (across pairs, or alone); within a pair weights move.
+  V patch = zero;
+  if (!((kAcross || N == 1) && all(h_w == w))) {
+    patch = splat<V>(0.5) * kn * overlap_last * overlap * (w - h_w);
+    const V reweighted = splat<V>(0.5) * dot(ft, ft) * (h_w - w) / (splat<V>(p.kt) * h_w * w);
+    patch = patch + (h_w == w ? zero : reweighted);
+  }
   const V3 vt = v_rel - vn * n;
   const V ft_max = splat<V>(p.mu) * fn;
   const V length2 = dot(ft, ft);

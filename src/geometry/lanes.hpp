@@ -5,6 +5,9 @@
 // in its order (no FMA: the build has none, POLYDEM_NATIVE turns contraction off), so the same bits.
 #include <cmath>
 #include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>  // _mm_movemask_pd (all)
+#endif
 
 #include "polydem/math.hpp"
 
@@ -48,6 +51,16 @@ template <class V>
 inline V max0(V a) { return a < splat<V>(0.0) ? splat<V>(0.0) : a; }  // std::max(a, 0.0), lane by lane
 template <class V>
 inline V sqrt(V a) { return gather<V>([&](int l) { return std::sqrt(at(a, l)); }); }
+
+// Whether every lane of m is set (a mask of two lanes, or one lane's bool).
+template <class M>
+inline bool all(M m) {
+#if defined(__SSE2__)
+  if constexpr (!std::is_same_v<M, bool>) return _mm_movemask_pd((__m128d)m) == 3;
+#endif
+  if constexpr (std::is_same_v<M, bool>) return m;
+  else return m[0] && m[1];
+}
 
 template <class V>
 struct Vec3Of {

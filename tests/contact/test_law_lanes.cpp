@@ -62,7 +62,7 @@ TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, anoth
   const LawParams law = pile_law();
   using Parts = LawParts<NormalLinear, false, false, false>;
   Draw d;
-  int steady = 0, left = 0;
+  int steady = 0, left = 0, kept = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const double m_eff = d.uniform(1e-3, 3e-3), dt = 6.6e-6;  // kg, s
     const LaneConstants p{d.vec(0.1), d.vec(0.01), d.vec(1.0), d.vec(0.01), d.vec(1.0), m_eff,
@@ -87,6 +87,7 @@ TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, anoth
         continue;
       }
       ++steady;
+      kept += h0[l].weight == w[l];  // steady_alone skips the patch terms then
       const SubContactMotion m = sub_contact_motion(g[l].point, p.xi, p.v_centre, p.w_rel, p.v_centre_end, p.w_rel_end);
       const ContactKinematics kin{g[l].normal, g[l].gap, m.v_rel, m.v_end, p.w_rel, m_eff, 0.0, w[l], p.nu, -1.0,
                                   0.0, false, nullptr};
@@ -108,6 +109,7 @@ TEST_CASE("law lanes: a steady lane, two or one, has contact_force's bits, anoth
   }
   CHECK(steady > 15000);  // most draws rest and stick
   CHECK(left > 5000);     // and the rest exercise every way out
+  CHECK(kept > 5000);     // a weight kept from the last step: no patch work (+0), as contact_force's
 }
 
 TEST_CASE("law lanes across pairs: each lane has its own pair's one-lane bits", "[law]") {
