@@ -299,7 +299,7 @@ template <class Partner>
   const BodyPair p = list.pairs[k];
   scratch.found.clear();
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
-  bool shadowing = false, shadowable = false;  // a found contact may shadow another, may be shadowed
+  unsigned types = 0;  // bit t: a contact of PairType t was found (one register: two flags spilled)
   // Read once: the stores to `found` might alias them.
   const std::uint32_t end = list.slot_begin[k + 1];
   const float* const slot_gap = list.slot_gap.data();  // m
@@ -314,15 +314,14 @@ template <class Partner>
     }
     next.slot = s;
     next.state = &list.touch(s);  // a shadowed one's too (rare): made, left as it was
-    shadowing |= shadows(f.type);
-    shadowable |= may_be_shadowed(f.type);
+    types |= 1u << unsigned(f.type);
     // The slot's history is read and written by the law, after the pair's other candidates: fetch it
     // now (its 80 bytes, two lines at most; the record after it is only written).
     const char* state = reinterpret_cast<const char*>(next.state);
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);
   }
-  if (shadowing && shadowable)  // rare: nothing to drop otherwise
+  if (shadows_any(types) && may_be_shadowed_any(types))  // rare: nothing to drop otherwise
     drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
 }
 

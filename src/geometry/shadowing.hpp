@@ -18,6 +18,15 @@ inline bool may_be_shadowed(PairType t) {
   return t == PairType::vertex_vertex || t == PairType::vertex_edge || t == PairType::edge_vertex;
 }
 
+// The same for a set of types, bit t for PairType t.
+inline bool shadows_any(unsigned types) {
+  return (types & (1u << unsigned(PairType::vertex_face) | 1u << unsigned(PairType::face_vertex))) != 0;
+}
+inline bool may_be_shadowed_any(unsigned types) {
+  return (types & (1u << unsigned(PairType::vertex_vertex) | 1u << unsigned(PairType::vertex_edge) |
+                   1u << unsigned(PairType::edge_vertex))) != 0;
+}
+
 // Marks drop[k] = 1 for the contacts (keys[k], gaps[k]) of one body pair that a vertex-face or
 // face-vertex contact of the same vertex shadows; `radii` = rA + rB (m). A face shadows only when
 // its body is convex (`a_convex`, `b_convex`): over a non-convex core the projection need not
