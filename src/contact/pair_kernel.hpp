@@ -493,8 +493,17 @@ template <class Parts, bool kLone = false, class Partner>
         lone->k = k;  // its contact stays in the scratch until it waits (LonePairKernel::park)
         // Member by member: an aggregate went through a temporary on the stack and a copy of it.
         LaneConstants& lc = lone->lc;
-        lc.xi = xi, lc.v_centre = v_centre, lc.w_rel = w_rel, lc.v_centre_end = v_centre_end, lc.w_rel_end = w_rel_end;
-        lc.m_eff = m_eff, lc.nu = nu, lc.kn = law.kn, lc.kt = law.kt, lc.mu = law.mu, lc.dt = dt;
+        lc.xi = xi;
+        lc.v_centre = v_centre;
+        lc.w_rel = w_rel;
+        lc.v_centre_end = v_centre_end;
+        lc.w_rel_end = w_rel_end;
+        lc.m_eff = m_eff;
+        lc.nu = nu;
+        lc.kn = law.kn;
+        lc.kt = law.kt;
+        lc.mu = law.mu;
+        lc.dt = dt;
         lone->nu_t = nu_t;
         lone->r_star = r_star;
         lone->exact_step = exact_step;
