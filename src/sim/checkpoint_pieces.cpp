@@ -229,7 +229,7 @@ Assembly read_every_piece(const std::string& path, const std::vector<PieceEntry>
 
 // The table as read_active lays out one process's checkpoint: touching counts are the next
 // rebuild's to set.
-PairList checkpoint_list(std::vector<TableSlot> slots) {
+PairList checkpoint_list(const std::vector<TableSlot>& slots) {
   PairList list = table_of(slots);
   std::fill(list.touching.begin(), list.touching.end(), 0);
   return list;
@@ -359,8 +359,8 @@ void read_checkpoint_pieces(const std::string& path, const std::string& bytes, S
     return;
   }
   Assembly into = read_every_piece(path, entries, sim, open);
-  sim.engine().body_pairs() = checkpoint_list(std::move(into.body));
-  sim.engine().driver_pairs() = checkpoint_list(std::move(into.driver));
+  sim.engine().body_pairs() = checkpoint_list(into.body);
+  sim.engine().driver_pairs() = checkpoint_list(into.driver);
   sim.engine().flushed() = into.flushed;
   sim.drop_sphere_orientations();  // files of older builds turned them
   sim.force_rebuild();

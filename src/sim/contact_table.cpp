@@ -89,12 +89,11 @@ PairList localise(const PairList& table, const std::vector<std::uint32_t>& held,
   mine.features.reserve(table.slots.size());
   mine.slots.reserve(table.slots.size());
   mine.records.reserve(table.slots.size());
-  std::size_t from = 0;  // held's place of the last pair's i: a table's i do not decrease
+  RowCursor rows{held};  // a table's i do not decrease
   for (std::size_t k = 0; k < table.size(); ++k) {
     const BodyPair p = table.pairs[k];
-    if (from < held.size() && held[from] > p.i) from = 0;  // out of order: search all
-    from = std::size_t(std::lower_bound(held.begin() + std::ptrdiff_t(from), held.end(), p.i) - held.begin());
-    const std::int64_t i = from < held.size() && held[from] == p.i ? std::int64_t(from) : -1;
+    const std::size_t row = rows.at(p.i);
+    const std::int64_t i = row < held.size() && held[row] == p.i ? std::int64_t(row) : -1;
     const std::int64_t j = driver ? std::int64_t(p.j) : index_in(held, p.j);
     if (i < 0 || j < 0) continue;
     mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order

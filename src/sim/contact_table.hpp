@@ -4,6 +4,7 @@
 // table laid out as read_active lays out a checkpoint's (pairs sorted, active slots only). The
 // table is what checkpoints and output read on rank 0 and what each rank takes its share of
 // at a rebuild, so contacts migrate with their bodies.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,21 @@ struct TableSlot {
   FeaturePair key;
   ContactSlot slot;
   SlotRecord record;
+};
+
+// The row of id g in increasing global ids `ids` (a store's, a rank's held bodies): at() searches
+// on from the row it found last (ids asked in increasing order, as a table's i: one search over
+// `ids` in all; a smaller one searches all), after(row, g) from a row below g's (a pair's j above its i).
+struct RowCursor {
+  const std::vector<std::uint32_t>& ids;
+  std::size_t last = 0;
+  std::size_t at(std::uint32_t g) {
+    if (last < ids.size() && ids[last] > g) last = 0;  // out of order: search all
+    return last = after(last, g);
+  }
+  std::size_t after(std::size_t row, std::uint32_t g) const {
+    return std::size_t(std::lower_bound(ids.begin() + std::ptrdiff_t(row), ids.end(), g) - ids.begin());
+  }
 };
 
 // The active slots of `list` (local indices of `store`) this rank answers for.

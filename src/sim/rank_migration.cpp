@@ -29,22 +29,6 @@ std::vector<int> near_parts(const DomainCut& cut, int p, double halo) {
   return near;
 }
 
-// The row of id g in a store's increasing global ids `ids`: at() searches from the row it found
-// last (the slots' i do not decrease: one search over the store in all), after(row, g) from a
-// row below g's (a pair's j above its i).
-struct RowCursor {
-  const std::vector<std::uint32_t>& ids;
-  std::size_t last = 0;
-  std::size_t at(std::uint32_t g) {
-    if (last < ids.size() && ids[last] > g) last = 0;  // out of order: search all
-    return last = row_from(last, g);
-  }
-  std::size_t after(std::size_t row, std::uint32_t g) const { return row_from(row, g); }
-  std::size_t row_from(std::size_t from, std::uint32_t g) const {
-    return std::size_t(std::lower_bound(ids.begin() + std::ptrdiff_t(from), ids.end(), g) - ids.begin());
-  }
-};
-
 }  // namespace
 
 Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
