@@ -101,23 +101,61 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
 
 std::size_t motion_bytes(bool turning) { return (turning ? 16 : 12) * sizeof(double); }  // 4 vectors (1 quaternion)
 
-void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, bool turning, char* into) {
+namespace {
+
+// What a motion parcel reads or writes of a store, its arrays' addresses in locals: a copy
+// into a store's vector could otherwise move its data pointer, which the loop then reloads (~2
+// times the instructions a body).
+template <class V, class Q>
+struct MotionArrays {
+  Q* orientation;
+  V* velocity;
+  V* angular_velocity;
+  V* velocity_end;
+  V* angular_velocity_end;
+};
+
+template <class V, class Q, class S>
+MotionArrays<V, Q> motion_arrays(S& store) {
+  return {store.orientation.data(), store.velocity.data(), store.angular_velocity.data(), store.velocity_end.data(),
+          store.angular_velocity_end.data()};
+}
+
+template <bool kTurning>
+void pack_rows(const std::vector<std::uint32_t>& local, const MotionArrays<const Vec3, const Quat> a, char* into) {
   Writer w{into};
   for (std::uint32_t k : local) {
-    if (turning) w.field(store.orientation[k]);
-    velocity_fields(w, store, k);
+    if (kTurning) w.field(a.orientation[k]);
+    velocity_fields(w, a, k);
   }
 }
 
-void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, LocalStore& store) {
+template <bool kTurning>
+void unpack_rows(const char* bytes, const MotionTarget& to, double dt, const MotionArrays<Vec3, Quat> a, Vec3* x) {
   Reader r{bytes};
-  for (std::size_t k = 0; k < to.local.size(); ++k) {
-    const std::uint32_t l = to.local[k];
-    if (turning) r.field(store.orientation[l]);
-    velocity_fields(r, store, l);
-    to.drifted[k] += store.velocity[l] * dt;  // the owner's drift (integrate.hpp drift_body): its bits
-    store.position[l] = to.drifted[k];
+  const std::uint32_t* local = to.local.data();
+  Vec3* drifted = to.drifted;  // m
+  for (std::size_t k = 0, n = to.local.size(); k < n; ++k) {
+    const std::uint32_t l = local[k];
+    if (kTurning) r.field(a.orientation[l]);
+    velocity_fields(r, a, l);
+    drifted[k] += a.velocity[l] * dt;  // the owner's drift (integrate.hpp drift_body): its bits
+    x[l] = drifted[k];
   }
+}
+
+}  // namespace
+
+void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, bool turning, char* into) {
+  const auto a = motion_arrays<const Vec3, const Quat>(store);
+  if (turning) pack_rows<true>(local, a, into);
+  else pack_rows<false>(local, a, into);
+}
+
+void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, LocalStore& store) {
+  const auto a = motion_arrays<Vec3, Quat>(store);
+  if (turning) unpack_rows<true>(bytes, to, dt, a, store.position.data());
+  else unpack_rows<false>(bytes, to, dt, a, store.position.data());
 }
 
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {

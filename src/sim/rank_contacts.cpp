@@ -176,6 +176,7 @@ void RankContacts::adopt(const PairList& body_table, const PairList& driver_tabl
   owned_rotors_ = with_runs(group_rotors(store_, store_.owned_rows(), shapes_));
   size_parcels();
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_, engine_.get());
+  engine_->want_reactions(false);  // a rank's own pairs' sum is not a reaction: share_results sums every rank's
   engine_->body_pairs() = localise(body_table, store_.global_id, false);
   engine_->driver_pairs() = localise(driver_table, store_.global_id, true);
 }
