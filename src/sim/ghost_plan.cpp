@@ -1,5 +1,7 @@
 #include "sim/ghost_plan.hpp"
 
+#include <algorithm>
+
 namespace polydem {
 
 GhostPlan plan_ghosts(const DomainCut& cut, int p, const std::vector<Vec3>& x, double halo) {
@@ -22,6 +24,35 @@ GhostPlan plan_ghosts(const DomainCut& cut, int p, const std::vector<Vec3>& x, d
     }
   }
   return plan;
+}
+
+namespace {
+
+// `rows` sorted, each once.
+void sort_unique(std::vector<std::uint32_t>& rows) {
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+}
+
+}  // namespace
+
+PairedRows paired_across(const std::vector<BodyPair>& pairs, const std::vector<int>& owner, int ranks) {
+  PairedRows rows;
+  rows.send.resize(ranks);
+  rows.receive.resize(ranks);
+  for (const BodyPair& p : pairs) {
+    const int oi = owner[p.i], oj = owner[p.j];
+    if ((oi < 0) == (oj < 0)) continue;  // both owned (or both ghosts: their owners' pair)
+    const std::uint32_t mine = oi < 0 ? p.i : p.j, theirs = oi < 0 ? p.j : p.i;
+    const int q = std::max(oi, oj);
+    rows.send[q].push_back(mine);
+    rows.receive[q].push_back(theirs);
+  }
+  for (int q = 0; q < ranks; ++q) {
+    sort_unique(rows.send[q]);
+    sort_unique(rows.receive[q]);
+  }
+  return rows;
 }
 
 }  // namespace polydem

@@ -3,7 +3,9 @@
 // ghosts are exactly the bodies owned elsewhere within the halo of its box, rank p's send list to q is q's receive list from p
 // (so a parcel is bare state in an order both know), and body state crosses a parcel bit for bit,
 // a motion parcel with the receiver's drift as the owner's drift; a rebuild's store, made of runs of
-// increasing id, is merged into id order bit for bit.
+// increasing id, is merged into id order bit for bit. A motion parcel narrowed to the pairs
+// across the cut (paired_across) holds, on both sides, the bodies within pair range of the other
+// rank's owned bodies, and leaves out the ghosts no pair reads.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -248,4 +250,59 @@ TEST_CASE("A rebuild's store merges its kept rows with the movers, then the ghos
   LocalStore only;
   only.append(from, {1, 4, 11});
   check_bit_equal(first, only);
+}
+
+namespace {
+
+// Rank p's pairs within `range` (m) of its local bodies, one owned at least, in local rows (i < j).
+std::vector<BodyPair> pairs_in_range(const GhostPlan& plan, const std::vector<Vec3>& x, double range) {
+  std::vector<BodyPair> pairs;
+  for (std::uint32_t i = 0; i < plan.local.size(); ++i)
+    for (std::uint32_t j = i + 1; j < plan.local.size(); ++j)
+      if ((!plan.ghost[i] || !plan.ghost[j]) && (x[plan.local[i]] - x[plan.local[j]]).norm() < range)
+        pairs.push_back({i, j});
+  return pairs;
+}
+
+}  // namespace
+
+TEST_CASE("Motion parcels narrowed to the pairs across the cut agree on both sides and drop unread ghosts") {
+  const std::vector<Vec3> x = random_centres(1000, 11);
+  const double halo = 0.15, range = 0.1;  // m: pairs within range, ghosts within the halo
+  for (int ranks : {2, 3}) {
+    INFO(ranks << " ranks");
+    const DomainCut cut = cut_domain(x, std::vector<double>(x.size(), 1.0), ranks);
+    std::vector<GhostPlan> plans;
+    std::vector<PairedRows> paired;
+    std::vector<int> owner_of(x.size());
+    for (std::uint32_t b = 0; b < x.size(); ++b) owner_of[b] = cut.owner(x[b]);
+    for (int p = 0; p < ranks; ++p) {
+      plans.push_back(plan_ghosts(cut, p, x, halo));
+      std::vector<int> owner(plans[p].local.size(), -1);
+      for (std::size_t k = 0; k < owner.size(); ++k)
+        if (plans[p].ghost[k]) owner[k] = owner_of[plans[p].local[k]];
+      paired.push_back(paired_across(pairs_in_range(plans[p], x, range), owner, ranks));
+    }
+    std::size_t sent = 0, planned = 0;
+    for (int p = 0; p < ranks; ++p)
+      for (int q = 0; q < ranks; ++q) {
+        if (q == p) continue;
+        std::vector<std::uint32_t> sends, receives, expected;
+        for (std::uint32_t k : paired[p].send[q]) sends.push_back(plans[p].local[k]);
+        for (std::uint32_t k : paired[q].receive[p]) receives.push_back(plans[q].local[k]);
+        for (std::uint32_t a : plans[p].owned)  // p's bodies within range of one of q's
+          for (std::uint32_t b = 0; b < x.size(); ++b)
+            if (owner_of[b] == q && (x[a] - x[b]).norm() < range) {
+              expected.push_back(a);
+              break;
+            }
+        CHECK(sends == expected);
+        CHECK(receives == expected);  // entry for entry: bare state in an order both know
+        for (std::uint32_t k : paired[p].send[q]) CHECK(!plans[p].ghost[k]);
+        sent += sends.size();
+        planned += plans[p].send[q].size();
+      }
+    CHECK(sent > 0);
+    CHECK(sent < planned);  // the halo's outer ghosts pair with none
+  }
 }
