@@ -109,4 +109,34 @@ PairList localise(const PairList& table, const std::vector<std::uint32_t>& held,
   return mine;
 }
 
+PairList local_table(const std::vector<TableSlot>& slots, const std::vector<std::uint32_t>& held, bool driver) {
+  PairList mine;
+  mine.slot_begin.push_back(0);
+  mine.features.reserve(slots.size());
+  mine.slots.reserve(slots.size());
+  mine.records.reserve(slots.size());
+  RowCursor rows{held};  // the pairs' i do not decrease
+  bool kept = false;     // the current pair's bodies are held
+  const TableSlot* last = nullptr;
+  for (std::uint32_t at : pair_order(slots)) {
+    const TableSlot& t = slots[at];
+    if (!last || last->i != t.i || last->j != t.j) {  // a new pair
+      if (kept) mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
+      const std::size_t i = rows.at(t.i);
+      const std::size_t j = driver ? t.j : rows.after(i, t.j);  // a body pair's j above its i
+      kept = i < held.size() && held[i] == t.i && (driver || (j < held.size() && held[j] == t.j));
+      if (kept) mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order
+    }
+    last = &t;
+    if (!kept) continue;
+    mine.features.push_back(t.key);
+    mine.slots.push_back(t.slot);
+    mine.records.push_back(t.record);
+  }
+  if (kept) mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
+  mine.active.assign(mine.slots.size(), 1);
+  mine.resize_results();
+  return mine;
+}
+
 }  // namespace polydem

@@ -48,4 +48,8 @@ PairList table_of(const std::vector<TableSlot>& slots);
 // index is its place there), in local indices: the histories a rebuild on this rank hands over.
 PairList localise(const PairList& table, const std::vector<std::uint32_t>& held, bool driver);
 
+// localise(table_of(slots), held, driver) in one pass, each slot copied once (a rank's rebuild:
+// the slots it was handed straight into its local rows).
+PairList local_table(const std::vector<TableSlot>& slots, const std::vector<std::uint32_t>& held, bool driver);
+
 }  // namespace polydem

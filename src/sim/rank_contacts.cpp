@@ -137,7 +137,7 @@ void RankContacts::spread_landed() {
   store_ = std::move(h.owned);
   plan_ = share_ghosts(link_, cut_, halo_, store_);
   landed_ = false;
-  adopt(h.body_table, h.driver_table);
+  adopt_slots(h.body_slots, h.driver_slots);
 }
 
 // A rebuild the motion asks for: each rank's owned bodies and ghosts are current in its store,
@@ -156,7 +156,7 @@ void RankContacts::migrate_bodies() {
   // The pairs still local keep their searches: a pile's rebuild searches only its movers again.
   CandidateMemory searches = std::move(engine_->searches());
   searches.relabel(was, store_.global_id);
-  adopt(h.body_table, h.driver_table);
+  adopt_slots(h.body_slots, h.driver_slots);
   engine_->searches() = std::move(searches);
 }
 
@@ -170,13 +170,25 @@ long RankContacts::first_non_finite_position() const {
 // Lists this rank's bodies (plan_, their state in store_) and hands their histories over from
 // `body_table` and `driver_table` (global ids; pairs of other bodies are left out).
 void RankContacts::adopt(const PairList& body_table, const PairList& driver_table) {
+  new_engine();
+  engine_->body_pairs() = localise(body_table, store_.global_id, false);
+  engine_->driver_pairs() = localise(driver_table, store_.global_id, true);
+}
+
+// The same from the slots a rebuild handed over (global ids), laid out once (local_table).
+void RankContacts::adopt_slots(const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver) {
+  new_engine();
+  engine_->body_pairs() = local_table(body, store_.global_id, false);
+  engine_->driver_pairs() = local_table(driver, store_.global_id, true);
+}
+
+// An engine of the store's bodies (plan_), its lists to be set; the passes' groups and parcels for them.
+void RankContacts::new_engine() {
   paired_ghosts_.clear();  // narrow_parcels, once listed
   owned_rotors_ = with_runs(group_rotors(store_, store_.owned_rows(), shapes_));
   size_parcels();
   engine_ = std::make_unique<ContactEngine>(shapes_, store_.view(), settings_, engine_.get());
   engine_->want_reactions(false);  // a rank's own pairs' sum is not a reaction: share_results sums every rank's
-  engine_->body_pairs() = localise(body_table, store_.global_id, false);
-  engine_->driver_pairs() = localise(driver_table, store_.global_id, true);
 }
 
 void RankContacts::gather_table(ContactEngine& whole, bool to_root) const {

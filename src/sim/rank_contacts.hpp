@@ -213,6 +213,8 @@ class RankContacts {
   void migrate_bodies();
   long first_non_finite_position() const;
   void adopt(const PairList& body_table, const PairList& driver_table);
+  void adopt_slots(const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver);
+  void new_engine();
   std::vector<std::uint64_t> owned_weights(const std::vector<std::uint32_t>& rows) const;  // rows: store_.owned_rows()
   std::vector<double> summed_loads(const std::vector<std::uint32_t>& rows, const std::vector<std::uint64_t>& w) const;
   void recut_if_unbalanced(const std::vector<std::uint32_t>& rows);

@@ -44,7 +44,7 @@ Handover land_share(const RankLink& link, const DomainCut& cut, double halo, con
   }
   const std::vector<std::uint32_t>& owned = out.owned.global_id;
   std::erase_if(body, [&](const TableSlot& t) { return !holds(owned, t.i) && !holds(owned, t.j); });
-  out.body_table = table_of(body);  // each pair's slots from one rank: the reader of i's piece
+  out.body_slots = std::move(body);  // each pair's slots from one rank: the reader of i's piece
   return out;
 }
 

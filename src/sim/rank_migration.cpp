@@ -70,8 +70,8 @@ Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& s
   const auto ghosts = std::size_t(std::count(store.ghost.begin(), store.ghost.end(), std::uint8_t(1)));
   Handover out;
   out.owned.merge_of(store, kept, landed, ghosts + ghosts / 8 + 16);  // room for about as many ghosts as before
-  out.body_table = table_of(body_slots);  // each pair's slots from one rank: the old owner of i
-  out.driver_table = table_of(driver_slots);
+  out.body_slots = std::move(body_slots);  // each pair's slots from one rank: the old owner of i
+  out.driver_slots = std::move(driver_slots);
   return out;
 }
 

@@ -20,7 +20,7 @@ namespace polydem {
 // What a rank holds after the migration: its bodies and the histories of their pairs.
 struct Handover {
   LocalStore owned;                   // the owned bodies kept and landed, increasing id, no ghost
-  PairList body_table, driver_table;  // global ids, as table_of lays them out
+  std::vector<TableSlot> body_slots, driver_slots;  // global ids, a pair's slots from one rank (local_table)
 };
 
 // Sends each owned body of `store` (its ghosts current too) whose centre `cut` gives to

@@ -122,3 +122,21 @@ TEST_CASE("a rank's share of a table holds the pairs of its bodies, in its local
     }
   }
 }
+
+TEST_CASE("a rank's share laid out in one pass is the share of the table", "[checkpoint][mpi]") {
+  std::mt19937_64 rng(39);
+  for (int draw = 0; draw < 40; ++draw) {
+    const std::vector<TableSlot> slots = in_runs(rng, random_pairs(rng, 300, 50), 1 + int(rng() % 3));
+    std::vector<std::uint32_t> held;  // a rank's bodies, increasing: about half of them
+    for (std::uint32_t b = 0; b < 50; ++b)
+      if (rng() % 2) held.push_back(b);
+    for (bool driver : {false, true}) {
+      INFO("draw " << draw << (driver ? ", driver pairs" : ", body pairs"));
+      const PairList want = localise(table_of(slots), held, driver);
+      const PairList got = local_table(slots, held, driver);
+      CHECK(got.pairs.size() > 0);
+      check_same(got, want);
+      CHECK(got.records.size() == got.slots.size());
+    }
+  }
+}
