@@ -24,6 +24,7 @@ namespace {
 
 // The partner of a body-body pair: the other body.
 struct BodyPartner {
+  static constexpr bool kRetires = true;  // the kernels' allowances hold between two bodies (pair_kernel.hpp)
   const PosedBody* posed;
   const Vec3* position;          // m
   const Vec3* velocity;          // m/s
@@ -51,6 +52,7 @@ struct BodyPartner {
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return feature_contact(a, posed[j], f, max_gap, out);
   }
+  double allowance(const PosedBody& a, std::uint32_t j, FeaturePair f) const { return rejection_allowance(a, posed[j], f); }  // m
   // Rigorous: a feature distance shrinks by at most the two bodies' displacement bounds.
   bool apart(const PairList& list, std::uint32_t k, double band) const {
     const BodyPair p = list.pairs[k];
@@ -79,6 +81,7 @@ struct BodyPartner {
 
 // The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC).
 struct DriverPartner {
+  static constexpr bool kRetires = false;  // a driver's kernels pose their partner anew: no allowance
   const Drivers* drivers;
   const double* mass;  // kg, per local body
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {

@@ -44,7 +44,8 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
 
 // Evaluates one feature pair. Returns false when the closest points do not lie strictly inside
 // the features (the lower-dimensional pair covers the boundary), when edges are parallel
-// (edge_edge), or when gap >= max_gap. On true fills `out`.
+// (edge_edge), or when gap >= max_gap. On true fills `out`; on false sets out.gap to 1 where
+// rejection_allowance has an allowance for the rejection, else 0.
 // Between convex cores (centre inside): pairs whose normal points into a body as seen from its
 // centre (cores passed through each other) are rejected, never inverted. Vertex-face uses the
 // signed distance along the face body's outward normal, so the normal never inverts: a vertex
@@ -60,6 +61,12 @@ inline bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair 
                             ContactPoint& out) {
   return kFeatureKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);
 }
+
+// m, >= 0, for a pair feature_contact rejected with out.gap 1 (a vertex outside a face's polygon,
+// edges whose lines' closest points lie beyond an edge's end): it rejects the same way while the two
+// bodies' displacement bounds (rebuild_trigger.hpp) at that step and at a later one add up to less.
+// 0 where no such bound is made.
+double rejection_allowance(const PosedBody& A, const PosedBody& B, FeaturePair pair);
 
 // Verlet candidates: appends every feature pair whose features (as point sets, boundary
 // included, no interior rule) are closer than rA + rB + range, in a deterministic order

@@ -1,6 +1,7 @@
 // Feature-pair contact kernels and their dispatch table (the hot inner loop of the contact stage).
 // Every kernel works on differences from one vertex of a feature (a local frame there), so its
 // round-off scales with the feature size rather than with the world coordinates.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -14,6 +15,13 @@ namespace {
 // Distance between core edges, relative to the longer edge, under which the cores count as
 // crossing and the edge-edge normal comes from the centres instead of the closest points.
 constexpr double kCrossingTolerance = 1e-12;
+
+// Every kernel's `return false` goes through here: out.gap 1 where rejection_allowance makes an
+// allowance for it (features.hpp), else 0. A constant: the kernel keeps nothing alive for it.
+inline bool rejected(ContactPoint& out, bool allowed = false) {
+  out.gap = allowed ? 1.0 : 0.0;
+  return false;
+}
 
 // Fills `out` from the closest core points ca (on A), cb (on B) and the unit normal from B to A.
 inline void fill(const PosedBody& A, const PosedBody& B, const Vec3& ca, const Vec3& cb, const Vec3& n,
@@ -77,11 +85,11 @@ bool vertex_vertex(const PosedBody& A, const PosedBody& B, int a, int b, double 
   const Vec3 u = ca - cb;
   const double rsum = A.radius + B.radius;
   const double d2 = u.squaredNorm();
-  if (too_far_sq(d2, rsum, max_gap)) return false;
+  if (too_far_sq(d2, rsum, max_gap)) return rejected(out);
   const double d = std::sqrt(d2);
   // Coincident cores (a sphere centred on a vertex): fall back on the line of centres.
   const Vec3 n = d > 0.0 ? Vec3(u / d) : perpendicular_direction(A.position - B.position, Vec3::Zero());
-  if (points_into(n, ca, cb, A, B)) return false;
+  if (points_into(n, ca, cb, A, B)) return rejected(out);
   fill(A, B, ca, cb, n, d - rsum, out);
   return true;
 }
@@ -94,16 +102,16 @@ bool vertex_edge(const PosedBody& A, const PosedBody& B, int a, int b, double ma
   const Vec3 w = ca - p0;
   const double len2 = e.squaredNorm();
   const double tl = w.dot(e);  // t * len2, t the parameter of the projection on the edge
-  if (!inside_segment(tl, len2)) return false;
+  if (!inside_segment(tl, len2)) return rejected(out);
   const Vec3 foot = (tl / len2) * e;
   const Vec3 u = w - foot;
   const double rsum = A.radius + B.radius;
   const double d2 = u.squaredNorm();
-  if (too_far_sq(d2, rsum, max_gap)) return false;
+  if (too_far_sq(d2, rsum, max_gap)) return rejected(out);
   const double d = std::sqrt(d2);
   const Vec3 n = d > 0.0 ? Vec3(u / d) : perpendicular_direction(A.position - B.position, e);
   const Vec3 cb = p0 + foot;
-  if (points_into(n, ca, cb, A, B)) return false;
+  if (points_into(n, ca, cb, A, B)) return rejected(out);
   fill(A, B, ca, cb, n, d - rsum, out);
   return true;
 }
@@ -121,13 +129,75 @@ inline bool inside_face(const PosedBody& B, int f, const Vec3& p) {
   return true;
 }
 
+// The rejections' allowances (features.hpp). A body's displacement bound d since the build
+// (rebuild_trigger.hpp) covers its points within its core reach R, so between steps n and n' a core
+// point moves by at most d(n) + d(n'), the body turns by a chord of at most (d(n) + d(n')) / R, and
+// the body's frame under a point at y from its centre moves by at most max(1, |y| / R) times that.
+// M below is the pair's sum of both bodies' bounds at n and n'. The guards, 1e-12 of the terms'
+// sizes, cover both steps' round-off (~1e-16 relative) in the kernels' tests.
+constexpr double kAllowanceGuard = 1e-12;
+constexpr double kAllowanceShrink = 1.0 - 1e-9;  // the reach's and the allowance's own round-off
+
+// m, at most B's core reach: the distance of its core vertex v from its centre.
+inline double reach_below(const PosedBody& B, int v) { return (B.vertices[v] - B.position).norm() * kAllowanceShrink; }
+
+// m: vertex p (of A) projects outside B's face f. It stays beyond the edge plane it is farthest
+// beyond (by h, m) while its place in B's frame moves less than h, at most max(1, |p - xB| / R_B) M.
+double outside_face_allowance(const PosedBody& B, int f, const Vec3& p) {
+  const Shape& s = *B.shape;
+  const Vec3 y = p - B.position;  // m
+  const Vec3 q = B.rotation.transpose() * y;
+  double beyond = 0.0;  // m
+  for (int e = s.edge_plane_begin[f]; e < s.edge_plane_begin[f + 1]; ++e)
+    beyond = std::max(beyond, B.scale * s.edge_planes[e].offset - s.edge_planes[e].normal.dot(q));
+  const double reach = reach_below(B, s.faces[f][0]), y_norm = y.norm();  // m
+  beyond -= kAllowanceGuard * (y_norm + reach);
+  if (!(beyond > 0.0) || !(reach > 0.0)) return 0.0;
+  return kAllowanceShrink * beyond / std::max(1.0, y_norm / reach);
+}
+
+// m: one edge's side of an edge-edge rejection. On its line, g(s) = d . P (p + s d - p_other)
+// (P removes the other edge's direction) grows with s and is 0 at the lines' closest point, so the
+// point lies before its start where g(0) = -x_c2 / len2_other > 0 and past its end where
+// g(1) = (c2 - x_c2) / len2_other < 0 (x_c2 its parameter times c2, `guard` their round-off). In the
+// other body's frame its ends move by at most lambda M and d turns by at most M / reach, so g changes
+// by less than |d| M (2 lambda + rho / reach) for M <= reach, rho >= |P (its end - p_other)|.
+double edge_end_allowance(double x_c2, double c2, double len2_other, double guard, double d_len, double lambda,
+                          double rho, double reach) {
+  const double margin = std::max(-x_c2 - guard, x_c2 - c2 - guard) / len2_other;  // m^2, |g| less the guard
+  if (!(margin > 0.0) || !(reach > 0.0)) return 0.0;
+  return kAllowanceShrink * std::min(reach, margin / (d_len * (2.0 * lambda + rho / reach)));
+}
+
+// m: edges a (of A) and b (of B) whose lines' closest points lie beyond an end of either edge,
+// its terms made again as edge_edge makes them.
+double beyond_ends_allowance(const PosedBody& A, const PosedBody& B, int a, int b) {
+  const std::array<int, 2>& edge_a = A.shape->edges[a];
+  const std::array<int, 2>& edge_b = B.shape->edges[b];
+  const Vec3& pa = A.vertices[edge_a[0]];
+  const Vec3& pb = B.vertices[edge_b[0]];
+  const Vec3 da = A.vertices[edge_a[1]] - pa, db = B.vertices[edge_b[1]] - pb, r = pa - pb;
+  const double aa = da.squaredNorm(), bb = db.squaredNorm(), ab = da.dot(db), ra = da.dot(r), rb = db.dot(r);
+  const double c2 = da.cross(db).squaredNorm();
+  const double s_c2 = ab * rb - ra * bb, t_c2 = aa * rb - ab * ra;
+  const double la = std::sqrt(aa), lb = std::sqrt(bb), lr = r.norm();  // m
+  const double reach_a = reach_below(A, edge_a[0]), reach_b = reach_below(B, edge_b[0]);
+  const double reach = std::min(reach_a, reach_b);  // m, for the turn
+  if (!(reach > 0.0)) return 0.0;
+  const double lambda_a = std::max(1.0, ((pa - B.position).norm() + la) / reach_b);  // A's edge in B's frame
+  const double lambda_b = std::max(1.0, ((pb - A.position).norm() + lb) / reach_a);  // B's edge in A's frame
+  const double guard_s = 2.0 * kAllowanceGuard * la * bb * (lr + la), guard_t = 2.0 * kAllowanceGuard * lb * aa * (lr + lb);
+  return std::max(edge_end_allowance(s_c2, c2, bb, guard_s, la, lambda_a, lr + la, reach),
+                  edge_end_allowance(t_c2, c2, aa, guard_t, lb, lambda_b, lr + lb, reach));
+}
+
 // A vertex at signed distance d < 0 of a face of a non-convex body: its faces are two-sided
 // (an open surface, a plate, a facet of a hollow), so the vertex touches the back side, with the
 // normal reversed (as Rockable and exaDEM take |d|).
 bool back_side(const PosedBody& A, const PosedBody& B, const Vec3& ca, const Vec3& n, double d, double max_gap,
                ContactPoint& out) {
   const double gap = -d - A.radius - B.radius;
-  if (gap >= max_gap) return false;
+  if (gap >= max_gap) return rejected(out);
   fill(A, B, ca, ca - d * n, -n, gap, out);
   return true;
 }
@@ -136,13 +206,13 @@ bool back_side(const PosedBody& A, const PosedBody& B, const Vec3& ca, const Vec
 // Depth, normal and gap are then made in the world, as before the edge planes: the same bits.
 bool vertex_face(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap, ContactPoint& out) {
   const Vec3& ca = A.vertices[a];
-  if (!inside_face(B, b, ca)) return false;
+  if (!inside_face(B, b, ca)) return rejected(out, true);
   const Vec3 n = B.rotation * B.shape->face_normals[b];  // outward normal of B's face, world
   const double d = (ca - B.vertices[B.shape->faces[b][0]]).dot(n);  // signed: negative below the face plane
   const double rsum = A.radius + B.radius;
   if (d < 0.0 && !B.shape->convex) return back_side(A, B, ca, n, d, max_gap, out);
-  if (d <= -rsum || d - rsum >= max_gap) return false;
-  if (d < 0.0 && !is_exit_face(B, b, ca, d)) return false;
+  if (d <= -rsum || d - rsum >= max_gap) return rejected(out);
+  if (d < 0.0 && !is_exit_face(B, b, ca, d)) return rejected(out);
   fill(A, B, ca, ca - d * n, n, d - rsum, out);
   return true;
 }
@@ -158,22 +228,23 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
   const double c2 = c.squaredNorm();
   const double aa = da.squaredNorm();
   const double bb = db.squaredNorm();
-  if (c2 <= kParallelSin2 * aa * bb) return false;
+  if (c2 <= kParallelSin2 * aa * bb) return rejected(out);
   const Vec3 r = pa - pb;
   const double rc = r.dot(c);  // line-line distance times |c|
   const double rsum = A.radius + B.radius;
   const double limit = rsum + max_gap;  // m
-  if (limit <= 0.0 || rc * rc >= limit * limit * c2) return false;  // too far: no division, no sqrt
+  if (limit <= 0.0 || rc * rc >= limit * limit * c2) return rejected(out);  // too far: no division, no sqrt
   const double ab = da.dot(db);
   const double ra = da.dot(r);
   const double rb = db.dot(r);
   const double s_c2 = ab * rb - ra * bb;  // s c2 and t c2: the interior test needs no division
   const double t_c2 = aa * rb - ab * ra;
-  if (!inside_segment(s_c2, c2) || !inside_segment(t_c2, c2)) return false;
+  if (!inside_segment(s_c2, c2) || !inside_segment(t_c2, c2))
+    return rejected(out, true);
   const double s = s_c2 / c2, t = t_c2 / c2;
   const double inv_c = 1.0 / std::sqrt(c2);
   const double signed_d = rc * inv_c;  // line-line distance along the common normal
-  if (std::abs(signed_d) - rsum >= max_gap) return false;
+  if (std::abs(signed_d) - rsum >= max_gap) return rejected(out);
   Vec3 n = c * inv_c;
   // Crossing cores: the closest-point direction is noise, orient the common normal from B's centre to A's.
   const bool crossing = std::abs(signed_d) <= kCrossingTolerance * std::sqrt(std::max(aa, bb));
@@ -181,7 +252,7 @@ bool edge_edge(const PosedBody& A, const PosedBody& B, int a, int b, double max_
   if (side < 0.0) n = -n;
   const Vec3 ca = pa + s * da;
   const Vec3 cb = pb + t * db;
-  if (points_into(n, ca, cb, A, B)) return false;
+  if (points_into(n, ca, cb, A, B)) return rejected(out);
   fill(A, B, ca, cb, n, std::abs(signed_d) - rsum, out);
   return true;
 }
@@ -196,6 +267,15 @@ template <FeatureKernel K>
 }
 
 }  // namespace
+
+double rejection_allowance(const PosedBody& A, const PosedBody& B, FeaturePair pair) {
+  switch (pair.type) {
+    case PairType::vertex_face: return outside_face_allowance(B, int(pair.b), A.vertices[pair.a]);
+    case PairType::face_vertex: return outside_face_allowance(A, int(pair.a), B.vertices[pair.b]);
+    case PairType::edge_edge: return beyond_ends_allowance(A, B, int(pair.a), int(pair.b));
+    default: return 0.0;
+  }
+}
 
 // Indexed by PairType; filled once at compile time, no virtual call per contact.
 const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = {
