@@ -260,6 +260,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   fresh.recording = !spheres_only_;
   fresh.sparse = !spheres_only_;  // the sphere kernel's one slot a pair stays dense
   fresh_d.sparse = true;
+  fresh.block = fresh_d.block = spheres_only_ ? kPairBlock : kPolyhedronPairBlock;
   {  // the broad phase's pairs are freed before the slots' state is sized
     std::vector<BodyPair> near;
     choose_skins(bodies);
