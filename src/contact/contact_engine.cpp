@@ -260,7 +260,6 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   fresh.recording = !spheres_only_;
   fresh.sparse = !spheres_only_;  // the sphere kernel's one slot a pair stays dense
   fresh_d.sparse = true;
-  fresh.block = fresh_d.block = spheres_only_ ? kPairBlock : kPolyhedronPairBlock;
   {  // the broad phase's pairs are freed before the slots' state is sized
     std::vector<BodyPair> near;
     choose_skins(bodies);
@@ -296,6 +295,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
   old_body = PairList{};
   equal_spheres_ = spheres_only_ && settings_.equal_spheres ? equal_spheres(bodies) : std::nullopt;
+  if (!spheres_only_) fresh.block = polyhedron_pair_block(fresh.size());  // spheres: kPairBlock
   size_results(fresh, !equal_spheres_);  // equal spheres: one k', c' for all pairs (sphere_pair_loop)
   for (auto* v : {&fresh.force_i, &fresh.torque_i, &fresh.torque_j}) release(*v);  // summed in the loop: DirectSums
   body_list_ = std::move(fresh);
@@ -313,6 +313,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   fill_driver_slots(per_pair, fresh_d);
   size_slots(fresh_d);
   flush_pairs(old_driver, carry_history(old_driver, fresh_d), bodies.ghost);
+  if (!spheres_only_) fresh_d.block = polyhedron_pair_block(fresh_d.size());
   size_results(fresh_d);
   driver_list_ = std::move(fresh_d);
   driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());

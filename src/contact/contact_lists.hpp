@@ -42,9 +42,17 @@ inline std::uint64_t feature_key(FeaturePair f) {
 // together; the threads' cut of the body pairs falls between blocks): a sphere list's. 64: the
 // lanes pair contacts within a block, and a sphere pair is ~87 instructions.
 constexpr std::size_t kPairBlock = 64;
-// A polyhedron list's (~1,000 instructions a pair): a pour's ~300 body pairs made 5 blocks of
-// 64, and a cut between two of them left one thread 1.3 times the other's walk (issue 19).
-constexpr std::size_t kPolyhedronPairBlock = 16;
+// A polyhedron list's (~1,000 instructions a pair): 64 pairs, halved down to 16 while the list
+// has fewer than 32 blocks. A pour's ~300 body pairs made 5 blocks of 64, and the walk's cut
+// between two left one thread 1.3 times the other's walk; but each block sets its loop up again
+// (~200 instructions: the settled cubes' 7,742 pairs in blocks of 16 cost +0.5%). Issue 19.
+constexpr std::size_t kSmallestPairBlock = 16;
+inline std::size_t polyhedron_pair_block(std::size_t pairs) {
+  constexpr std::size_t kFewestBlocks = 32;
+  std::size_t block = kPairBlock;
+  while (block > kSmallestPairBlock && pairs < kFewestBlocks * block) block /= 2;
+  return block;
+}
 
 struct PairList {
   std::vector<BodyPair> pairs;             // sorted by (i, j)

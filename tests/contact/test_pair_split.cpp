@@ -178,8 +178,8 @@ TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pai
   check_sums(2000, 1999);  // ids at random in space: many foreign pairs
   check_sums(2000, 40);    // ids that follow space: few
   check_sums(40, 39);      // one block: the later chunks empty
-  check_sums(2000, 1999, kPolyhedronPairBlock);  // a polyhedron list's blocks
-  check_sums(60, 59, kPolyhedronPairBlock);      // a pour's few pairs: several blocks
+  check_sums(2000, 1999, kSmallestPairBlock);  // a polyhedron list's smallest blocks
+  check_sums(60, 59, kSmallestPairBlock);      // a pour's few pairs: several blocks
 }
 
 TEST_CASE("a split cuts at blocks, homes each body in its first pair's chunk and lists its later pairs", "[pair_split]") {
@@ -308,10 +308,15 @@ TEST_CASE("a polyhedron list's few hundred pairs cut near halves: its blocks are
   const std::uint32_t n_bodies = 2000;
   const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 300, n_bodies);
   REQUIRE(pairs.size() % kPairBlock > kPairBlock / 4);  // no sphere block boundary near the middle
+  const std::size_t block = polyhedron_pair_block(pairs.size());
+  CHECK(block == kSmallestPairBlock);
   PairSplit split;
-  split_pairs(pairs, {}, {}, n_bodies, 2, split, {}, CrossWeights{}, kPolyhedronPairBlock);
-  CHECK(split.cut[1] % kPolyhedronPairBlock == 0);
-  CHECK(std::abs(double(split.cut[1]) - 0.5 * double(pairs.size())) <= 0.5 * kPolyhedronPairBlock);
+  split_pairs(pairs, {}, {}, n_bodies, 2, split, {}, CrossWeights{}, block);
+  CHECK(split.cut[1] % block == 0);
+  CHECK(std::abs(double(split.cut[1]) - 0.5 * double(pairs.size())) <= 0.5 * double(block));
+  // Many pairs: the sphere lists' blocks (each block sets its loop up again), 32 of them or more.
+  CHECK(polyhedron_pair_block(7742) == kPairBlock);  // the settled cubes' list
+  CHECK(polyhedron_pair_block(1500) == kPairBlock / 2);
 }
 
 // Thread t's bodies under `cut` at `threads`, each body's count of takers (ids: every third body).
