@@ -298,6 +298,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
   old_body = PairList{};
   equal_spheres_ = spheres_only_ && settings_.equal_spheres ? equal_spheres(bodies) : std::nullopt;
+  // The walk's static cut falls between blocks: a pour's few pairs in small ones. Driver pairs
+  // keep kPairBlock (a dynamic loop; the cubes' 873 in 16s moved only valgrind's split).
+  if (!spheres_only_) fresh.block = polyhedron_pair_block(fresh.size());
   size_results(fresh, !equal_spheres_);  // equal spheres: one k', c' for all pairs (sphere_pair_loop)
   for (auto* v : {&fresh.force_i, &fresh.torque_i, &fresh.torque_j}) release(*v);  // summed in the loop: DirectSums
   body_list_ = std::move(fresh);

@@ -39,12 +39,24 @@ inline std::uint64_t feature_key(FeaturePair f) {
 }
 
 // Pairs per block of the pair loop (a thread takes a block at a time; its contacts are counted
-// together; the threads' cut of the body pairs falls between blocks). 64: a pour's few hundred
-// pairs still split evenly between the threads (with 256 one thread took most of them).
+// together; the threads' cut of the body pairs falls between blocks): a sphere list's. 64: the
+// lanes pair contacts within a block, and a sphere pair is ~87 instructions.
 constexpr std::size_t kPairBlock = 64;
+// A polyhedron list's (~1,000 instructions a pair): 64 pairs, halved down to 16 while the list
+// has fewer than 32 blocks. A pour's ~300 body pairs made 5 blocks of 64, and the walk's cut
+// between two left one thread 1.3 times the other's walk; but each block sets its loop up again
+// (~200 instructions: the settled cubes' 7,742 pairs in blocks of 16 cost +0.5%). Issue 19.
+constexpr std::size_t kSmallestPairBlock = 16;
+inline std::size_t polyhedron_pair_block(std::size_t pairs) {
+  constexpr std::size_t kFewestBlocks = 32;
+  std::size_t block = kPairBlock;
+  while (block > kSmallestPairBlock && pairs < kFewestBlocks * block) block /= 2;
+  return block;
+}
 
 struct PairList {
   std::vector<BodyPair> pairs;             // sorted by (i, j)
+  std::size_t block = kPairBlock;          // pairs a block (the loops' unit of work)
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
   std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
   // Sparse (lists of polyhedra and drivers): a slot's state is states[state_of[s]], made at its
@@ -71,6 +83,7 @@ struct PairList {
   std::vector<LinearStep> linear_steps;    // per pair: the exact step's k', c' (exact_linear.hpp), set at first use
 
   std::size_t size() const { return pairs.size(); }
+  std::size_t blocks() const { return (pairs.size() + block - 1) / block; }
   std::size_t slot_count() const { return features.size(); }
   // Slot s's state; a sparse list's is made here at the slot's first touch (from the one
   // thread that steps its pair).
@@ -110,7 +123,7 @@ struct PairList {
     linear_steps.assign(pair_steps ? pairs.size() : 0, LinearStep{});
     // Sized here, with the list: the pair loop then needs no `omp single` (a barrier) each step.
     pending.assign(sparse ? pairs.size() : 0, EnergyParts{});
-    block_contacts.assign((pairs.size() + kPairBlock - 1) / kPairBlock, 0);
+    block_contacts.assign(blocks(), 0);
     block_ended.assign(block_contacts.size(), 0);
   }
 };

@@ -31,7 +31,7 @@ void ContactEngine::flush_ended(const std::vector<std::uint8_t>* ghost) {
   for (PairList* list : {&body_list_, &driver_list_})
     for (std::size_t b = 0; b < list->block_ended.size(); ++b) {
       if (!list->block_ended[b]) continue;
-      for (std::size_t k = b * kPairBlock; k < std::min(list->size(), (b + 1) * kPairBlock); ++k)
+      for (std::size_t k = b * list->block; k < std::min(list->size(), (b + 1) * list->block); ++k)
         if (!list->touching[k]) flush_pair(*list, k, ghost);
     }
 }

@@ -244,11 +244,11 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
   const InternalAdd internal{direct.sums.data(), list.pairs.data()};
   const std::size_t n = list.size();
   std::uint32_t f = split.foreign_begin[t], next = split.foreign[f];  // the last is the list size
-  for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b) {
+  for (std::size_t b = split.cut[t] / list.block; b * list.block < split.cut[t + 1]; ++b) {
     std::uint32_t contacts = 0;
     bool ended = false;
-    const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * kPairBlock));
-    for (std::uint32_t k = std::uint32_t(b * kPairBlock); k < end; ++k) {
+    const std::uint32_t end = std::uint32_t(std::min(n, (b + 1) * list.block));
+    for (std::uint32_t k = std::uint32_t(b * list.block); k < end; ++k) {
       const std::uint32_t stop = std::min(end, next);
       chunk_pairs(list, kernel, internal, scratch, k, stop, contacts, ended);
       if ((k = stop) == end) break;
@@ -318,7 +318,7 @@ template <class Kernel>
 void block_forces(PairList& list, const Kernel& kernel, std::size_t b, PairScratch& scratch) {
   std::uint32_t contacts = 0;
   bool ended = false;
-  const std::uint32_t begin = std::uint32_t(b * kPairBlock), end = std::uint32_t(std::min(list.size(), (b + 1) * kPairBlock));
+  const std::uint32_t begin = std::uint32_t(b * list.block), end = std::uint32_t(std::min(list.size(), (b + 1) * list.block));
   if constexpr (requires { Kernel::kTwoLanes; }) {
     paired_block(list, kernel, scratch, begin, end, contacts, ended);
   } else {
@@ -360,11 +360,11 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
 // (direct_pair_forces), not into the list.
 template <bool kNoWait = false, class Kernel>
 void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
-  const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
+  const std::size_t n = list.size(), blocks = list.blocks();
   assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
   assert(list.pending.size() == (list.sparse ? n : 0));
-  // Small scenes (one block) wake no thread; inside a team the blocks are shared (parallel.hpp).
-  in_team(blocks >= 2, [&] {
+  // Small scenes (one sphere block) wake no thread; inside a team the blocks are shared (parallel.hpp).
+  in_team(n > kPairBlock, [&] {
     PairScratch scratch;
     if (direct) {
       direct_pair_forces<kNoWait>(list, kernel, *direct, scratch);
@@ -388,14 +388,14 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
 // leave without a barrier: the caller meets where something reads the results (ContactEngine::forces).
 template <class Kernel>
 void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t* begin = nullptr, TeamCut cut = {}) {
-  const std::size_t n = list.size(), blocks = (n + kPairBlock - 1) / kPairBlock;
+  const std::size_t n = list.size(), blocks = list.blocks();
   assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
-  in_team(blocks >= 2, [&] {
+  in_team(n > kPairBlock, [&] {
     PairScratch scratch;
     const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
     const bool by_bodies = begin && cut.threads == int(threads);
     auto first_pair = [&](std::size_t u) { return by_bodies ? std::size_t(begin[cut.at[u]]) : u * n / threads; };
-    auto first_block = [&](std::size_t u) { return (first_pair(u) + kPairBlock / 2) / kPairBlock; };
+    auto first_block = [&](std::size_t u) { return (first_pair(u) + list.block / 2) / list.block; };
     for (std::size_t b = first_block(t), end = t + 1 == threads ? blocks : first_block(t + 1); b < end; ++b)
       pair_loop_detail::block_forces(list, kernel, b, scratch);
   });

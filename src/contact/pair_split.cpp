@@ -16,7 +16,7 @@ double pair_weight(const std::vector<std::uint16_t>& touching, std::uint32_t k) 
 
 // Cuts at block boundaries so that chunk t's blocks weigh about shares[t] of all (empty: the same).
 void cut_by_weight(const std::vector<double>& block_weight, const std::vector<double>& shares, int threads,
-                   std::size_t n, std::vector<std::uint32_t>& cut) {
+                   std::size_t n, std::size_t block_size, std::vector<std::uint32_t>& cut) {
   double total = 0.0;
   for (double w : block_weight) total += w;
   cut.assign(threads + 1, std::uint32_t(n));
@@ -27,7 +27,7 @@ void cut_by_weight(const std::vector<double>& block_weight, const std::vector<do
     before += shares.size() == std::size_t(threads) ? shares[t - 1] : 1.0 / threads;
     const double target = total * before;
     while (b < block_weight.size() && reached + 0.5 * block_weight[b] < target) reached += block_weight[b++];
-    cut[t] = std::uint32_t(std::min(n, b * kPairBlock));
+    cut[t] = std::uint32_t(std::min(n, b * block_size));
   }
 }
 
@@ -44,20 +44,20 @@ std::vector<int> home_chunks(const std::vector<BodyPair>& pairs, std::size_t n_b
 }
 
 // Per body, the block of its first pair as i (or of the next body's): where the body cut puts its passes.
-std::vector<std::uint32_t> body_blocks(const std::vector<BodyPair>& pairs, std::size_t n_bodies) {
+std::vector<std::uint32_t> body_blocks(const std::vector<BodyPair>& pairs, std::size_t n_bodies, std::size_t block_size) {
   std::vector<std::uint32_t> block(pairs.empty() ? 0 : n_bodies);
   std::size_t k = 0;
   for (std::uint32_t b = 0; b < block.size(); ++b) {
     while (k < pairs.size() && pairs[k].i < b) ++k;
-    block[b] = std::uint32_t(std::min(k, pairs.size() - 1) / kPairBlock);
+    block[b] = std::uint32_t(std::min(k, pairs.size() - 1) / block_size);
   }
   return block;
 }
 
 // Per block, the bodies' other work (`body_weight`), each body's in its block (body_blocks).
 std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::vector<float>& body_weight,
-                                 const std::vector<std::uint32_t>& block) {
-  std::vector<double> weight((pairs.size() + kPairBlock - 1) / kPairBlock, 0.0);
+                                 const std::vector<std::uint32_t>& block, std::size_t block_size) {
+  std::vector<double> weight((pairs.size() + block_size - 1) / block_size, 0.0);
   for (std::uint32_t b = 0; b < std::min(body_weight.size(), block.size()); ++b) weight[block[b]] += body_weight[b];
   return weight;
 }
@@ -65,14 +65,14 @@ std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::
 // A cut's crossing work added where it runs: each foreign pair's (its walk's block) and each late
 // term's (its body's passes' block, in `bodies` too: not walk work).
 void add_crossing(const std::vector<BodyPair>& pairs, const std::vector<int>& home, const std::vector<std::uint32_t>& cut,
-                  const std::vector<std::uint32_t>& block, CrossWeights cross, std::vector<double>& weight,
-                  std::vector<double>& bodies) {
+                  const std::vector<std::uint32_t>& block, std::size_t block_size, CrossWeights cross,
+                  std::vector<double>& weight, std::vector<double>& bodies) {
   int c = 0;
   for (std::uint32_t k = 0; k < pairs.size(); ++k) {
     while (k >= cut[c + 1]) ++c;
     const bool home_i = home[pairs[k].i] == c, home_j = home[pairs[k].j] == c;
     if (home_i && home_j) continue;
-    weight[k / kPairBlock] += cross.foreign;
+    weight[k / block_size] += cross.foreign;
     for (std::uint32_t b : {pairs[k].i, pairs[k].j})
       if (home[b] != c) weight[block[b]] += cross.late, bodies[block[b]] += cross.late;
   }
@@ -82,23 +82,23 @@ void add_crossing(const std::vector<BodyPair>& pairs, const std::vector<int>& ho
 
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares, CrossWeights cross) {
+                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size) {
   const std::size_t n = pairs.size();
   split.threads = threads;
-  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies);
-  std::vector<double> bodies = body_weights(pairs, body_weight, block);
+  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies, block_size);
+  std::vector<double> bodies = body_weights(pairs, body_weight, block, block_size);
   std::vector<double> weight = bodies;  // each pair computed by its chunk's thread
-  for (std::uint32_t k = 0; k < n; ++k) weight[k / kPairBlock] += pair_weight(touching, k);
-  cut_by_weight(weight, shares, threads, n, split.cut);
+  for (std::uint32_t k = 0; k < n; ++k) weight[k / block_size] += pair_weight(touching, k);
+  cut_by_weight(weight, shares, threads, n, block_size, split.cut);
   std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
   if (threads > 1 && (cross.foreign > 0.0 || cross.late > 0.0)) {  // once more, with this cut's crossing work
-    add_crossing(pairs, home, split.cut, block, cross, weight, bodies);
-    cut_by_weight(weight, shares, threads, n, split.cut);
+    add_crossing(pairs, home, split.cut, block, block_size, cross, weight, bodies);
+    cut_by_weight(weight, shares, threads, n, block_size, split.cut);
     home = home_chunks(pairs, n_bodies, split.cut);
   }
   split.walk_weight.assign(threads, 0.0);
   for (int t = 0; t < threads; ++t)
-    for (std::size_t b = split.cut[t] / kPairBlock; b * kPairBlock < split.cut[t + 1]; ++b)
+    for (std::size_t b = split.cut[t] / block_size; b * block_size < split.cut[t + 1]; ++b)
       split.walk_weight[t] += weight[b] - bodies[b];
   split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
@@ -171,7 +171,7 @@ std::vector<double> paced_shares(const PairSplit& split, const std::vector<Threa
 void DirectSums::cut(const PairList& list, int threads) {
   if (follow_pace) shares = paced_shares(split, pace, shares);
   if (shares.size() != std::size_t(threads)) shares.clear();  // another team: even shares
-  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross);
+  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross, list.block);
   foreign.resize(split.foreign_side.size());
   pace.assign(threads > 1 ? threads : 0, ThreadPace{});
   const bool on = !zero.empty() && zero[0].on;  // the flags agree between loops

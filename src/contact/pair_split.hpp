@@ -51,7 +51,7 @@ struct LateTerms {
 // The cut of a pair list for a team of `threads`, rebuilt with the list or the team size.
 struct PairSplit {
   int threads = 0;                           // the team it was cut for; 0: to be cut
-  std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of kPairBlock but the last
+  std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of the list's block but the last
   std::vector<std::uint32_t> body_cut;       // threads + 1 bodies: chunk t's pairs' bodies i from body_cut[t] (TeamCut)
   std::vector<double> walk_weight;           // per chunk, its walk's weight (pairs apart; its bodies' left out)
   std::vector<std::uint32_t> foreign;        // foreign pairs, increasing, then the list size (a sentinel)
@@ -69,7 +69,7 @@ struct CrossWeights {
   double foreign = 0.0, late = 0.0;
 };
 
-// Cuts `pairs` (sorted by i) into `threads` chunks of kPairBlock blocks, balanced by the work
+// Cuts `pairs` (sorted by i) into `threads` chunks of blocks of `block_size` pairs, balanced by the work
 // each chunk does in its walk: its pairs, each weighed by its contacts at the last step
 // (`touching`, per pair, or empty: none), plus the work of the bodies it takes in the step's
 // other passes (`body_weight`, per body in pairs apart, or empty: none). Chunk t gets the
@@ -79,7 +79,8 @@ struct CrossWeights {
 // again once with the first cut's foreign pairs and late terms weighed where they run.
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares = {}, CrossWeights cross = {});
+                 const std::vector<double>& shares = {}, CrossWeights cross = {},
+                 std::size_t block_size = kPairBlock);
 
 // One thread's walk times (s) since the last cut, the last kSteps kept. A cache line of its own
 // start: each thread writes its own every step.

@@ -186,7 +186,7 @@ void Simulation::sum_energy() {
 StateEnergy Simulation::state_energy() const {
   if (ranks_) return summed_;
   StateEnergy s;
-  for (std::size_t b = 0; b < bodies.size(); ++b) s.add_body(bodies, b);
+  s.add_bodies(bodies, bodies.size());
   s.elastic = engine_->elastic(drivers);
   s.open = engine_->open_energy(nullptr);
   return s;

@@ -15,6 +15,12 @@ void each_sum(S& s, F&& f) {
 
 }  // namespace
 
+void StateEnergy::add_body_sums(const StateEnergy& o) {
+  kinetic.add(o.kinetic);
+  rotational.add(o.rotational);
+  for (int d = 0; d < 3; ++d) moment[d].add(o.moment[d]);
+}
+
 std::vector<std::uint64_t> StateEnergy::words() const {
   std::vector<std::uint64_t> w;
   each_sum(*this, [&](const ExactSum& s) {

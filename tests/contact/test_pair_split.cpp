@@ -73,11 +73,12 @@ void run_loop(PairList& list, const std::vector<PairTotals>& terms, DirectSums& 
   }, &direct);
 }
 
-void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
+void check_sums(std::uint32_t n_bodies, std::uint32_t reach, std::size_t block = kPairBlock) {
   std::mt19937_64 rng(reach);
   PairList list;
   list.pairs = random_pairs(rng, n_bodies, 6 * n_bodies, reach);
   list.sparse = true;  // no slots: the pairs' energies kept per pair
+  list.block = block;
   list.resize_results();
   const std::vector<PairTotals> touching = random_terms(rng, list.size());
   std::vector<PairTotals> parting = touching;  // every third pair's contact ends
@@ -113,13 +114,13 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
       plain[p.j].force -= terms[k].force_i;
       plain[p.j].torque += terms[k].torque_j;
       pending[k] += terms[k].energy;
-      contacts[k / kPairBlock] += std::uint32_t(terms[k].contacts);
-      ended[k / kPairBlock] |= was[k] != 0 && terms[k].contacts == 0;
+      contacts[k / block] += std::uint32_t(terms[k].contacts);
+      ended[k / block] |= was[k] != 0 && terms[k].contacts == 0;
       was[k] = std::uint16_t(terms[k].contacts);
     }
     std::vector<std::atomic<int>> calls(list.size());
     run_loop(list, terms, direct, threads, calls);
-    CAPTURE(threads, reach, list.size(), direct.split.foreign_side.size());
+    CAPTURE(threads, reach, block, list.size(), direct.split.foreign_side.size());
     int wrong_calls = 0, wrong_sums = 0, wrong_pending = 0, wrong_blocks = 0, ends = 0;
     for (std::size_t k = 0; k < list.size(); ++k) {
       wrong_calls += calls[k] != 1;
@@ -140,6 +141,7 @@ void check_sums(std::uint32_t n_bodies, std::uint32_t reach) {
     CHECK(wrong_blocks == 0);
     CHECK((step % 2 ? ends == 0 : ends > 0));  // contacts end at the parting steps only
     CHECK(direct.split.threads == threads);
+    for (int t = 1; t < threads; ++t) CHECK((direct.split.cut[t] % block == 0 || direct.split.cut[t] == list.size()));
     if (!shares.empty() && reach < 100 && list.size() > 8 * kPairBlock)  // the forced cut taken (ids that follow space: pairs weigh alike)
       CHECK(std::abs(double(direct.split.cut[1]) / double(list.size()) - shares[0]) < 0.1);
     if (step % 2) {  // the sums taken and cleared, as a closing pass does (ForceSums): the next loop starts from them
@@ -176,6 +178,8 @@ TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pai
   check_sums(2000, 1999);  // ids at random in space: many foreign pairs
   check_sums(2000, 40);    // ids that follow space: few
   check_sums(40, 39);      // one block: the later chunks empty
+  check_sums(2000, 1999, kSmallestPairBlock);  // a polyhedron list's smallest blocks
+  check_sums(60, 59, kSmallestPairBlock);      // a pour's few pairs: several blocks
 }
 
 TEST_CASE("a split cuts at blocks, homes each body in its first pair's chunk and lists its later pairs", "[pair_split]") {
@@ -296,6 +300,23 @@ TEST_CASE("a cut's crossing work moves it: a star's foreign pairs weighed twice 
   CHECK(even.cut[1] == n_pairs / 2);
   CHECK(std::abs(double(crossed.cut[1]) - 0.625 * n_pairs) <= double(kPairBlock));
   CHECK(crossed.foreign_side.size() == n_pairs - crossed.cut[1]);  // chunk 1's pairs, of the second cut
+}
+
+TEST_CASE("a polyhedron list's few hundred pairs cut near halves: its blocks are small", "[pair_split]") {
+  // A pour's ~300 body pairs, alike: 64-pair blocks cut them at 128 or 192 (43% or 64%).
+  std::mt19937_64 rng(23);
+  const std::uint32_t n_bodies = 2000;
+  const std::vector<BodyPair> pairs = random_pairs(rng, n_bodies, 300, n_bodies);
+  REQUIRE(pairs.size() % kPairBlock > kPairBlock / 4);  // no sphere block boundary near the middle
+  const std::size_t block = polyhedron_pair_block(pairs.size());
+  CHECK(block == kSmallestPairBlock);
+  PairSplit split;
+  split_pairs(pairs, {}, {}, n_bodies, 2, split, {}, CrossWeights{}, block);
+  CHECK(split.cut[1] % block == 0);
+  CHECK(std::abs(double(split.cut[1]) - 0.5 * double(pairs.size())) <= 0.5 * double(block));
+  // Many pairs: the sphere lists' blocks (each block sets its loop up again), 32 of them or more.
+  CHECK(polyhedron_pair_block(7742) == kPairBlock);  // the settled cubes' list
+  CHECK(polyhedron_pair_block(1500) == kPairBlock / 2);
 }
 
 // Thread t's bodies under `cut` at `threads`, each body's count of takers (ids: every third body).
