@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 
 namespace polydem {
@@ -75,28 +76,41 @@ PairList table_of(const std::vector<TableSlot>& slots) {
 
 namespace {
 
-// The index of `g` in `held` (increasing), or -1 when not held.
-std::int64_t index_in(const std::vector<std::uint32_t>& held, std::uint32_t g) {
-  const auto at = std::lower_bound(held.begin(), held.end(), g);
-  return at != held.end() && *at == g ? std::int64_t(at - held.begin()) : -1;
+// Pair (i, j) of global ids in this rank's rows (places in the cursor's `held`), or none where it
+// does not hold both (a driver's j is the driver's index). Pairs come in increasing i.
+std::optional<BodyPair> held_pair(RowCursor& rows, std::uint32_t i, std::uint32_t j, bool driver) {
+  const std::vector<std::uint32_t>& held = rows.ids;
+  const std::size_t li = rows.at(i);
+  if (li >= held.size() || held[li] != i) return std::nullopt;
+  if (driver) return BodyPair{std::uint32_t(li), j};
+  const std::size_t lj = rows.after(li, j);  // a body pair's j above its i
+  if (lj >= held.size() || held[lj] != j) return std::nullopt;
+  return BodyPair{std::uint32_t(li), std::uint32_t(lj)};  // local order is global order
+}
+
+PairList reserved(std::size_t slots) {
+  PairList mine;
+  mine.slot_begin.push_back(0);
+  mine.features.reserve(slots);
+  mine.slots.reserve(slots);
+  mine.records.reserve(slots);
+  return mine;
+}
+
+void finish(PairList& mine) {
+  mine.active.assign(mine.slots.size(), 1);
+  mine.resize_results();
 }
 
 }  // namespace
 
 PairList localise(const PairList& table, const std::vector<std::uint32_t>& held, bool driver) {
-  PairList mine;
-  mine.slot_begin.push_back(0);
-  mine.features.reserve(table.slots.size());
-  mine.slots.reserve(table.slots.size());
-  mine.records.reserve(table.slots.size());
+  PairList mine = reserved(table.slots.size());
   RowCursor rows{held};  // a table's i do not decrease
   for (std::size_t k = 0; k < table.size(); ++k) {
-    const BodyPair p = table.pairs[k];
-    const std::size_t row = rows.at(p.i);
-    const std::int64_t i = row < held.size() && held[row] == p.i ? std::int64_t(row) : -1;
-    const std::int64_t j = driver ? std::int64_t(p.j) : index_in(held, p.j);
-    if (i < 0 || j < 0) continue;
-    mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order
+    const std::optional<BodyPair> p = held_pair(rows, table.pairs[k].i, table.pairs[k].j, driver);
+    if (!p) continue;
+    mine.pairs.push_back(*p);
     for (std::uint32_t s = table.slot_begin[k]; s < table.slot_begin[k + 1]; ++s) {
       mine.features.push_back(table.features[s]);
       mine.slots.push_back(table.slots[s]);
@@ -104,17 +118,12 @@ PairList localise(const PairList& table, const std::vector<std::uint32_t>& held,
     }
     mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
   }
-  mine.active.assign(mine.slots.size(), 1);
-  mine.resize_results();
+  finish(mine);
   return mine;
 }
 
 PairList local_table(const std::vector<TableSlot>& slots, const std::vector<std::uint32_t>& held, bool driver) {
-  PairList mine;
-  mine.slot_begin.push_back(0);
-  mine.features.reserve(slots.size());
-  mine.slots.reserve(slots.size());
-  mine.records.reserve(slots.size());
+  PairList mine = reserved(slots.size());
   RowCursor rows{held};  // the pairs' i do not decrease
   bool kept = false;     // the current pair's bodies are held
   const TableSlot* last = nullptr;
@@ -122,10 +131,8 @@ PairList local_table(const std::vector<TableSlot>& slots, const std::vector<std:
     const TableSlot& t = slots[at];
     if (!last || last->i != t.i || last->j != t.j) {  // a new pair
       if (kept) mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
-      const std::size_t i = rows.at(t.i);
-      const std::size_t j = driver ? t.j : rows.after(i, t.j);  // a body pair's j above its i
-      kept = i < held.size() && held[i] == t.i && (driver || (j < held.size() && held[j] == t.j));
-      if (kept) mine.pairs.push_back({std::uint32_t(i), std::uint32_t(j)});  // local order is global order
+      const std::optional<BodyPair> p = held_pair(rows, t.i, t.j, driver);
+      if ((kept = p.has_value())) mine.pairs.push_back(*p);
     }
     last = &t;
     if (!kept) continue;
@@ -134,8 +141,7 @@ PairList local_table(const std::vector<TableSlot>& slots, const std::vector<std:
     mine.records.push_back(t.record);
   }
   if (kept) mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
-  mine.active.assign(mine.slots.size(), 1);
-  mine.resize_results();
+  finish(mine);
   return mine;
 }
 
