@@ -233,16 +233,6 @@ void ContactEngine::mark_listed(std::size_t n_bodies, const std::vector<BodyPair
 }
 
 // Ghosts' own pairs are their owners' to compute: a pair is listed where one of its bodies is owned.
-// A rank's pairs with a ghost: computed by the owner of the lower body i (it answers for the
-// pair's history and energy, sim/contact_table.hpp), its results sent to the owner of j.
-void ContactEngine::mark_across(const LocalBodies& bodies) {
-  direct_.across.clear();
-  if (!bodies.ghost) return;
-  const std::vector<std::uint8_t>& ghost = *bodies.ghost;
-  direct_.across.reserve(body_list_.size());
-  for (const BodyPair p : body_list_.pairs) direct_.across.push_back(across_of(p, ghost));
-}
-
 static void drop_ghost_pairs(const LocalBodies& bodies, std::vector<BodyPair>& pairs) {
   if (!bodies.ghost) return;
   std::erase_if(pairs, [&](BodyPair p) { return !bodies.owned(p.i) && !bodies.owned(p.j); });
@@ -316,7 +306,6 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
   direct_.reset(bodies.size());
-  mark_across(bodies);
 
   std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
   parallel_for(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run, sorted

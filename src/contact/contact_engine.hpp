@@ -245,10 +245,6 @@ class ContactEngine {
   // `ghost` as above.
   ExactStored elastic(const Drivers& drivers, const std::vector<std::uint8_t>* ghost = nullptr) const;
   const PairList& body_pairs() const { return body_list_; }
-  // The body pairs' sums: a rank reads its sent pairs' results and lands the others' (Across).
-  DirectSums& direct_sums() { return direct_; }
-  // This step's turns so far (PairTurn): a rank lands those of the pairs another computed.
-  std::vector<PairTurn>& pair_turns() { return turns_; }
   const PairList& driver_pairs() const { return driver_list_; }
   PairList& body_pairs() { return body_list_; }
   PairList& driver_pairs() { return driver_list_; }
@@ -284,7 +280,6 @@ class ContactEngine {
   // Body-driver pairs within each body's skin plus the driver band; marks the drivers (driver_shift).
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers);
   void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
-  void mark_across(const LocalBodies& bodies);  // direct_.across, at a rebuild
   void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
   // skin_, at a rebuild: each body's own skin from its speed, or none (skin_max not above skin,

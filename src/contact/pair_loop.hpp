@@ -218,18 +218,16 @@ template <class Kernel, class Add>
   }
 }
 
-// The run of foreign pairs from pair k (ordinal f) to the next internal or landed one or `end`,
-// computed as the internal ones are (two lanes); a landed pair alone, not computed. Out of line: the walk's loop over internal pairs stays as
+// The run of foreign pairs from pair k (ordinal f) to the next internal one or `end`, computed
+// as the internal ones are (two lanes). Out of line: the walk's loop over internal pairs stays as
 // it was. Returns the pair after the run.
 template <class Kernel>
 [[gnu::noinline]] std::uint32_t foreign_run(PairList& list, const Kernel& kernel, DirectSums& direct,
                                             PairScratch& scratch, std::uint32_t k, std::uint32_t f, std::uint32_t end,
                                             std::uint32_t& contacts, bool& ended) {
   const PairSplit& split = direct.split;
-  if (split.foreign_side[f] & PairSplit::kLanded) return k + 1;  // its result lands from another rank
   std::uint32_t stop = k + 1;
-  while (stop < end && split.foreign[f + (stop - k)] == stop && !(split.foreign_side[f + (stop - k)] & PairSplit::kLanded))
-    ++stop;
+  while (stop < end && split.foreign[f + (stop - k)] == stop) ++stop;
   const ForeignAdd add{direct.sums.data(), list.pairs.data(), split.foreign_side.data(), direct.foreign.data(), k, f};
   chunk_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
   return stop;

@@ -78,23 +78,11 @@ void add_crossing(const std::vector<BodyPair>& pairs, const std::vector<int>& ho
   }
 }
 
-// Per body, its first landed pair (Across; the list size: none), from which its terms come late.
-std::vector<std::uint32_t> first_landed(const std::vector<BodyPair>& pairs, const std::vector<std::uint8_t>& across,
-                                        std::size_t n_bodies) {
-  const std::uint32_t none = std::uint32_t(pairs.size());
-  std::vector<std::uint32_t> first(n_bodies, none);
-  for (std::uint32_t k = 0; k < across.size(); ++k)
-    if (across[k] == kLanded)
-      for (std::uint32_t b : {pairs[k].i, pairs[k].j}) first[b] = std::min(first[b], k);
-  return first;
-}
-
 }  // namespace
 
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size,
-                 const std::vector<std::uint8_t>& across) {
+                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size) {
   const std::size_t n = pairs.size();
   split.threads = threads;
   const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies, block_size);
@@ -115,20 +103,17 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
   split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
     split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
-  // The foreign pairs, with the side (if any) homed in their own chunk and before its first landed pair.
-  const std::vector<std::uint32_t> landed = first_landed(pairs, across, n_bodies);
+  // The foreign pairs, with the side (if any) homed in their own chunk.
   split.foreign.clear();
   split.foreign_side.clear();
   split.foreign_begin.assign(threads + 1, 0);
   int c = 0;
   for (std::uint32_t k = 0; k < n; ++k) {
     while (k >= split.cut[c + 1]) ++c;
-    const bool home_i = home[pairs[k].i] == c && k < landed[pairs[k].i];
-    const bool home_j = home[pairs[k].j] == c && k < landed[pairs[k].j];
-    const std::uint8_t kind = across.empty() ? std::uint8_t(kInner) : across[k];
-    if (home_i && home_j && kind == kInner) continue;
+    const bool home_i = home[pairs[k].i] == c, home_j = home[pairs[k].j] == c;
+    if (home_i && home_j) continue;
     split.foreign.push_back(k);
-    split.foreign_side.push_back(std::uint8_t(home_i | home_j << 1 | (kind == kLanded ? PairSplit::kLanded : 0)));
+    split.foreign_side.push_back(std::uint8_t(home_i | home_j << 1));
     ++split.foreign_begin[c + 1];
   }
   for (int t = 0; t < threads; ++t) split.foreign_begin[t + 1] += split.foreign_begin[t];
@@ -144,12 +129,11 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
     if (home[b] >= 0) split.homes[fill[home[b]]++] = b;
   // Each body's pairs after its home chunk (all foreign), in increasing order: its late terms.
   split.late_begin.assign(n_bodies + 1, 0);
-  auto for_each_late = [&](auto add) {  // a pair's ghost side takes no force here: no late term
+  auto for_each_late = [&](auto add) {
     for (std::uint32_t f = 0; f < split.foreign_side.size(); ++f) {
       const BodyPair p = pairs[split.foreign[f]];
-      const std::uint8_t kind = across.empty() ? std::uint8_t(kInner) : across[split.foreign[f]];
-      if (!(split.foreign_side[f] & 1u) && kind != kLanded) add(p.i, f << 1);
-      if (!(split.foreign_side[f] & 2u) && kind != kSent) add(p.j, f << 1 | 1u);
+      if (!(split.foreign_side[f] & 1u)) add(p.i, f << 1);
+      if (!(split.foreign_side[f] & 2u)) add(p.j, f << 1 | 1u);
     }
   };
   for_each_late([&](std::uint32_t b, std::uint32_t) { ++split.late_begin[b + 1]; });
@@ -187,7 +171,7 @@ std::vector<double> paced_shares(const PairSplit& split, const std::vector<Threa
 void DirectSums::cut(const PairList& list, int threads) {
   if (follow_pace) shares = paced_shares(split, pace, shares);
   if (shares.size() != std::size_t(threads)) shares.clear();  // another team: even shares
-  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross, list.block, across);
+  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross, list.block);
   foreign.resize(split.foreign_side.size());
   pace.assign(threads > 1 ? threads : 0, ThreadPace{});
   const bool on = !zero.empty() && zero[0].on;  // the flags agree between loops

@@ -48,26 +48,15 @@ struct LateTerms {
   }
 };
 
-// A pair across a cut between ranks (sim/rank_contacts.hpp): computed once, by the owner of its
-// lower body i, which keeps its results for the owner of j (kSent); on the rank of j its results
-// land from the other rank before the closing pass (kLanded), so the walk skips it.
-enum Across : std::uint8_t { kInner = 0, kSent = 1, kLanded = 2 };
-// Pair p's kind on a rank whose ghosts are flagged in `ghost` (local rows): both owners of a pair
-// across the cut agree on which computes it, with no message.
-inline Across across_of(BodyPair p, const std::vector<std::uint8_t>& ghost) {
-  return ghost[p.i] ? kLanded : ghost[p.j] ? kSent : kInner;
-}
-
 // The cut of a pair list for a team of `threads`, rebuilt with the list or the team size.
 struct PairSplit {
-  static constexpr std::uint8_t kLanded = 4;  // foreign_side: computed by another rank, not walked
   int threads = 0;                           // the team it was cut for; 0: to be cut
   std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of the list's block but the last
   std::vector<std::uint32_t> body_cut;       // threads + 1 bodies: chunk t's pairs' bodies i from body_cut[t] (TeamCut)
   std::vector<double> walk_weight;           // per chunk, its walk's weight (pairs apart; its bodies' left out)
   std::vector<std::uint32_t> foreign;        // foreign pairs, increasing, then the list size (a sentinel)
   std::vector<std::uint32_t> foreign_begin;  // per chunk + 1: its foreign pairs' ordinals
-  std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j; kLanded
+  std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j
   std::vector<std::uint32_t> home_begin;     // per chunk + 1: its bodies in `homes`
   std::vector<std::uint32_t> homes;          // the bodies with pairs, by home chunk
   std::vector<std::uint32_t> late_begin;     // per body + 1: its late terms in `late` (LateTerms)
@@ -88,13 +77,10 @@ struct CrossWeights {
 // shares). Thread t takes the bodies from the body i of chunk t's first pair (body_cut): each
 // body with pairs as i is in the share of the chunk of its last one. With `cross`, the cut is made
 // again once with the first cut's foreign pairs and late terms weighed where they run.
-// `across` (per pair, Across; empty: one process): a rank's pairs across its cut are foreign,
-// and each body's terms from its first landed pair on come late, after that pair's result lands:
-// its sum still adds its terms in pair order.
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
                  const std::vector<double>& shares = {}, CrossWeights cross = {},
-                 std::size_t block_size = kPairBlock, const std::vector<std::uint8_t>& across = {});
+                 std::size_t block_size = kPairBlock);
 
 // One thread's walk times (s) since the last cut, the last kSteps kept. A cache line of its own
 // start: each thread writes its own every step.
@@ -128,7 +114,6 @@ struct DirectSums {
   CrossWeights cross;              // the cut's crossing work (split_pairs)
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`: its late terms
-  std::vector<std::uint8_t> across;    // per pair, Across (a rank's lists; empty: one process)
   // The cut follows the threads' measured speed: a vCPU slowed by the host (or another process
   // on its core) for seconds takes less of the next cut. `shares` is the last cut's (empty: even);
   // `follow_pace` false keeps them as set (tests force cuts with it).

@@ -43,8 +43,10 @@ PairedRows paired_across(const std::vector<BodyPair>& pairs, const std::vector<i
   for (const BodyPair& p : pairs) {
     const int oi = owner[p.i], oj = owner[p.j];
     if ((oi < 0) == (oj < 0)) continue;  // both owned (or both ghosts: their owners' pair)
-    if (oi < 0) rows.receive[oj].push_back(p.j);  // computed here (the owner of i: Across), reading ghost j
-    else rows.send[oi].push_back(p.j);            // computed by the owner of i, which reads j
+    const std::uint32_t mine = oi < 0 ? p.i : p.j, theirs = oi < 0 ? p.j : p.i;
+    const int q = std::max(oi, oj);
+    rows.send[q].push_back(mine);
+    rows.receive[q].push_back(theirs);
   }
   for (int q = 0; q < ranks; ++q) {
     sort_unique(rows.send[q]);

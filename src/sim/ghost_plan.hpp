@@ -26,14 +26,12 @@ struct GhostPlan {
 GhostPlan plan_ghosts(const DomainCut& cut, int p, const std::vector<Vec3>& x, double halo);
 
 // The bodies a step's motion parcels need carry, from a rank's lists: a ghost is read only by
-// the pairs across the cut this rank computes, those whose lower body i it owns (Across,
-// contact/pair_split.hpp), and a pair across the cut is listed alike by the owners of both its
-// bodies (the same rule on the same state), so what rank q reads of p's bodies between rebuilds
-// is p's owned bodies j paired with a lower body i of q's. `pairs`: local rows, one owned at
-// least; `owner`: per local row, the rank owning a ghost, -1 for an owned row. Per rank: the
-// owned rows j paired with its ghosts i (`send`) and its ghosts j paired with an owned row i
-// (`receive`), both increasing; any other ghost stays as it was at the rebuild, read by no one
-// until the next.
+// its pairs with owned bodies, and a pair across the cut is listed alike by the owners of both
+// its bodies (the same rule on the same state), so what rank q reads of p's bodies between
+// rebuilds is p's owned bodies paired with q's ghosts. `pairs`: local rows, one owned at least;
+// `owner`: per local row, the rank owning a ghost, -1 for an owned row. Per rank: the owned
+// rows paired with its ghosts (`send`) and its ghosts paired with an owned row (`receive`), both
+// increasing; a ghost in no pair stays as it was at the rebuild, read by no one until the next.
 struct PairedRows {
   std::vector<std::vector<std::uint32_t>> send, receive;
 };

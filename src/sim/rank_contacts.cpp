@@ -244,7 +244,6 @@ void RankContacts::compute(Bodies& bodies, Drivers& drivers, double dt, ContactE
   in_team(view.size() >= kParallelMinItems, [&] {
     engine_->forces(view, drivers, dt, false, ContactEngine::AfterPairs::region_ends);
   });
-  trade_across();
   engine_->close_forces(view, drivers);
   share_results(drivers);
 }
@@ -385,8 +384,7 @@ void RankContacts::size_parcels() {
 // After a rebuild: the motion parcels carry only the bodies a pair across the cut reads
 // (paired_across: ~56% of a settled cube bed's ghosts), the received ones drifted from here.
 void RankContacts::narrow_parcels() {
-  std::vector<int>& owner = owner_;  // a ghost's owner, per local row
-  owner.assign(store_.size(), -1);
+  std::vector<int> owner(store_.size(), -1);  // a ghost's owner, per local row
   for (std::size_t k = 0; k < in_.size(); ++k)
     for (std::uint32_t l : receive_local_[k]) owner[l] = in_[k].rank;
   PairedRows paired = paired_across(engine_->body_pairs().pairs, owner, link_.ranks());
@@ -403,69 +401,6 @@ void RankContacts::narrow_parcels() {
     drifted_[k].clear();
     for (std::uint32_t l : receive_local_[k]) drifted_[k].push_back(store_.position[l]);
     paired_ghosts_.insert(paired_ghosts_.end(), receive_local_[k].begin(), receive_local_[k].end());
-  }
-}
-
-namespace {
-
-// A pair across the cut's results for the owner of j: its terms and its turn of j (PairTurn), if any.
-struct AcrossResult {
-  ForeignResult result;
-  Vec3 moment_j = Vec3::Zero();  // N m s^2, world
-  std::uint64_t turned = 0;
-};
-
-// Pair p's turn this step (engine's PairTurn list, rare), or none.
-const PairTurn* turn_of(const std::vector<PairTurn>& turns, BodyPair p) {
-  for (const PairTurn& t : turns)
-    if (!t.driver && t.i == p.i && t.j == p.j) return &t;
-  return nullptr;
-}
-
-}  // namespace
-
-// Each pair across the cut was computed by the owner of its lower body (Across): its results go
-// to the owner of the other, whose late terms (pair order) take them, and its turn of j to its
-// turns. Both ranks list a pair across alike, so a parcel is bare records in pair order.
-void RankContacts::trade_across() {
-  DirectSums& direct = engine_->direct_sums();
-  std::vector<PairTurn>& turns = engine_->pair_turns();
-  const PairSplit& split = direct.split;
-  const std::vector<BodyPair>& pairs = engine_->body_pairs().pairs;
-  const auto parcel = [](std::vector<Parcel>& of, int rank) -> std::vector<char>& {
-    for (Parcel& p : of)
-      if (p.rank == rank) return p.bytes;
-    return of.emplace_back(Parcel{rank, {}}).bytes;
-  };
-  for (Parcel& p : across_out_) p.bytes.clear();
-  for (Parcel& p : across_in_) p.bytes.clear();
-  for (std::uint32_t f = 0; f + 1 < split.foreign.size(); ++f) {
-    const std::uint32_t k = split.foreign[f];
-    if (direct.across[k] == kSent) {
-      AcrossResult r{direct.foreign[f]};
-      if (const PairTurn* t = turns.empty() ? nullptr : turn_of(turns, pairs[k])) r.moment_j = t->moment_j, r.turned = 1;
-      append_record(parcel(across_out_, owner_[pairs[k].j]), r);
-    } else if (direct.across[k] == kLanded) {
-      std::vector<char>& bytes = parcel(across_in_, owner_[pairs[k].i]);
-      bytes.resize(bytes.size() + sizeof(AcrossResult));
-    }
-  }
-  std::erase_if(across_out_, [](const Parcel& p) { return p.bytes.empty(); });
-  std::erase_if(across_in_, [](const Parcel& p) { return p.bytes.empty(); });
-  link_.exchange(across_out_, across_in_);
-  std::vector<std::size_t> at(across_in_.size(), 0);
-  for (std::uint32_t f = 0; f + 1 < split.foreign.size(); ++f) {
-    const std::uint32_t k = split.foreign[f];
-    if (direct.across[k] != kLanded) continue;
-    const int from = owner_[pairs[k].i];
-    for (std::size_t q = 0; q < across_in_.size(); ++q) {
-      if (across_in_[q].rank != from) continue;
-      AcrossResult r;
-      std::memcpy(static_cast<void*>(&r), across_in_[q].bytes.data() + at[q], sizeof(AcrossResult));
-      at[q] += sizeof(AcrossResult);
-      direct.foreign[f] = r.result;
-      if (r.turned) turns.push_back({pairs[k].i, pairs[k].j, false, Vec3::Zero(), r.moment_j});
-    }
   }
 }
 

@@ -228,7 +228,6 @@ class RankContacts {
   ForceSums closing_sums();
   void size_parcels();
   void narrow_parcels();
-  void trade_across();
   void share_results(Drivers& drivers);
   std::vector<ReactionShare> reaction_shares() const;
 
@@ -255,8 +254,6 @@ class RankContacts {
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::vector<std::uint32_t>> send_local_, receive_local_;  // per parcel of out_, in_: its bodies' local indices
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step
-  std::vector<int> owner_;  // per local row, the rank owning a ghost, -1 an owned row (narrow_parcels)
-  std::vector<Parcel> across_out_, across_in_;  // trade_across's results of pairs across the cut
   std::vector<std::uint32_t> paired_ghosts_;  // the ghosts some listed pair reads, local indices (narrow_parcels)
   std::vector<std::uint32_t> owned_listed_, ghost_listed_;  // the lists' bodies (ContactEngine::listed), owned and ghosts
   bool gravity_only_ = false;  // only_gravity

@@ -12,13 +12,12 @@ std::uint64_t count_owned(const PairList& list, const LocalStore& store) {
 }
 
 // Adds each pair's candidate feature pairs and active sub-contacts to both its bodies: twice
-// to a driver pair's body, and to the owned body i of a pair with a ghost j (this rank computes
-// that pair whole); nothing for a pair whose i is a ghost (its owner computes it: Across).
+// to a driver pair's body, and to the owned body of a pair with a ghost (both ranks compute that
+// pair whole).
 void add_work(const PairList& list, bool driver, const std::vector<std::uint8_t>& ghost, OwnedWork& work) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::uint32_t slots = list.slot_begin[k + 1] - list.slot_begin[k], touching = list.touching[k];
     const std::uint32_t a = list.pairs[k].i, b = driver ? a : list.pairs[k].j;
-    if (ghost[a]) continue;
     for (const std::uint32_t side : {ghost[a] ? b : a, ghost[b] ? a : b}) {
       work.candidates[side] += slots;
       work.contacts[side] += touching;

@@ -22,9 +22,8 @@ EnergyParts sum_over_ranks(const RankLink& link, const ExactEnergy& mine);
 std::uint64_t owned_contacts(const PairList& body_pairs, const PairList& driver_pairs, const LocalStore& store);
 
 // Each owned body's measured contact work, in local order, from the pairs of every list it is
-// in (either side; a driver pair's twice, as it has one side, and a pair's with a ghost j twice,
-// as this rank computes it whole; one with a ghost i not at all, its owner computes it: Across):
-// the weight of the next cut (sim/domain_cut.hpp).
+// in (either side; a driver pair's twice, as it has one side, and a pair's with a ghost twice,
+// as this rank computes it whole): the weight of the next cut (sim/domain_cut.hpp).
 struct OwnedWork {
   std::vector<std::uint32_t> candidates;  // its pairs' candidate feature pairs
   std::vector<std::uint32_t> contacts;    // its pairs' active sub-contacts at the last step

@@ -172,81 +172,6 @@ std::vector<int> last_chunk_as_i(const std::vector<BodyPair>& pairs, const PairS
   return last;
 }
 
-// Two ranks' lists of `pairs` (each the pairs with a body it owns, `owner` per body), each walked
-// by a team of `threads`; a pair across the cut computed where across_of says (kSent), its
-// results then landed in the other rank's late terms (kLanded), as trade_across does. Checks
-// each pair computed once, both ranks agreeing, and each owned body's sum the whole list's.
-void check_across(const std::vector<BodyPair>& pairs, const std::vector<int>& owner, int threads) {
-  const std::uint32_t n_bodies = std::uint32_t(owner.size());
-  std::mt19937_64 rng(pairs.size());
-  const std::vector<PairTotals> terms = random_terms(rng, pairs.size());
-  std::vector<BodySum> plain(n_bodies);  // one process's pair-order sum
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    plain[pairs[k].i].force += terms[k].force_i;
-    plain[pairs[k].i].torque += terms[k].torque_i;
-    plain[pairs[k].j].force -= terms[k].force_i;
-    plain[pairs[k].j].torque += terms[k].torque_j;
-  }
-  struct Rank {
-    std::vector<std::uint8_t> ghost;
-    std::vector<std::uint32_t> whole;  // per listed pair, its index in `pairs`
-    PairList list;
-    DirectSums direct;
-  };
-  std::vector<Rank> ranks(2);
-  std::vector<std::atomic<int>> calls(pairs.size());
-  std::vector<int> sent(pairs.size(), 0), landed(pairs.size(), 0);
-  for (int r = 0; r < 2; ++r) {
-    Rank& rank = ranks[r];
-    for (int o : owner) rank.ghost.push_back(std::uint8_t(o != r));
-    for (std::uint32_t k = 0; k < pairs.size(); ++k)
-      if (!rank.ghost[pairs[k].i] || !rank.ghost[pairs[k].j]) rank.whole.push_back(k), rank.list.pairs.push_back(pairs[k]);
-    rank.list.sparse = true;
-    rank.list.resize_results();
-    rank.direct.reset(n_bodies);
-    for (const BodyPair p : rank.list.pairs) rank.direct.across.push_back(across_of(p, rank.ghost));
-    std::vector<PairTotals> mine;
-    for (std::uint32_t k : rank.whole) mine.push_back(terms[k]);
-#pragma omp parallel num_threads(threads)
-    all_pair_forces(rank.list, [&](std::uint32_t k, PairScratch&) {
-      calls[rank.whole[k]].fetch_add(1, std::memory_order_relaxed);
-      return mine[k];
-    }, &rank.direct);
-    for (std::size_t k = 0; k < rank.whole.size(); ++k) {
-      sent[rank.whole[k]] += rank.direct.across[k] == kSent;
-      landed[rank.whole[k]] += rank.direct.across[k] == kLanded;
-    }
-  }
-  // Each sent pair's results into the other rank's late terms (the foreign ordinals of a pair).
-  const auto ordinal = [](const Rank& rank, std::uint32_t whole_k) {
-    const std::uint32_t k = std::uint32_t(std::lower_bound(rank.whole.begin(), rank.whole.end(), whole_k) - rank.whole.begin());
-    return std::uint32_t(std::lower_bound(rank.direct.split.foreign.begin(), rank.direct.split.foreign.end(), k) -
-                         rank.direct.split.foreign.begin());
-  };
-  for (int r = 0; r < 2; ++r)
-    for (std::size_t k = 0; k < ranks[r].whole.size(); ++k)
-      if (ranks[r].direct.across[k] == kSent)
-        ranks[1 - r].direct.foreign[ordinal(ranks[1 - r], ranks[r].whole[k])] = ranks[r].direct.foreign[ordinal(ranks[r], ranks[r].whole[k])];
-  int wrong_calls = 0, wrong_sides = 0, wrong_sums = 0, across = 0;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    wrong_calls += calls[k] != 1;
-    const bool cut = owner[pairs[k].i] != owner[pairs[k].j];
-    across += cut;
-    wrong_sides += cut ? sent[k] != 1 || landed[k] != 1 : sent[k] != 0 || landed[k] != 0;
-  }
-  for (std::uint32_t b = 0; b < n_bodies; ++b) {
-    const Rank& rank = ranks[owner[b]];
-    Vec3 force = rank.direct.sums[b].force, torque = rank.direct.sums[b].torque;
-    rank.direct.late_terms().add_to(b, force, torque);
-    wrong_sums += !same_bits(force, plain[b].force) || !same_bits(torque, plain[b].torque);
-  }
-  CAPTURE(threads, pairs.size(), across);
-  CHECK(across > 0);
-  CHECK(wrong_calls == 0);
-  CHECK(wrong_sides == 0);
-  CHECK(wrong_sums == 0);
-}
-
 }  // namespace
 
 TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pair_split]") {
@@ -255,18 +180,6 @@ TEST_CASE("the direct body sums are the pair-order sums at any team size", "[pai
   check_sums(40, 39);      // one block: the later chunks empty
   check_sums(2000, 1999, kSmallestPairBlock);  // a polyhedron list's smallest blocks
   check_sums(60, 59, kSmallestPairBlock);      // a pour's few pairs: several blocks
-}
-
-TEST_CASE("a pair across two ranks' cut is computed once, by one side, and each sum keeps its bits", "[pair_split]") {
-  std::mt19937_64 rng(5);
-  const std::uint32_t n_bodies = 2000;
-  std::vector<int> by_half(n_bodies), at_random(n_bodies);  // a plane cut (ids that follow space); owners at random
-  std::bernoulli_distribution coin(0.5);
-  for (std::uint32_t b = 0; b < n_bodies; ++b) by_half[b] = b >= n_bodies / 2, at_random[b] = coin(rng);
-  for (int threads : {1, 2, 3}) {
-    check_across(random_pairs(rng, n_bodies, 6 * n_bodies, 40), by_half, threads);
-    check_across(random_pairs(rng, n_bodies, 6 * n_bodies, 1999), at_random, threads);
-  }
 }
 
 TEST_CASE("a split cuts at blocks, homes each body in its first pair's chunk and lists its later pairs", "[pair_split]") {
