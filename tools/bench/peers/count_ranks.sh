@@ -5,7 +5,8 @@
 # long less short is STEPS steps without start-up. rank_counts.py keeps the polydem binary's own
 # functions and prints each rank, the sum, one process, efficiency = one process / (NP x slower
 # rank) and the functions the ranks add most. SCENE as settled_bed.sh (spheres: the peers' bed,
-# the default; cubes). Counted, not timed: the same under any load.
+# the default; cubes). Counted, not timed: the same under any load. Then the same totals over
+# every object's functions (rank_counts.py with ALL=1: MPI's and libc's too, so a polling wait shows).
 # usage: [SCENE=cubes] tools/bench/peers/count_ranks.sh BIN [STEPS=100] [NP=2] [WORKDIR=/tmp/rank_count]
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -27,3 +28,6 @@ for s in "$steps" $((2 * steps)); do
 done
 python3 tools/bench/peers/rank_counts.py "$work/cg.one.$steps.0" "$work/cg.one.$((2 * steps)).0" \
   "$work/cg.np$np.$steps" "$work/cg.np$np.$((2 * steps))"
+echo; echo "every object (MPI and libc too):"
+ALL=1 python3 tools/bench/peers/rank_counts.py "$work/cg.one.$steps.0" "$work/cg.one.$((2 * steps)).0" \
+  "$work/cg.np$np.$steps" "$work/cg.np$np.$((2 * steps))" 0 | sed -n "1,$((np + 2))p"

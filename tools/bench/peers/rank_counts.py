@@ -5,14 +5,18 @@
 
 ONE_* are one process's callgrind files, RANKS_* the prefixes of the ranks' files (PREFIX.0,
 PREFIX.1, ...). Only the polydem binary's own functions count (self instructions; MPI's and
-libc's left out: OpenMPI's polling moves with the load). Long less short is the steps alone.
+libc's left out: OpenMPI's polling moves with the load); ALL=1 counts every object's (MPI's
+waits included: a rank polling for the other shows there). Long less short is the steps alone.
 Prints each rank, their sum, one process, the sum's excess over it, efficiency = one process /
 (N x slower rank), then the TOP functions (default 25) whose ranks' sum exceeds one process's most.
 """
 import glob
 import re
 import subprocess
+import os
 import sys
+
+EVERY_OBJECT = os.environ.get('ALL') == '1'
 
 
 def own_counts(path):
@@ -22,7 +26,7 @@ def own_counts(path):
     counts = {}
     for line in out.splitlines():
         m = re.match(r'\s*([\d,]+) \([^)]*\)\s+(\S.*) \[([^\]]*)\]$', line)
-        if not m or not m.group(3).endswith('polydem'):
+        if not m or not (EVERY_OBJECT or m.group(3).endswith('polydem')):
             continue
         name = m.group(2).split(':', 1)[1] if ':' in m.group(2) else m.group(2)
         counts[name] = counts.get(name, 0) + int(m.group(1).replace(',', ''))
