@@ -25,7 +25,7 @@ rm -rf "$work/out" "$work/cg"; mkdir -p "$work/cg"
 OMP_WAIT_POLICY=passive valgrind --tool=callgrind --separate-threads=yes \
   --toggle-collect='polydem::Simulation::step(bool)' --dump-before='polydem::Simulation::step(bool)' \
   --dump-before=GOMP_parallel --dump-after=GOMP_parallel \
-  --dump-after='polydem::ContactEngine::rebuild(*' \
+  --dump-after='polydem::ContactEngine::rebuild(polydem::LocalBodies const&, polydem::Drivers const&, bool)' \
   --callgrind-out-file="$work/cg/cg" "$bin" run "$scene" --resume "$state" --out "$work/out" --force \
   --until "$until" --threads 2 --fixed-threads > "$work/log" 2>&1
 grep 'steps in' "$work/log"

@@ -26,13 +26,19 @@ BINS = (1e3, 1e4, 3e4, 1e5, 1e6, float('inf'))  # stretch sizes, instructions
 
 
 def read_part(path, names):
-    """(trigger, instructions, opener of GOMP_parallel or None, barrier calls by kind); `names`:
-    the run's compressed names (id -> name), defined once in the first part that uses them."""
+    """(trigger, instructions, opener of GOMP_parallel or None, barrier calls by kind, each
+    function's own instructions); `names`: the run's compressed names (id -> name), defined once
+    in the first part that uses them."""
     fn, trigger, total, opener = None, '', 0, None
-    calls, callee = collections.Counter(), None
+    calls, callee, own, call_line = collections.Counter(), None, collections.Counter(), False
     with open(path) as f:
         for line in f:
-            if line.startswith('desc: Trigger:'):
+            if line[:1].isdigit() or line[:1] in '+-*':  # a cost line: a call's inclusive cost or fn's own
+                if not call_line:
+                    fields = line.split()
+                    own[fn] += int(fields[1]) if len(fields) > 1 else 0
+                call_line = False
+            elif line.startswith('desc: Trigger:'):
                 trigger = line.split(':', 2)[2].strip()
             elif line.startswith('totals:'):
                 total = int(line.split()[1])
@@ -45,9 +51,11 @@ def read_part(path, names):
                     callee = name
                     if name == 'GOMP_parallel' and opener is None:
                         opener = fn
-            elif line.startswith('calls=') and callee in BARRIERS:
-                calls[BARRIERS[callee]] += int(line.split()[0].split('=')[1])
-    return trigger, total, opener, calls
+            elif line.startswith('calls='):
+                call_line = True
+                if callee in BARRIERS:
+                    calls[BARRIERS[callee]] += int(line.split()[0].split('=')[1])
+    return trigger, total, opener, calls, own
 
 
 def short(name):
@@ -104,7 +112,7 @@ def timeline(prefix):
     parts = sorted(glob.glob(prefix + '.*-01'), key=lambda p: int(re.search(r'\.(\d+)-01$', p).group(1)))
     steps, step, names = [], None, {}
     for path in parts:
-        trigger, total, opener, calls = read_part(path, names)
+        trigger, total, opener, calls, own = read_part(path, names)
         if step is None:
             if 'Simulation::step' in trigger:
                 step = []
@@ -112,8 +120,8 @@ def timeline(prefix):
         if trigger.startswith('--dump-after=GOMP_parallel') and (opener or total):  # else outside the step
             step.append(('region', short(opener), total, calls))
             continue
-        step.append(('serial', total))
-        if trigger.startswith('--dump-after=polydem::ContactEngine::rebuild'):
+        step.append(('serial', total, own))
+        if trigger.startswith('--dump-after=polydem::ContactEngine::rebuild') and trigger.endswith('bool)'):
             step.append(('rebuilt',))
         elif 'Simulation::step' in trigger:
             steps.append(Step(step))
@@ -167,14 +175,17 @@ def main():
     if rebuilding:
         median = sorted(rebuilding, key=lambda s: sum(s.stretches))[len(rebuilding) // 2]
         print('the median rebuild step in order: serial stretches and regions (thread 0 instructions)')
-        run = 0
+        run, own = 0, collections.Counter()
         for p in median.parts + [('region', '(the step ends)', 0, {})]:
             if p[0] == 'serial':
                 run += p[1]
+                own.update(p[2])
             elif p[0] == 'region':
-                print(f'  serial {run / 1e3:8.1f}e3' if run else '', end='\n' if run else '')
+                if run:
+                    top = ', '.join(f'{short(k)} {v / 1e3:.1f}' for k, v in own.most_common(4))
+                    print(f'  serial {run / 1e3:8.1f}e3  (own e3: {top})' if run >= 1e4 else f'  serial {run / 1e3:8.1f}e3')
                 print(f'  region {p[2] / 1e3:8.1f}e3  {p[1]}')
-                run = 0
+                run, own = 0, collections.Counter()
     openers = collections.Counter(), collections.Counter()
     for st in steps:
         for name, work in st.regions:
