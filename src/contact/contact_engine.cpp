@@ -294,38 +294,20 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
                    fresh);
     }
   }
-  size_slots(fresh);  // once the broad phase's pairs are freed
-  flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
-  old_body = PairList{};
-  equal_spheres_ = spheres_only_ && settings_.equal_spheres ? equal_spheres(bodies) : std::nullopt;
-  // The walk's static cut falls between blocks: a pour's few pairs in small ones. Driver pairs
-  // keep kPairBlock (a dynamic loop; the cubes' 873 in 16s moved only valgrind's split).
-  if (!spheres_only_) fresh.block = polyhedron_pair_block(fresh.size());
-  size_results(fresh, !equal_spheres_);  // equal spheres: one k', c' for all pairs (sphere_pair_loop)
-  for (auto* v : {&fresh.force_i, &fresh.torque_i, &fresh.torque_j}) release(*v);  // summed in the loop: DirectSums
-  body_list_ = std::move(fresh);
-  if (spheres_only_) body_list_.set_recording(record_contacts_);
-  direct_.reset(bodies.size());
-
-  std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
-  parallel_for(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run, sorted
-    const std::uint32_t i = fresh_d.pairs[k].i;
-    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, skin_of(i) + band_driver_,
-                       per_pair[k]);
-    sort_by_key(per_pair[k]);
-  }, kParallelMinHeavyItems);  // a pour's ~200 pairs: 6.5% of its serial work when on one thread (issue 19)
-  fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
-  fill_driver_slots(per_pair, fresh_d);
-  size_slots(fresh_d);
-  flush_pairs(old_driver, carry_history(old_driver, fresh_d), bodies.ghost);
-  size_results(fresh_d);
-  driver_list_ = std::move(fresh_d);
-  driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
-  weigh_bodies(!own_pass_cut_);  // the last lists' passes had their own cut: likely these too
-  // Cut for the team that will walk the list (forces' region), here on one thread: the loop then
-  // meets for no cut (two barriers a rebuild). Another team recuts in the loop.
+  // Cut for the team that will walk the list (forces' region), here: the loop then meets for no
+  // cut (two barriers a rebuild). Another team recuts in the loop.
   const int team = bodies.size() >= kParallelMinItems ? omp_get_max_threads() : 1;
-  direct_.cut(body_list_, team);
+  // The body list's close and the driver list's making share nothing but the exact energy sum
+  // (the driver pairs' flush follows the join): on two threads at once, not one after the other
+  // (issue 19: ~0.3e6 instructions a pour rebuild the other thread waited through asleep).
+  std::vector<std::uint32_t> uncarried_d;  // old driver pairs whose energy is flushed now
+  two_tasks(team > 1, [&] { close_body_list(bodies, old_body, std::move(fresh), team); },
+            [&] { uncarried_d = make_driver_list(bodies, drivers, std::move(fresh_d), old_driver); });
+  flush_pairs(old_driver, uncarried_d, bodies.ghost);
+  if (spheres_only_) {  // a sphere's weight counts its wall pairs (driver_begin_)
+    weigh_bodies(!own_pass_cut_);
+    direct_.cut(body_list_, team);
+  }
   spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
                                          [&](BodyPair p) { return !drivers.is_wall(p.j); });
   if (spheres_only_)
@@ -342,6 +324,48 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   stats_.body_pairs = body_list_.size();
   stats_.driver_pairs = driver_list_.size();
   stats_.slots = body_list_.slot_count() + driver_list_.slot_count();
+}
+
+// A rebuild's new body list: the old one's history carried, its results sized and, for
+// polyhedra, the walk's cut for a team of `team` (rebuild). Touches no driver list.
+void ContactEngine::close_body_list(const LocalBodies& bodies, PairList& old_body, PairList fresh, int team) {
+  size_slots(fresh);  // once the broad phase's pairs are freed
+  flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
+  old_body = PairList{};
+  equal_spheres_ = spheres_only_ && settings_.equal_spheres ? equal_spheres(bodies) : std::nullopt;
+  // The walk's static cut falls between blocks: a pour's few pairs in small ones. Driver pairs
+  // keep kPairBlock (a dynamic loop; the cubes' 873 in 16s moved only valgrind's split).
+  if (!spheres_only_) fresh.block = polyhedron_pair_block(fresh.size());
+  size_results(fresh, !equal_spheres_);  // equal spheres: one k', c' for all pairs (sphere_pair_loop)
+  for (auto* v : {&fresh.force_i, &fresh.torque_i, &fresh.torque_j}) release(*v);  // summed in the loop: DirectSums
+  body_list_ = std::move(fresh);
+  if (spheres_only_) body_list_.set_recording(record_contacts_);
+  direct_.reset(bodies.size());
+  if (spheres_only_) return;  // its weights read the driver pairs: cut after both lists
+  weigh_bodies(!own_pass_cut_);  // the last lists' passes had their own cut: likely these too
+  direct_.cut(body_list_, team);
+}
+
+// A rebuild's new driver list from its pairs `fresh` (posed bodies): candidates, slots, the old
+// list's history carried; returns the old pairs whose energy is to be flushed (flushed_ is
+// another task's). Touches no body list; one thread (a task of two_tasks).
+std::vector<std::uint32_t> ContactEngine::make_driver_list(const LocalBodies& bodies, const Drivers& drivers,
+                                                           PairList fresh, const PairList& old_driver) {
+  std::vector<std::vector<FeaturePair>> per_pair(fresh.pairs.size());
+  for (std::size_t k = 0; k < fresh.pairs.size(); ++k) {  // each pair writes its own run, sorted
+    const std::uint32_t i = fresh.pairs[k].i;
+    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh.pairs[k].j, skin_of(i) + band_driver_,
+                       per_pair[k]);
+    sort_by_key(per_pair[k]);
+  }
+  fresh.gap_at_build.assign(fresh.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
+  fill_driver_slots(per_pair, fresh);
+  size_slots(fresh);
+  std::vector<std::uint32_t> uncarried = carry_history(old_driver, fresh);
+  size_results(fresh);
+  driver_list_ = std::move(fresh);
+  driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
+  return uncarried;
 }
 
 std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodies) const {
