@@ -186,6 +186,10 @@ def main():
                     print(f'  serial {run / 1e3:8.1f}e3  (own e3: {top})' if run >= 1e4 else f'  serial {run / 1e3:8.1f}e3')
                 print(f'  region {p[2] / 1e3:8.1f}e3  {p[1]}')
                 run, own = 0, collections.Counter()
+    longest = max((p for st in steps for p in st.parts if p[0] == 'serial'), key=lambda p: p[1], default=None)
+    if longest and longest[1] >= 1e4:
+        top = ', '.join(f'{short(k)} {v / 1e3:.1f}' for k, v in longest[2].most_common(5))
+        print(f'the longest serial part {longest[1] / 1e3:.1f}e3 (own e3: {top})')
     openers = collections.Counter(), collections.Counter()
     for st in steps:
         for name, work in st.regions:
