@@ -12,7 +12,7 @@ into stretches: a stretch is what the other thread waits through asleep once it 
 libgomp's spin (GOMP_SPINCOUNT=1000 pauses, ~15-50 us here: ~3e4-1e5 instructions), and then
 each region that follows pays a futex wake-up. Barriers met: thread 0's calls to GOMP_barrier
 (a static loop's or a single's end, an explicit barrier), GOMP_loop_end (a dynamic loop's end),
-GOMP_single_start, GOMP_critical*_start, inside its regions. The first SKIP steps (start-up) are
+GOMP_single_start, GOMP_critical*_start (a lock, met even alone), inside its regions only. The first SKIP steps (start-up) are
 left out. Prints the steps with and without a rebuild, each rebuild, and the stretches by size.
 """
 import collections
