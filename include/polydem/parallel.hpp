@@ -41,6 +41,25 @@ inline void barrier_unless_own_region(bool own_region) {
   }
 }
 
+// Runs two independent tasks (each writes only its own outputs) at once on two threads of a region
+// of their own when `worth_waking` and two threads are allowed, else `first` then `second` here
+// (inside a team too: its loops are not to be split by one thread): the same results either way.
+// For serial stretches the other thread would wait through asleep (issue 19).
+template <class First, class Second>
+void two_tasks(bool worth_waking, const First& first, const Second& second) {
+  if (omp_get_level() > 0 || !worth_waking || omp_get_max_threads() < 2) {
+    first();
+    second();
+    return;
+  }
+#pragma omp parallel num_threads(2)
+  {
+    const int t = omp_get_thread_num(), second_on = omp_get_num_threads() > 1 ? 1 : 0;  // a team of one does both
+    if (t == 0) first();
+    if (t == second_on) second();
+  }
+}
+
 // Items of a thousand instructions or more (a polyhedron's driver candidates, ~800 a wall pair,
 // callgrind on the pour): fewer of them already pay for waking the threads.
 constexpr std::size_t kParallelMinHeavyItems = 16;

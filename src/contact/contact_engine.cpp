@@ -294,6 +294,45 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
                    fresh);
     }
   }
+  // Cut for the team that will walk the list (forces' region), here: the loop then meets for no
+  // cut (two barriers a rebuild). Another team recuts in the loop.
+  const int team = bodies.size() >= kParallelMinItems ? omp_get_max_threads() : 1;
+  // The body list's close and the driver list's making share nothing but the exact energy sum
+  // (the driver pairs' flush follows the join): on two threads at once, not one after the other
+  // (issue 19: ~0.3e6 instructions a pour rebuild the other thread waited through asleep).
+  std::vector<std::uint32_t> uncarried_d;  // old driver pairs whose energy is flushed now
+  two_tasks(
+      team > 1,
+      [&] {
+        close_body_list(bodies, old_body, std::move(fresh), team);
+        // the lighter task (~0.25e6 against ~0.33e6 on the pour) also marks the trigger: it reads the poses alone
+        trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
+        trigger_.set_skins(skin_);
+      },
+      [&] { uncarried_d = make_driver_list(bodies, drivers, std::move(fresh_d), old_driver); });
+  flush_pairs(old_driver, uncarried_d, bodies.ghost);
+  if (spheres_only_) {  // a sphere's weight counts its wall pairs (driver_begin_)
+    weigh_bodies(!own_pass_cut_);
+    direct_.cut(body_list_, team);
+  }
+  spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
+                                         [&](BodyPair p) { return !drivers.is_wall(p.j); });
+  if (spheres_only_)
+    keep_sphere_poses(bodies, spheres_posed_each_step_ || (settings_.driver.contact_mass && !driver_list_.pairs.empty()));
+  else
+    mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
+  cut_passes(team);
+  must_rebuild_ = false;
+  margins_read_ = false;
+  ++stats_.rebuilds;
+  stats_.body_pairs = body_list_.size();
+  stats_.driver_pairs = driver_list_.size();
+  stats_.slots = body_list_.slot_count() + driver_list_.slot_count();
+}
+
+// A rebuild's new body list: the old one's history carried, its results sized and, for
+// polyhedra, the walk's cut for a team of `team` (rebuild). Touches no driver list.
+void ContactEngine::close_body_list(const LocalBodies& bodies, PairList& old_body, PairList fresh, int team) {
   size_slots(fresh);  // once the broad phase's pairs are freed
   flush_pairs(old_body, carry_history(old_body, fresh), bodies.ghost);
   old_body = PairList{};
@@ -306,42 +345,31 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
   direct_.reset(bodies.size());
+  if (spheres_only_) return;  // its weights read the driver pairs: cut after both lists
+  weigh_bodies(!own_pass_cut_);  // the last lists' passes had their own cut: likely these too
+  direct_.cut(body_list_, team);
+}
 
-  std::vector<std::vector<FeaturePair>> per_pair(fresh_d.pairs.size());
-  parallel_for(fresh_d.pairs.size(), [&](std::size_t k) {  // each pair writes its own run, sorted
-    const std::uint32_t i = fresh_d.pairs[k].i;
-    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh_d.pairs[k].j, skin_of(i) + band_driver_,
+// A rebuild's new driver list from its pairs `fresh` (posed bodies): candidates, slots, the old
+// list's history carried; returns the old pairs whose energy is to be flushed (flushed_ is
+// another task's). Touches no body list; one thread (a task of two_tasks).
+std::vector<std::uint32_t> ContactEngine::make_driver_list(const LocalBodies& bodies, const Drivers& drivers,
+                                                           PairList fresh, const PairList& old_driver) {
+  std::vector<std::vector<FeaturePair>> per_pair(fresh.pairs.size());
+  for (std::size_t k = 0; k < fresh.pairs.size(); ++k) {  // each pair writes its own run, sorted
+    const std::uint32_t i = fresh.pairs[k].i;
+    drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh.pairs[k].j, skin_of(i) + band_driver_,
                        per_pair[k]);
     sort_by_key(per_pair[k]);
-  }, kParallelMinHeavyItems);  // a pour's ~200 pairs: 6.5% of its serial work when on one thread (issue 19)
-  fresh_d.gap_at_build.assign(fresh_d.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
-  fill_driver_slots(per_pair, fresh_d);
-  size_slots(fresh_d);
-  flush_pairs(old_driver, carry_history(old_driver, fresh_d), bodies.ghost);
-  size_results(fresh_d);
-  driver_list_ = std::move(fresh_d);
+  }
+  fresh.gap_at_build.assign(fresh.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
+  fill_driver_slots(per_pair, fresh);
+  size_slots(fresh);
+  std::vector<std::uint32_t> uncarried = carry_history(old_driver, fresh);
+  size_results(fresh);
+  driver_list_ = std::move(fresh);
   driver_begin_ = pairs_by_body(driver_list_.pairs, bodies.size());
-  weigh_bodies(!own_pass_cut_);  // the last lists' passes had their own cut: likely these too
-  // Cut for the team that will walk the list (forces' region), here on one thread: the loop then
-  // meets for no cut (two barriers a rebuild). Another team recuts in the loop.
-  const int team = bodies.size() >= kParallelMinItems ? omp_get_max_threads() : 1;
-  direct_.cut(body_list_, team);
-  spheres_posed_each_step_ = std::any_of(driver_list_.pairs.begin(), driver_list_.pairs.end(),
-                                         [&](BodyPair p) { return !drivers.is_wall(p.j); });
-  if (spheres_only_)
-    keep_sphere_poses(bodies, spheres_posed_each_step_ || (settings_.driver.contact_mass && !driver_list_.pairs.empty()));
-  else
-    mark_listed(bodies.size(), body_list_.pairs, driver_list_.pairs);
-  cut_passes(team);
-
-  trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
-  trigger_.set_skins(skin_);
-  must_rebuild_ = false;
-  margins_read_ = false;
-  ++stats_.rebuilds;
-  stats_.body_pairs = body_list_.size();
-  stats_.driver_pairs = driver_list_.size();
-  stats_.slots = body_list_.slot_count() + driver_list_.slot_count();
+  return uncarried;
 }
 
 std::optional<EqualSpheres> ContactEngine::equal_spheres(const LocalBodies& bodies) const {
