@@ -134,16 +134,19 @@ struct PoseArrays {
   const Shape& s = a.shapes[a.shape[b]];
   Vec3* v = a.world_vertices + a.vertex_offset[b];
   PosedBody& posed = a.posed[b];
+  // Read once into locals: the vertices' stores may alias anything, so each read reloaded them.
+  const Vec3 position = a.position[b];  // m
+  const double scale = a.scale[b];
   posed.rotation = a.orientation[b].toRotationMatrix();  // once per body and step
   if (const std::optional<BoxCorners>& box = a.boxes[a.shape[b]])
-    pose_box(*box, a.scale[b], a.position[b], posed.rotation, v);  // the same bits in a third of the arithmetic
+    pose_box(*box, scale, position, posed.rotation, v);  // the same bits in a third of the arithmetic
   else
-    pose_vertices(s, a.scale[b], a.position[b], posed.rotation, v);
+    pose_vertices(s, scale, position, posed.rotation, v);
   posed.shape = &s;
   posed.vertices = v;
-  posed.position = a.position[b];
-  posed.radius = s.radius * a.scale[b];
-  posed.scale = a.scale[b];
+  posed.position = position;
+  posed.radius = s.radius * scale;
+  posed.scale = scale;
 }
 
 }  // namespace

@@ -150,6 +150,11 @@ class ContactEngine {
     keep_margins_ = watched && margins_read_;
     return watched;
   }
+  // The same for polyhedra (not spheres' lists): true, with `watch` set, where the pass that moves
+  // the bodies can make measure's bounds; measure_motion(bodies, true) then skips its own.
+  bool watch_bounds(const LocalBodies& bodies, BoundWatch& watch) {
+    return !spheres_only_ && trigger_.watch_bounds(*bodies.orientation, core_reach_, settings_.skin, watch);
+  }
   // measure_motion's poses and bounds again for the bodies `some` alone, their answer left out:
   // a rank's ghosts, landed after its measure of all, which their owners' measures answered for.
   void remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some);

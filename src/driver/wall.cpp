@@ -15,17 +15,6 @@ void Wall::candidates(const Placement& at, const PosedBody& a, double range, std
       out.push_back({PairType::vertex_face, std::uint16_t(v), 0});
 }
 
-bool Wall::contact(const Placement& at, const PosedBody& a, FeaturePair f, double max_gap, ContactPoint& out) const {
-  const Vec3& v = a.vertices[f.a];
-  const double height = (v - at.point).dot(at.normal);  // m, vertex above the plane
-  const double gap = height - a.radius;
-  if (gap >= max_gap) return false;
-  out.normal = at.normal;
-  out.gap = gap;
-  out.point = v - at.normal * (a.radius + 0.5 * gap);  // middle of the overlap
-  return true;
-}
-
 DriverMesh Wall::drawing(const Placement& at, const std::string& name, const ViewFrame& frame) const {
   std::vector<Vec3> corners = framed_wall(at.point, at.normal, size_, frame);
   std::vector<int> polygon(corners.size());

@@ -42,19 +42,20 @@ template <int sx, int sy, int sz>
 
 // out[v] = position + (rotation scale) s.vertices[v], as pose_vertices, for a box's eight vertices.
 // Inline: posing calls it for every body and step.
-inline void pose_box(const BoxCorners& box, double scale, const Vec3& position, const Mat3& rotation, Vec3* out) {
+// `at` by value: held in registers, not reloaded after each corner's store (out may alias it).
+inline void pose_box(const BoxCorners& box, double scale, const Vec3 at, const Mat3& rotation, Vec3* out) {
   const Mat3 rs = rotation * scale;
   const Vec3 c0 = rs.col(0) * box.half.x(), c1 = rs.col(1) * box.half.y(), c2 = rs.col(2) * box.half.z();  // m
   using namespace box_pose_detail;
   const SignedSums x01(c0.x(), c1.x()), y01(c0.y(), c1.y()), z12(c1.z(), c2.z());
-  out[box.vertex[0]] = corner<-1, -1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[1]] = corner<+1, -1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[2]] = corner<-1, +1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[3]] = corner<+1, +1, -1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[4]] = corner<-1, -1, +1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[5]] = corner<+1, -1, +1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[6]] = corner<-1, +1, +1>(position, x01, y01, z12, c0, c2);
-  out[box.vertex[7]] = corner<+1, +1, +1>(position, x01, y01, z12, c0, c2);
+  out[box.vertex[0]] = corner<-1, -1, -1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[1]] = corner<+1, -1, -1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[2]] = corner<-1, +1, -1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[3]] = corner<+1, +1, -1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[4]] = corner<-1, -1, +1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[5]] = corner<+1, -1, +1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[6]] = corner<-1, +1, +1>(at, x01, y01, z12, c0, c2);
+  out[box.vertex[7]] = corner<+1, +1, +1>(at, x01, y01, z12, c0, c2);
 }
 
 }  // namespace polydem

@@ -36,12 +36,7 @@ void add_margins(PairMargins& m, std::size_t n, const std::uint8_t* ghost, doubl
 
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius) {
-  if (bounding_radius == 0.0) return dx.norm();  // a point (a sphere's core): turning moves it nowhere
-  const Quat q_rel = q_now * q_built.conjugate();
-  // sin(theta/2) = |vector part| of the unit relative rotation; dividing by the norm forgives
-  // quaternions that drifted slightly off unit length.
-  const double sin_half = q_rel.vec().norm() / q_rel.norm();
-  return dx.norm() + 2.0 * bounding_radius * sin_half;
+  return trigger_detail::displacement_bound(dx, q_now, q_built, bounding_radius);
 }
 
 void RebuildTrigger::mark_built(const std::vector<Vec3>& x, const std::vector<Quat>& q, bool points) {
@@ -188,6 +183,15 @@ void RebuildTrigger::remeasure(const std::vector<Vec3>& x, const std::vector<Qua
   if (q_built.empty() || x_built.size() != x.size()) return;  // points, or no build: measure answered
   for (std::uint32_t i : some)
     displacement_[i] = displacement_bound(x[i] - x_built[i], q[i], q_built[i], bounding_radius[i]);
+}
+
+bool RebuildTrigger::watch_bounds(const std::vector<Quat>& q, const std::vector<double>& bounding_radius,
+                                  double skin, BoundWatch& watch) {
+  const std::size_t n = q.size();
+  if (rebuild_count == 0 || x_built.size() != n || q_built.empty()) return false;  // measure's other paths
+  watch = {x_built.data(), q_built.data(), q.data(), bounding_radius.data(), skin_.empty() ? nullptr : skin_.data(),
+           move_limit(skin), displacement_.data(), &exceeded_};
+  return true;
 }
 
 bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch) {

@@ -19,6 +19,18 @@ namespace polydem {
 // displacement, tighter than the arc R theta and free of trigonometry. R = 0: |dx| alone.
 double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
                           double bounding_radius);
+namespace trigger_detail {
+// displacement_bound's arithmetic, inlined where a pass holds the body (BoundWatch).
+[[gnu::always_inline]] inline double displacement_bound(const Vec3& dx, const Quat& q_now, const Quat& q_built,
+                                                        double bounding_radius) {
+  if (bounding_radius == 0.0) return dx.norm();  // a point (a sphere's core): turning moves it nowhere
+  const Quat q_rel = q_now * q_built.conjugate();
+  // sin(theta/2) = |vector part| of the unit relative rotation; dividing by the norm forgives
+  // quaternions that drifted slightly off unit length.
+  const double sin_half = q_rel.vec().norm() / q_rel.norm();
+  return dx.norm() + 2.0 * bounding_radius * sin_half;
+}
+}  // namespace trigger_detail
 
 // m: how far each body may move from where the lists were built (half the skin).
 inline double move_limit(double skin) { return 0.5 * skin; }
@@ -41,6 +53,28 @@ struct PointWatch {
   [[gnu::always_inline]] void operator()(std::size_t i, const Vec3& x) const {
     if ((x - x_near[i].cast<double>()).squaredNorm() <= near2) return;  // nearly every body-step (no root)
     if (moved_past(x, x_built[i], limit) && !exceeded->load(std::memory_order_relaxed))
+      exceeded->store(true, std::memory_order_relaxed);
+  }
+};
+
+// measure's test of polyhedra for the pass that has just moved and turned them (the joined opening
+// pass, integrate.hpp): each body's bound kept (displacement()) and its answer set as measure's
+// loop keeps and sets them, with no loop of its own (~19 instructions a body-step, and the
+// bound's call, on the settled cubes).
+struct BoundWatch {
+  const Vec3* x_built;          // m
+  const Quat* q_built;
+  const Quat* q;                // the pass's orientations: turned before it shows the position
+  const double* radius;         // m, per body, measure's bounding radius (the core's reach)
+  const double* skin;           // m, per body (set_skins); null: `limit` for every body
+  double limit;                 // m, move_limit of the scene's skin
+  double* bound;                // m, per body
+  std::atomic<bool>* exceeded;  // set, never cleared here: any order gives the same
+  [[gnu::always_inline]] void operator()(std::size_t i, const Vec3& x) const {
+    const double d = trigger_detail::displacement_bound(x - x_built[i], q[i], q_built[i], radius[i]);  // m
+    bound[i] = d;
+    // Written as !(d <= limit) so a NaN state also asks for a rebuild.
+    if (!(d <= (skin ? move_limit(skin[i]) : limit)) && !exceeded->load(std::memory_order_relaxed))
       exceeded->store(true, std::memory_order_relaxed);
   }
 };
@@ -138,6 +172,10 @@ class RebuildTrigger {
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
   // bodies are points and a build was marked for as many; the pass then stands for measure.
   bool watch_points(std::size_t n, double skin, PointWatch& watch);
+  // The same for polyhedra (a build kept their orientations): `watch` makes measure's bounds of the
+  // n bodies, orientations q and radii `bounding_radius`, in the pass. False where measure must run.
+  bool watch_bounds(const std::vector<Quat>& q, const std::vector<double>& bounding_radius, double skin,
+                    BoundWatch& watch);
   // pair_exceeded's margins of points, kept by a team's threads after the pass that moved them
   // (each its bodies of `cut`, joined in any order: the two largest of a set), on the steps where
   // the pair rule is likely read, so pair_exceeded answers from them without a serial loop.

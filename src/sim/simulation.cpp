@@ -263,6 +263,10 @@ void Simulation::step(bool leave_kick_open) {
   PointWatch watch;
   const bool watched =
       from_gravity && (one_process ? engine_->watch_motion(all_owned(bodies), watch) : ranks_->watch_motion(watch));
+  // Polyhedra: the same pass makes the rebuild trigger's bounds (no turns: their pass has none).
+  BoundWatch bounds;
+  const bool bounded = contacts && one_process && from_gravity && !watched && !turning &&
+                       engine_->watch_bounds(all_owned(bodies), bounds);
   audit::serial(audit::kSerial);
   in_team(team, [&] {
     const audit::Scope passes(audit::kPasses);
@@ -276,6 +280,8 @@ void Simulation::step(bool leave_kick_open) {
     else if (turning)  // kept only where close_last
       close_turn_and_start(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), from_gravity, kept_turns_.pass(),
                            cut, wait);
+    else if (bounded)
+      close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, bounds, wait);
     else if (from_gravity)
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, NoWatch{}, wait);
     else if (close_last)
@@ -285,7 +291,7 @@ void Simulation::step(bool leave_kick_open) {
     else
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
     if (contacts && one_process) {
-      engine_->measure_motion(all_owned(bodies), watched);
+      engine_->measure_motion(all_owned(bodies), watched || bounded);
       engine_->pose_before_forces(all_owned(bodies));
     }
   });

@@ -112,6 +112,41 @@ TEST_CASE("a pass's watch of points reads x at the build in floats and answers a
   CHECK(past < 3 * tests / 4);
 }
 
+TEST_CASE("a pass's watch of polyhedra keeps measure's bounds and answer, bit for bit", "[rebuild]") {
+  // 2,000 turned and moved bodies, every one watched as the opening pass watches them, against
+  // needs_rebuild's loop. Moves up to 0.46 skin: within the scene's skin/2, past some bodies' own
+  // (per-body skins 0.5 to 1.3 skin), so each answer hangs on the skins read; then one body past all.
+  const double skin = 0.1;  // m
+  const test::Scene s = test::uniform_scene(2000, 10.0, 0.2, 0.5, 9);
+  const std::size_t n = s.centers.size();
+  std::vector<Quat> q0(n), q(n);
+  std::vector<Vec3> x = s.centers;
+  std::vector<double> skins(n);  // m
+  for (std::size_t b = 0; b < n; ++b) {
+    q0[b] = rotation(0.1 * double(b), Vec3(1, 2, 3));
+    q[b] = rotation(1e-3 * double(b % 13), Vec3(-1, 0, 2)) * q0[b];  // rad: chords up to 6 mm
+    x[b].x() += 0.4 * skin * double(b % 7) / 6.0;                      // m
+    skins[b] = skin * (0.5 + 0.1 * double(b % 9));
+  }
+  for (bool per_body : {false, true}) {
+    RebuildTrigger measured, watched;
+    measured.mark_built(s.centers, q0);
+    watched.mark_built(s.centers, q0);
+    if (per_body) measured.set_skins(skins), watched.set_skins(skins);
+    std::vector<Vec3> moved = x;
+    for (bool far : {false, true}) {
+      if (far) moved[3].y() += skin;  // m: past every half skin
+      const bool answer = measured.needs_rebuild(moved, q, s.radii, skin);
+      CHECK(answer == (far || per_body));
+      BoundWatch watch{};
+      REQUIRE(watched.watch_bounds(q, s.radii, skin, watch));
+      for (std::size_t b = 0; b < n; ++b) watch(b, moved[b]);
+      CHECK(watched.take_exceeded() == answer);
+      CHECK(watched.displacement() == measured.displacement());  // every bound's bits
+    }
+  }
+}
+
 TEST_CASE("rotation of a body with a large bounding radius triggers", "[rebuild]") {
   // A point at distance R turned by theta moves along the chord 2 R sin(theta/2).
   const double skin = 0.2;
