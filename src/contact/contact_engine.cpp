@@ -304,15 +304,17 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   // (the driver pairs' flush follows the join): on two threads at once, not one after the other
   // (issue 19: ~0.3e6 instructions a pour rebuild the other thread waited through asleep).
   std::vector<std::uint32_t> uncarried_d;  // old driver pairs whose energy is flushed now
+  // Two tasks pay on two threads; a larger team shares the driver candidates among all instead.
+  const bool at_once = team == 2;
   two_tasks(
-      team > 1,
+      at_once,
       [&] {
         close_body_list(bodies, old_body, std::move(fresh), team);
         // the lighter task (~0.25e6 against ~0.33e6 on the pour) also marks the trigger: it reads the poses alone
         trigger_.mark_built(*bodies.position, *bodies.orientation, spheres_only_);  // spheres: core_reach_ 0
         trigger_.set_skins(skin_);
       },
-      [&] { uncarried_d = make_driver_list(bodies, drivers, std::move(fresh_d), old_driver); });
+      [&] { uncarried_d = make_driver_list(bodies, drivers, std::move(fresh_d), old_driver, !at_once); });
   flush_pairs(old_driver, uncarried_d, bodies.ghost);
   if (spheres_only_) {  // a sphere's weight counts its wall pairs (driver_begin_)
     weigh_bodies(!own_pass_cut_);
@@ -355,16 +357,22 @@ void ContactEngine::close_body_list(const LocalBodies& bodies, PairList& old_bod
 
 // A rebuild's new driver list from its pairs `fresh` (posed bodies): candidates, slots, the old
 // list's history carried; returns the old pairs whose energy is to be flushed (flushed_ is
-// another task's). Touches no body list; one thread (a task of two_tasks).
+// another task's). Touches no body list; the candidates on the threads when `share_candidates`
+// (not a task of two_tasks, whose other thread is busy), else on this one.
 std::vector<std::uint32_t> ContactEngine::make_driver_list(const LocalBodies& bodies, const Drivers& drivers,
-                                                           PairList fresh, const PairList& old_driver) {
+                                                           PairList fresh, const PairList& old_driver,
+                                                           bool share_candidates) {
   std::vector<std::vector<FeaturePair>> per_pair(fresh.pairs.size());
-  for (std::size_t k = 0; k < fresh.pairs.size(); ++k) {  // each pair writes its own run, sorted
+  const auto find = [&](std::size_t k) {  // each pair writes its own run, sorted
     const std::uint32_t i = fresh.pairs[k].i;
     drivers.candidates(spheres_only_ ? sphere_pose(bodies, i) : posed_[i], fresh.pairs[k].j, skin_of(i) + band_driver_,
                        per_pair[k]);
     sort_by_key(per_pair[k]);
-  }
+  };
+  if (share_candidates)
+    parallel_for(fresh.pairs.size(), find, kParallelMinHeavyItems);
+  else
+    for (std::size_t k = 0; k < fresh.pairs.size(); ++k) find(k);
   fresh.gap_at_build.assign(fresh.pairs.size(), -std::numeric_limits<double>::infinity());  // drivers move
   fill_driver_slots(per_pair, fresh);
   size_slots(fresh);

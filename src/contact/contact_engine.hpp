@@ -284,10 +284,10 @@ class ContactEngine {
   void flush_idle(PairList& list, const std::vector<std::uint8_t>* ghost);  // pairs with no active slot
   // Body-driver pairs within each body's skin plus the driver band; marks the drivers (driver_shift).
   std::vector<BodyPair> near_drivers(const LocalBodies& bodies, const Drivers& drivers);
-  // A rebuild's two lists, made at once on two threads (two_tasks): each writes only its own.
+  // A rebuild's two lists, made at once on a team of two (two_tasks): each writes only its own.
   void close_body_list(const LocalBodies& bodies, PairList& old_body, PairList fresh, int team);
   std::vector<std::uint32_t> make_driver_list(const LocalBodies& bodies, const Drivers& drivers, PairList fresh,
-                                              const PairList& old_driver);
+                                              const PairList& old_driver, bool share_candidates);
   void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
   void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
