@@ -69,6 +69,8 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
   std::vector<CandidateBlock> blocks(n_blocks);
   std::vector<PairSearches> made(n_blocks);  // the new searches, block by block
   std::vector<std::int64_t> from(near.size());  // as remember() reads it
+  BlockLayout at;     // the list's, from the blocks
+  PairSearches next;  // the searches kept, laid out
   const bool own_region = omp_get_level() == 0;  // its end is the loop's barrier
   in_team(near.size() >= kParallelMinItems, [&] {
     std::vector<FeaturePair> wide, found;
@@ -76,7 +78,7 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
     std::vector<std::uint32_t> order;
     std::vector<std::int64_t> old;  // the block's pairs' searches (match)
     CandidateBlock block;  // grown once per thread; each block is copied out at its exact size
-#pragma omp for schedule(dynamic, 1) nowait
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t blk = 0; blk < n_blocks; ++blk) {
       block.clear();
       const std::size_t first = blk * kCandidateBlock, last = std::min(near.size(), first + kCandidateBlock);
@@ -119,13 +121,24 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
       }
       blocks[blk] = block;
     }
+    // The list's layout and the memory's on two threads at once (a team of one does both): two
+    // serial stretches the other thread waited through (~0.19e6 instructions a pour's rebuild).
+    const int t = omp_get_thread_num(), second = omp_get_num_threads() > 1 ? 1 : 0;
+    if (t == 0) at = lay_out_blocks(blocks, list);
+    if (t == second) {
+      // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang refuses a
+      // reduction over a lambda's captured reference)
+      recalled_ = std::size_t(std::count_if(from.begin(), from.end(), [](std::int64_t f) { return f >= 0; }));
+      next = laid_out(from, made);
+    }
+#pragma omp barrier
+#pragma omp for schedule(static) nowait
+    for (std::size_t blk = 0; blk < n_blocks; ++blk) copy_block(blocks, blk, at, list);
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < from.size(); ++k) copy_search(from, made, k, next);
     barrier_unless_own_region(own_region);
   });
-  join_blocks(blocks, list);
-  // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang refuses a
-  // reduction over a lambda's captured reference)
-  recalled_ = std::size_t(std::count_if(from.begin(), from.end(), [](std::int64_t f) { return f >= 0; }));
-  remember(from, made);
+  searches_ = std::move(next);
   searched_ = near.size() - recalled_;
 }
 
@@ -142,20 +155,23 @@ void CandidateMemory::relabel(const std::vector<std::uint32_t>& was, const std::
   for (BodyPair& p : searches_.pairs) p = {std::uint32_t(to[p.i]), std::uint32_t(to[p.j])};
 }
 
-void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) {
-  const auto source = [&](std::size_t k, std::size_t& e) -> const PairSearches& {
-    if (from[k] >= 0) {
-      e = std::size_t(from[k]);
-      return searches_;
-    }
-    e = std::size_t(-1 - from[k]);
-    return made[k / kCandidateBlock];
-  };
+// The searches' source for near pair k: e in searches_ or in its block's `made`.
+const PairSearches& CandidateMemory::source(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made,
+                                            std::size_t k, std::size_t& e) const {
+  if (from[k] >= 0) {
+    e = std::size_t(from[k]);
+    return searches_;
+  }
+  e = std::size_t(-1 - from[k]);
+  return made[k / kCandidateBlock];
+}
+
+PairSearches CandidateMemory::laid_out(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) const {
   const std::size_t n = from.size();
   PairSearches next;
   next.begin.assign(n + 1, 0);  // assign, not resize: GCC 12 misreads resize of the one-element default (-Warray-bounds)
   for (std::size_t k = 0, e = 0; k < n; ++k) {
-    const PairSearches& s = source(k, e);
+    const PairSearches& s = source(from, made, k, e);
     next.begin[k + 1] = next.begin[k] + (s.begin[e + 1] - s.begin[e]);
   }
   next.pairs.resize(n);
@@ -165,18 +181,26 @@ void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std:
   next.looked.resize(n);
   next.features.resize(next.begin[n]);
   next.distance2.resize(next.begin[n]);
-  parallel_for(n, [&](std::size_t k) {
-    std::size_t e = 0;
-    const PairSearches& s = source(k, e);
-    next.pairs[k] = s.pairs[e];
-    next.offset[k] = s.offset[e];
-    next.turn_i[k] = s.turn_i[e];
-    next.turn_j[k] = s.turn_j[e];
-    next.looked[k] = s.looked[e];
-    std::copy(s.features.begin() + s.begin[e], s.features.begin() + s.begin[e + 1], next.features.begin() + next.begin[k]);
-    std::copy(s.distance2.begin() + s.begin[e], s.distance2.begin() + s.begin[e + 1],
-              next.distance2.begin() + next.begin[k]);
-  });
+  return next;
+}
+
+void CandidateMemory::copy_search(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made,
+                                  std::size_t k, PairSearches& next) const {
+  std::size_t e = 0;
+  const PairSearches& s = source(from, made, k, e);
+  next.pairs[k] = s.pairs[e];
+  next.offset[k] = s.offset[e];
+  next.turn_i[k] = s.turn_i[e];
+  next.turn_j[k] = s.turn_j[e];
+  next.looked[k] = s.looked[e];
+  std::copy(s.features.begin() + s.begin[e], s.features.begin() + s.begin[e + 1], next.features.begin() + next.begin[k]);
+  std::copy(s.distance2.begin() + s.begin[e], s.distance2.begin() + s.begin[e + 1],
+            next.distance2.begin() + next.begin[k]);
+}
+
+void CandidateMemory::remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) {
+  PairSearches next = laid_out(from, made);
+  parallel_for(from.size(), [&](std::size_t k) { copy_search(from, made, k, next); });
   searches_ = std::move(next);
 }
 

@@ -72,6 +72,12 @@ class CandidateMemory {
   // Keeps the near pairs' searches: pair k's is searches_'s from[k] when from[k] >= 0, else the
   // new one -1 - from[k] of its block's `made`.
   void remember(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made);
+  // remember's two halves: the layout (one thread) and pair k's search copied to it (any thread).
+  PairSearches laid_out(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made) const;
+  void copy_search(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made, std::size_t k,
+                   PairSearches& next) const;
+  const PairSearches& source(const std::vector<std::int64_t>& from, const std::vector<PairSearches>& made,
+                             std::size_t k, std::size_t& e) const;
 
   double extra_;  // m
   PairSearches searches_;

@@ -69,27 +69,29 @@ void CandidateBlock::add_found(BodyPair p, double smallest, double radii, const 
   }
 }
 
-void join_blocks(std::vector<CandidateBlock>& blocks, PairList& list) {
-  std::vector<std::size_t> first_pair(blocks.size() + 1, 0), first_slot(blocks.size() + 1, 0);
+BlockLayout lay_out_blocks(const std::vector<CandidateBlock>& blocks, PairList& list) {
+  BlockLayout at{std::vector<std::size_t>(blocks.size() + 1, 0), std::vector<std::size_t>(blocks.size() + 1, 0)};
   for (std::size_t blk = 0; blk < blocks.size(); ++blk) {
-    first_pair[blk + 1] = first_pair[blk] + blocks[blk].pairs.size();
-    first_slot[blk + 1] = first_slot[blk] + blocks[blk].features.size();
+    at.first_pair[blk + 1] = at.first_pair[blk] + blocks[blk].pairs.size();
+    at.first_slot[blk + 1] = at.first_slot[blk] + blocks[blk].features.size();
   }
-  list.pairs.resize(first_pair.back());
-  list.gap_at_build.resize(first_pair.back());
-  list.slot_begin.assign(first_pair.back() + 1, 0);
-  list.features.resize(first_slot.back());
-  list.slot_gap.resize(first_slot.back());
-  parallel_for(blocks.size(), [&](std::size_t blk) {
-    CandidateBlock& from = blocks[blk];
-    std::copy(from.pairs.begin(), from.pairs.end(), list.pairs.begin() + first_pair[blk]);
-    std::copy(from.pair_gap.begin(), from.pair_gap.end(), list.gap_at_build.begin() + first_pair[blk]);
-    std::copy(from.features.begin(), from.features.end(), list.features.begin() + first_slot[blk]);
-    std::copy(from.gaps.begin(), from.gaps.end(), list.slot_gap.begin() + first_slot[blk]);
-    std::uint32_t end = std::uint32_t(first_slot[blk]);  // of the pair's run
-    for (std::size_t k = 0; k < from.count.size(); ++k) list.slot_begin[first_pair[blk] + k + 1] = end += from.count[k];
-    from = CandidateBlock{};
-  });
+  list.pairs.resize(at.first_pair.back());
+  list.gap_at_build.resize(at.first_pair.back());
+  list.slot_begin.assign(at.first_pair.back() + 1, 0);
+  list.features.resize(at.first_slot.back());
+  list.slot_gap.resize(at.first_slot.back());
+  return at;
+}
+
+void copy_block(std::vector<CandidateBlock>& blocks, std::size_t blk, const BlockLayout& at, PairList& list) {
+  CandidateBlock& from = blocks[blk];
+  std::copy(from.pairs.begin(), from.pairs.end(), list.pairs.begin() + at.first_pair[blk]);
+  std::copy(from.pair_gap.begin(), from.pair_gap.end(), list.gap_at_build.begin() + at.first_pair[blk]);
+  std::copy(from.features.begin(), from.features.end(), list.features.begin() + at.first_slot[blk]);
+  std::copy(from.gaps.begin(), from.gaps.end(), list.slot_gap.begin() + at.first_slot[blk]);
+  std::uint32_t end = std::uint32_t(at.first_slot[blk]);  // of the pair's run
+  for (std::size_t k = 0; k < from.count.size(); ++k) list.slot_begin[at.first_pair[blk] + k + 1] = end += from.count[k];
+  from = CandidateBlock{};
 }
 
 void free_results(PairList& list) {

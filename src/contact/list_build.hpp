@@ -38,9 +38,15 @@ struct CandidateBlock {
   void clear();
 };
 
-// Lays the blocks out as `list`'s pairs, slot_begin, features, slot_gap and gap_at_build, in
-// block order (the near pairs' order), freeing each block once copied.
-void join_blocks(std::vector<CandidateBlock>& blocks, PairList& list);
+// The blocks joined as `list`'s pairs, slot_begin, features, slot_gap and gap_at_build, in block
+// order (the near pairs' order), in two halves, for a team that runs the first on one thread (beside
+// other serial work) and shares the second: each block's first pair and slot in `list`, its arrays sized...
+struct BlockLayout {
+  std::vector<std::size_t> first_pair, first_slot;  // per block, and the totals last
+};
+BlockLayout lay_out_blocks(const std::vector<CandidateBlock>& blocks, PairList& list);
+// ... then block `blk` copied to its place and freed (the blocks apart: any thread, any order).
+void copy_block(std::vector<CandidateBlock>& blocks, std::size_t blk, const BlockLayout& at, PairList& list);
 
 // Candidates of the body pairs whose bounding spheres overlap, laid out in `list` (pairs with
 // none stay out of the per-step loop: half the pairs in a pile). pose_of(b): body b's pose (a
@@ -49,6 +55,7 @@ void join_blocks(std::vector<CandidateBlock>& blocks, PairList& list);
 template <class PoseOf>
 void body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, double range, PairList& list) {
   std::vector<CandidateBlock> blocks((near.size() + kCandidateBlock - 1) / kCandidateBlock);
+  BlockLayout at;  // the list's, from the blocks
   in_team(near.size() >= kParallelMinItems, [&] {
     std::vector<FeaturePair> found;
     std::vector<double> distances2;  // m^2
@@ -61,8 +68,12 @@ void body_candidates(const std::vector<BodyPair>& near, const PoseOf& pose_of, d
         scratch.add(near[k], pose_of(near[k].i), pose_of(near[k].j), range, found, distances2, order);
       blocks[blk] = scratch;
     }
+    // The list laid out on one thread, the blocks copied on the team (one region for all of it).
+#pragma omp single
+    at = lay_out_blocks(blocks, list);
+#pragma omp for schedule(static) nowait
+    for (std::size_t blk = 0; blk < blocks.size(); ++blk) copy_block(blocks, blk, at, list);
   });
-  join_blocks(blocks, list);
 }
 
 // Frees what active_part does not read (the last step's results but the pending energies, the

@@ -42,10 +42,14 @@ class CellList {
   static constexpr int kMaxLevels = 8;
 
  private:
-  void bin_levels(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin,
-                  double top_cell);
-  void collect_pairs(double skin, std::size_t n);
-  void merge_pairs(std::size_t n, std::vector<BodyPair>& out);
+  struct SearchTeam;  // the threads' partial results (cell_list.cpp)
+  void search(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin,
+              SearchTeam& team, std::vector<BodyPair>& out);
+  static double cell_side(const std::vector<double>& radii, double skin, SearchTeam& team, std::size_t& bad);
+  bool bin_levels(const std::vector<Vec3>& centers, const std::vector<double>& radii, double skin,
+                  double top_cell, SearchTeam& team);
+  void collect_pairs(double skin, SearchTeam& team);
+  void merge_pairs(std::size_t n, SearchTeam& team, std::vector<BodyPair>& out);
 
   std::size_t used_levels = 0;
   std::vector<CellGrid> grids;                       // coarsest first; the first used_levels
@@ -54,7 +58,6 @@ class CellList {
   // Output assembly.
   std::vector<std::vector<BodyPair>> thread_pairs;
   std::vector<std::uint32_t> row_start;  // CSR of the output by first body
-  std::vector<std::uint32_t> row_fill;
   std::size_t candidate_count = 0;
 };
 

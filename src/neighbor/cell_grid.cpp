@@ -3,13 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include <omp.h>
 
 #include "neighbor/cell_common.hpp"
 
 namespace polydem {
 namespace {
 
-using cells::kMinParallel;
 using cells::kOffsets;
 
 // A dense grid may have this many cells per body before the hashed cells are used instead.
@@ -28,26 +30,21 @@ double cell_coordinate(double x, double lo, double cell) {
 
 }  // namespace
 
-void CellGrid::build(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                     const std::vector<std::uint32_t>& members, double cell, const Vec3& box_lo,
-                     const Vec3& hi) {
+void CellGrid::prepare(std::size_t n, double cell, const Vec3& box_lo, const Vec3& hi, std::size_t threads) {
   lo = box_lo;
   side = cell;
   double grid_cells = 1.0;
   for (int d = 0; d < 3; ++d) grid_cells *= cell_coordinate(hi[d], lo[d], cell) + 1.0;
   // The dense ids must also fit in 32 bits.
-  dense = grid_cells <= kDenseCellsPerBody * static_cast<double>(members.size()) + 64.0 &&
-          grid_cells < 4.0e9;
-  member_cell.resize(members.size());
+  dense = grid_cells <= kDenseCellsPerBody * static_cast<double>(n) + 64.0 && grid_cells < 4.0e9;
+  member_cell.resize(n);
   if (dense) {
-    for (int d = 0; d < 3; ++d) {
-      dims[d] = static_cast<std::int64_t>(cell_coordinate(hi[d], lo[d], cell)) + 1;
-    }
-    number_dense_cells(centers, members);
+    for (int d = 0; d < 3; ++d) dims[d] = static_cast<std::int64_t>(cell_coordinate(hi[d], lo[d], cell)) + 1;
+    cells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
   } else {
-    number_hashed_cells(centers, members);
+    member_coord.resize(n);
   }
-  sort_into_cells(centers, radii, members);
+  thread_total.assign(threads, 0);
 }
 
 CellCoord CellGrid::coord_of(double x, double y, double z) const {
@@ -62,66 +59,84 @@ std::uint32_t CellGrid::dense_id(const CellCoord& c) const {
   return static_cast<std::uint32_t>((c.z * dims[1] + c.y) * dims[0] + c.x);
 }
 
-void CellGrid::number_dense_cells(const std::vector<Vec3>& centers,
-                                  const std::vector<std::uint32_t>& members) {
+void CellGrid::number(const std::vector<Vec3>& centers, const std::vector<std::uint32_t>& members) {
   const std::size_t n = members.size();
-  cells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
-#pragma omp parallel for schedule(static) if (n >= kMinParallel)
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec3& x = centers[members[k]];
-    member_cell[k] = dense_id(coord_of(x.x(), x.y(), x.z()));
+  if (dense) {
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& x = centers[members[k]];
+      member_cell[k] = dense_id(coord_of(x.x(), x.y(), x.z()));
+    }
+  } else {
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& x = centers[members[k]];
+      member_coord[k] = coord_of(x.x(), x.y(), x.z());
+    }
   }
 }
 
-// Occupied cells numbered in order of their first body, which is deterministic.
-void CellGrid::number_hashed_cells(const std::vector<Vec3>& centers,
-                                   const std::vector<std::uint32_t>& members) {
-  const std::size_t n = members.size();
-  member_coord.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kMinParallel)
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec3& x = centers[members[k]];
-    member_coord[k] = coord_of(x.x(), x.y(), x.z());
-  }
-  table.reset(n);
-  cell_coord.clear();
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t c = table.insert(member_coord[k]);
-    if (c == cell_coord.size()) cell_coord.push_back(member_coord[k]);
-    member_cell[k] = c;
-  }
-  cells = table.size();
-  link_hashed_cells();
-}
-
-// Counting sort by cell id, stable in member order.
-void CellGrid::sort_into_cells(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                               const std::vector<std::uint32_t>& members) {
-  const std::size_t n = members.size();
-  cell_start.assign(cells + 2, 0);
-  for (std::size_t k = 0; k < n; ++k) ++cell_start[member_cell[k] + 2];
-  for (std::size_t c = 2; c < cells + 2; ++c) cell_start[c] += cell_start[c - 1];
-  spheres.resize(n);
-  sorted_id.resize(n);
-  // cell_start[c + 1] walks from the start of cell c to its end, which is the start of c + 1.
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t at = cell_start[member_cell[k] + 1]++;
-    const std::uint32_t i = members[k];
-    spheres[at] = {centers[i].x(), centers[i].y(), centers[i].z(), radii[i]};
-    sorted_id[at] = i;
+// Hashed: occupied cells numbered in order of their first body, which is deterministic.
+void CellGrid::lay_out() {
+  const std::size_t n = member_cell.size();
+  if (!dense) {
+    table.reset(n);
+    cell_coord.clear();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t c = table.insert(member_coord[k]);
+      if (c == cell_coord.size()) cell_coord.push_back(member_coord[k]);
+      member_cell[k] = c;
+    }
+    cells = table.size();
+    forward.resize(cells * kForward);
   }
   cell_start.resize(cells + 1);
+  cell_start[cells] = std::uint32_t(n);
+  spheres.resize(n);
+  sorted_id.resize(n);
 }
 
-void CellGrid::link_hashed_cells() {
-  forward.resize(cells * kForward);
-#pragma omp parallel for schedule(static) if (cells >= kMinParallel)
+void CellGrid::link() {
+  if (dense) return;
+#pragma omp for schedule(static) nowait
   for (std::size_t c = 0; c < cells; ++c) {
     const CellCoord& a = cell_coord[c];
     for (int k = 0; k < kForward; ++k) {
       const CellCoord b = {a.x + kOffsets[k][0], a.y + kOffsets[k][1], a.z + kOffsets[k][2]};
       forward[c * kForward + k] = table.find(b);
     }
+  }
+}
+
+// A counting sort by cell id, stable in member order, each thread of the team on a run of cells: it
+// counts their members (reading every member's cell) and lays them out after its run's start...
+std::vector<std::uint32_t> CellGrid::count_cells() {
+  const std::size_t t = std::size_t(omp_get_thread_num()), team = std::size_t(omp_get_num_threads());
+  const std::size_t first = cells * t / team, last = cells * (t + 1) / team;  // this thread's cells
+  std::vector<std::uint32_t> fill(last - first, 0);  // its cells' counts, then their first sphere in the run
+  for (const std::uint32_t c : member_cell)
+    if (c >= first && c < last) ++fill[c - first];
+  std::uint32_t run = 0;  // spheres in this thread's cells
+  for (std::uint32_t& count : fill) run += std::exchange(count, run);
+  thread_total[t] = run;
+  return fill;
+}
+
+// ... then, once every thread counted, moves its run after the runs before and fills its cells
+// (writing only their spheres: the serial sort's layout, at any team).
+void CellGrid::place(const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                     const std::vector<std::uint32_t>& members, std::vector<std::uint32_t>& fill) {
+  const std::size_t t = std::size_t(omp_get_thread_num()), team = std::size_t(omp_get_num_threads());
+  const std::size_t first = cells * t / team, last = cells * (t + 1) / team;
+  std::uint32_t before = 0;  // spheres in the cells of the threads before this one
+  for (std::size_t u = 0; u < t; ++u) before += thread_total[u];
+  for (std::size_t c = first; c < last; ++c) cell_start[c] = fill[c - first] += before;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    if (member_cell[k] < first || member_cell[k] >= last) continue;
+    const std::uint32_t at = fill[member_cell[k] - first]++;
+    const std::uint32_t i = members[k];
+    spheres[at] = {centers[i].x(), centers[i].y(), centers[i].z(), radii[i]};
+    sorted_id[at] = i;
   }
 }
 
@@ -189,7 +204,7 @@ int CellGrid::ranges_around(const CellSphere& s, std::uint32_t (&begin)[kAround]
 std::size_t CellGrid::bytes() const {
   const auto of = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return of(member_cell) + of(cell_start) + of(spheres) + of(sorted_id) + table.bytes() +
-         of(member_coord) + of(cell_coord) + of(forward);
+         of(member_coord) + of(cell_coord) + of(forward) + of(thread_total);
 }
 
 }  // namespace polydem

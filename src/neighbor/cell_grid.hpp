@@ -22,9 +22,17 @@ class CellGrid {
   static constexpr int kAround = 27;   // a cell and its 26 neighbours
 
   // Sorts the bodies `members` (indices into centers and radii, finite) into cells of side `cell`
-  // (m) over their centres' bounding box [lo, hi] (m).
-  void build(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-             const std::vector<std::uint32_t>& members, double cell, const Vec3& lo, const Vec3& hi);
+  // (m) over their centres' bounding box [lo, hi] (m), in phases so that a team builds several
+  // grids at once and meets between the phases, not between the grids (CellList::bin_levels):
+  // prepare (one thread), number (a shared loop), lay_out (one thread), link (a shared loop) and
+  // count_cells (every thread), place (every thread, with count_cells' result).
+  void prepare(std::size_t members, double cell, const Vec3& lo, const Vec3& hi, std::size_t threads);
+  void number(const std::vector<Vec3>& centers, const std::vector<std::uint32_t>& members);
+  void lay_out();
+  void link();
+  std::vector<std::uint32_t> count_cells();
+  void place(const std::vector<Vec3>& centers, const std::vector<double>& radii,
+             const std::vector<std::uint32_t>& members, std::vector<std::uint32_t>& fill);
 
   std::size_t cell_count() const { return cells; }
   bool hashed() const { return !dense; }
@@ -49,13 +57,6 @@ class CellGrid {
  private:
   CellCoord coord_of(double x, double y, double z) const;
   std::uint32_t dense_id(const CellCoord& c) const;
-  void number_dense_cells(const std::vector<Vec3>& centers,
-                          const std::vector<std::uint32_t>& members);
-  void number_hashed_cells(const std::vector<Vec3>& centers,
-                           const std::vector<std::uint32_t>& members);
-  void sort_into_cells(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                       const std::vector<std::uint32_t>& members);
-  void link_hashed_cells();
 
   bool dense = true;
   Vec3 lo = Vec3::Zero();  // m, lower corner of the members' bounding box
@@ -66,6 +67,7 @@ class CellGrid {
   std::vector<std::uint32_t> cell_start;
   std::vector<CellSphere> spheres;       // sorted by cell
   std::vector<std::uint32_t> sorted_id;  // body index of spheres[k]
+  std::vector<std::uint32_t> thread_total;  // spheres in each team thread's run of cells (count_cells)
   // Hashed mode only.
   CellTable table;
   std::vector<CellCoord> member_coord;  // cell of each member
