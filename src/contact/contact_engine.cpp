@@ -490,11 +490,30 @@ PairMargins ContactEngine::owned_margins(const LocalBodies& bodies, const Driver
   measure_in_team(bodies, watched, spheres_only_ ? nullptr : &owned);
   const bool past_half = trigger_.take_exceeded();
   PairMargins m;
-  if (spheres_only_) {  // points: skin/2 apiece (their margins, a pass of their own, would cost more than they save)
-    m.alone = past_half || must_rebuild_ || shift > 0.5 * settings_.skin;
-    return m;
+  if (spheres_only_) {
+    m = point_part(bodies, shift, past_half);
+  } else {
+    m = trigger_.take_margins(*bodies.position, settings_.skin, shift, ghost);
   }
-  m = trigger_.take_margins(*bodies.position, settings_.skin, shift, ghost);
+  m.alone = m.alone || must_rebuild_;
+  return m;
+}
+
+// Points test skin/2 in their pass; their margins are measured only once a step since the rebuild
+// read the pair rule (margins_read_: kept in the team's pass where watched), as one process's.
+PairMargins ContactEngine::point_part(const LocalBodies& bodies, double shift, bool past_half) {
+  PairMargins m;
+  if (margins_read_) m = trigger_.point_margins(*bodies.position, settings_.skin, shift, bodies.ghost ? bodies.ghost->data() : nullptr);
+  else m.exact = false;
+  trigger_.forget_point_margins();  // this step's, read or not
+  keep_margins_ = false;
+  m.past = past_half || shift > 0.5 * settings_.skin;
+  return m;
+}
+
+PairMargins ContactEngine::owned_point_margins(const LocalBodies& bodies, const Drivers& drivers) const {
+  const std::uint8_t* ghost = bodies.ghost ? bodies.ghost->data() : nullptr;
+  PairMargins m = trigger_.point_margins(*bodies.position, settings_.skin, driver_shift(drivers), ghost);
   m.alone = m.alone || must_rebuild_;
   return m;
 }
@@ -507,7 +526,7 @@ void ContactEngine::measure_motion(const LocalBodies& bodies, bool watched, cons
       for (std::size_t b = first; b < last; ++b) posed_[b].position = world_vertices_[b] = position[b];
   }
   if (!watched) trigger_.measure(*bodies.position, *bodies.orientation, core_reach_, settings_.skin, pass_cut(), owned);
-  else if (keep_margins_) trigger_.keep_point_margins(*bodies.position, pass_cut());
+  else if (keep_margins_) trigger_.keep_point_margins(*bodies.position, pass_cut(), bodies.ghost ? bodies.ghost->data() : nullptr);
 }
 
 void ContactEngine::remeasure(const LocalBodies& bodies, const std::vector<std::uint32_t>& some) {

@@ -116,12 +116,18 @@ class ContactEngine {
   // A rank's share of a decision over all ranks (sim/rank_contacts.hpp): measures every local
   // body as lists_stale does, then answers for its owned bodies alone (RebuildTrigger::margins,
   // `alone` set too where a rebuild is due here); the ranks' answers join in pair_rule_exceeded.
-  // Spheres alone (points) answer skin/2 apiece: `alone` when one moved so far, no margins (a
-  // pass over them each step: ~2% of a sphere bed rank's step, against ~2 rebuilds in 5,000 steps).
+  // Spheres alone (points) answer `past` when one moved skin/2 and give their margins (`exact`)
+  // only once a step since the rebuild read the pair rule (pair_rule_read: then kept in the pass,
+  // as one process's), else owned_point_margins on the step that asks (RuleVerdict::measure).
   // Polyhedra: the margins come from the measure's own pass (RebuildTrigger::take_margins);
   // `ghosts_later`: the ghosts are a step old and measured once landed (remeasure), so left out.
   PairMargins owned_margins(const LocalBodies& bodies, const Drivers& drivers, bool watched = false,
                             bool ghosts_later = false);
+  // Points' margins of the owned bodies at their positions now, measured (a serial loop: the step
+  // whose verdict asks for them); pair_rule_read: the next steps' are kept in the pass until the
+  // rebuild, as one process's once it read the rule.
+  PairMargins owned_point_margins(const LocalBodies& bodies, const Drivers& drivers) const;
+  void pair_rule_read() { margins_read_ = settings_.pair_trigger; }
   // The same in stages, for a step run as one parallel region (parallel.hpp): every thread of
   // the team calls measure_motion, then one thread outside the region stale_after_measure
   // (true as lists_stale would be), then rebuild when stale, then every thread forces.
@@ -321,6 +327,8 @@ class ContactEngine {
   bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
   bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)
   bool margins_read_ = false;              // a step since the last rebuild read the pair rule (watch_motion)
+  // owned_margins' part for points: measured where margins_read_, else `past` alone.
+  PairMargins point_part(const LocalBodies& bodies, double shift, bool past_half);
   bool keep_margins_ = false;              // this step's measure_motion keeps the points' margins
   // Spheres: some listed driver pair is not a wall, so the general driver path reads their poses
   // each step (set at rebuilds; the sphere and sphere-wall kernels read the centres themselves;

@@ -205,20 +205,41 @@ bool RebuildTrigger::watch_points(std::size_t n, double skin, PointWatch& watch)
 // margins give margins' answer: `alone` where one d passes d + driver_shift > skin is where the
 // largest does (rounding is monotone), or a d is not a number.
 bool RebuildTrigger::pair_exceeded(const std::vector<Vec3>& x, double skin, double driver_shift) const {
-  PairMargins all = points_kept_ ? points_ : margins(x, skin, driver_shift, nullptr);
-  if (points_kept_) all.alone = points_.alone || !(points_.top[0] + driver_shift <= skin);
+  const PairMargins all = point_margins(x, skin, driver_shift, nullptr);  // polyhedra: margins
   return pair_rule_exceeded(&all, 1, skin);
 }
 
-void RebuildTrigger::keep_point_margins(const std::vector<Vec3>& x, TeamCut cut) {
+PairMargins RebuildTrigger::point_margins(const std::vector<Vec3>& x, double skin, double driver_shift,
+                                          const std::uint8_t* ghost) const {
+  if (!points_kept_) return margins(x, skin, driver_shift, ghost);
+  PairMargins all = points_;
+  all.alone = points_.alone || !(points_.top[0] + driver_shift <= skin);
+  return all;
+}
+
+namespace {
+
+// keep_point_margins' loop over [first, last), the ghosts left out where kGhosts.
+template <bool kGhosts>
+void add_point_margins(PairMargins& m, std::size_t first, std::size_t last, const Vec3* x, const Vec3* x_built,
+                       const std::uint8_t* ghost) {
+  for (std::size_t i = first; i < last; ++i) {
+    if (kGhosts && ghost[i]) continue;  // its owner's part answers for it
+    const double d = (x[i] - x_built[i]).norm();  // m, margins' bound of a point
+    if (d == d) m.add(d);  // a NaN added would stand as the second largest
+    else m.alone = true;
+  }
+}
+
+}  // namespace
+
+void RebuildTrigger::keep_point_margins(const std::vector<Vec3>& x, TeamCut cut, const std::uint8_t* ghost) {
   if (rebuild_count == 0 || x_built.size() != x.size() || !q_built.empty()) return;  // margins' other paths
   PairMargins m;  // of this thread's bodies; alone: a NaN (pair_exceeded adds the driver's reach)
-  for (const auto [first, last] : team_shares(x.size(), cut))
-    for (std::size_t i = first; i < last; ++i) {
-      const double d = (x[i] - x_built[i]).norm();  // m, margins' bound of a point
-      if (d == d) m.add(d);  // a NaN added would stand as the second largest
-      else m.alone = true;
-    }
+  for (const auto [first, last] : team_shares(x.size(), cut)) {
+    if (ghost) add_point_margins<true>(m, first, last, x.data(), x_built.data(), ghost);
+    else add_point_margins<false>(m, first, last, x.data(), x_built.data(), nullptr);
+  }
 #pragma omp critical(polydem_point_margins)
   {
     points_.join(m);
@@ -263,6 +284,18 @@ bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin) {
       all.add(uniform || !parts[k].uniform ? v : v - 0.5 * skin);
   }
   return uniform ? !(all.top[0] + all.top[1] <= skin) : all.top[0] + all.top[1] > 0.0;
+}
+
+RuleVerdict rule_verdict(const PairMargins* parts, std::size_t n, double skin) {
+  bool past = false, exact = true;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (parts[k].alone) return RuleVerdict::rebuild;
+    past = past || parts[k].past;
+    exact = exact && parts[k].exact;
+  }
+  if (!past) return RuleVerdict::keep;
+  if (!exact) return RuleVerdict::measure;
+  return pair_rule_exceeded(parts, n, skin) ? RuleVerdict::rebuild : RuleVerdict::keep;
 }
 
 bool RebuildTrigger::take_exceeded() { return exceeded_.exchange(false, std::memory_order_relaxed); }

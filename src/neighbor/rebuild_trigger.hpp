@@ -94,7 +94,10 @@ inline double near_limit(double limit, double rounding) {
 struct PairMargins {
   bool alone = false;    // some body past a driver's reach (d + driver shift > s), or not finite
   bool uniform = true;   // every body at the scene's skin: `top` holds bounds d, else margins d - s/2
-  char unused[6] = {};   // zeros: a rank sends the record as bytes
+  bool past = true;      // some body moved past skin/2 or a driver as far: else none of this part's
+                         // bodies can close a pair's skin with a body past it (the rule needs one)
+  bool exact = true;     // `top` holds the part's two largest; false: not measured (points at skin/2)
+  char unused[4] = {};   // zeros: a rank sends the record as bytes
   double top[2] = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};  // m, top[0] >= top[1]
   void add(double v) {
     if (v <= top[1]) return;  // most bodies
@@ -117,6 +120,14 @@ static_assert(sizeof(PairMargins) == 24, "a rank sends it each step: 24 bytes");
 // with uniform skins the two largest bounds past the skin (pair_exceeded's d1 + d2), else the
 // two largest margins d - s/2 past 0, a uniform part's bounds read as margins d - skin/2.
 bool pair_rule_exceeded(const PairMargins* parts, std::size_t n, double skin);
+
+// The parts' answer where some may not have measured their margins (`exact` false: a rank's points,
+// whose pass tests skin/2 alone): `rebuild` where one is `alone`; `keep` where none is `past` (every
+// body within skin/2 and the drivers as near: no pair can have closed its skin); else the pair
+// rule's answer when every part's `top` is exact, and `measure` when one is not (each part's
+// margins are then needed: RebuildTrigger::margins). pair_exceeded's answer over all the bodies.
+enum class RuleVerdict { keep, rebuild, measure };
+RuleVerdict rule_verdict(const PairMargins* parts, std::size_t n, double skin);
 
 // A rank's part for RebuildTrigger::measure: its ghosts (1) and the drivers' shift (m) its margins
 // read; `ghosts_later`: the ghosts are a step old, measured once landed (remeasure), so left out.
@@ -169,6 +180,8 @@ class RebuildTrigger {
   // margins as measure's pass with `owned` kept them (`driver_shift` and `ghost` the same as
   // there), else margins itself; the kept ones are cleared for the next step's measure.
   PairMargins take_margins(const std::vector<Vec3>& x, double skin, double driver_shift, const std::uint8_t* ghost);
+  // The same for points: the kept ones (keep_point_margins with the same `ghost`), else margins.
+  PairMargins point_margins(const std::vector<Vec3>& x, double skin, double driver_shift, const std::uint8_t* ghost) const;
   // measure's test of n points done by the pass that moves them (true: `watch` set), where the
   // bodies are points and a build was marked for as many; the pass then stands for measure.
   bool watch_points(std::size_t n, double skin, PointWatch& watch);
@@ -180,7 +193,8 @@ class RebuildTrigger {
   // (each its bodies of `cut`, joined in any order: the two largest of a set), on the steps where
   // the pair rule is likely read, so pair_exceeded answers from them without a serial loop.
   // forget_point_margins (outside any region) drops the last step's first.
-  void keep_point_margins(const std::vector<Vec3>& x, TeamCut cut);
+  // `ghost` (a rank's, null: none): those bodies left out, their owners answer for them.
+  void keep_point_margins(const std::vector<Vec3>& x, TeamCut cut, const std::uint8_t* ghost = nullptr);
   void forget_point_margins() {
     points_kept_ = false;
     points_ = PairMargins{};

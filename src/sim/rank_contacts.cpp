@@ -72,13 +72,13 @@ bool RankContacts::lists_stale(const Drivers& drivers) {
     std::memcpy(&theirs, from.data(), sizeof theirs);
     asks.push_back(theirs);
   }
-  return decide(asks);
+  return decide(asks, drivers);
 }
 
 // One rank's request rebuilds every rank's lists, and so do two bodies anywhere that may have
 // closed their pair's skin (the pair rule over every rank's owned bodies: the same answer on
 // every rank, for any rank count); one rank's interrupt stops them all here.
-bool RankContacts::decide(const std::vector<Ask>& asks) {
+bool RankContacts::decide(const std::vector<Ask>& asks, const Drivers& drivers) {
   Requests any = 0;
   std::vector<PairMargins> margins;
   for (const Ask& a : asks) {
@@ -86,7 +86,26 @@ bool RankContacts::decide(const std::vector<Ask>& asks) {
     margins.push_back(a.margins);
   }
   stop_seen_ = (any >> 1) != 0;
-  return (any & 1) || pair_rule_exceeded(margins.data(), margins.size(), settings_.skin);
+  if (any & 1) return true;
+  const RuleVerdict verdict = rule_verdict(margins.data(), margins.size(), settings_.skin);
+  const bool past = std::any_of(margins.begin(), margins.end(), [](const PairMargins& m) { return m.past; });
+  if (past && settings_.spheres_only) engine_->pair_rule_read();  // the next steps' points keep their margins in the pass
+  if (verdict == RuleVerdict::measure) return measured_rule(drivers);
+  return verdict == RuleVerdict::rebuild;
+}
+
+// The pair rule from every rank's owned points measured now: a second meeting, on the first step
+// since a rebuild that some point passed skin/2 (the ranks' words carried no margins before it).
+bool RankContacts::measured_rule(const Drivers& drivers) {
+  std::vector<char> bytes;
+  append_record(bytes, engine_->owned_point_margins(store_.view(), drivers));
+  std::vector<PairMargins> all;
+  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+    PairMargins theirs;
+    std::memcpy(&theirs, from.data(), sizeof theirs);
+    all.push_back(theirs);
+  }
+  return pair_rule_exceeded(all.data(), all.size(), settings_.skin);
 }
 
 // Every rank holds every body and `whole`'s table (the start, a resume, after sync_bodies):
@@ -305,7 +324,7 @@ bool RankContacts::exchange_ghosts(const Drivers& drivers, double dt) {
   if (!mine.rebuild_here()) engine_->pose_listed(store_.view(), owned_listed_);  // no rebuild asked here
   link_.finish(out_, in_);
   unpack_parcels(dt);
-  const bool stale = fold_ ? fold_asks(mine) : lists_stale(drivers);
+  const bool stale = fold_ ? fold_asks(mine, drivers) : lists_stale(drivers);
   if (!stale) engine_->pose_listed(store_.view(), ghost_listed_);
   return stale;
 }
@@ -331,7 +350,7 @@ void RankContacts::unpack_parcels(double dt) {
 // other), so a step meets the other ranks once: `mine`, measured on the store with its ghosts a
 // step old (left out: their owners answer for them), and each landed parcel's word; the ghosts
 // are measured again once landed (the pair loop's skip test reads their bounds).
-bool RankContacts::fold_asks(const Ask& mine) {
+bool RankContacts::fold_asks(const Ask& mine, const Drivers& drivers) {
   std::vector<Ask> asks{mine};
   for (const Parcel& p : in_) {
     Ask theirs;
@@ -339,7 +358,7 @@ bool RankContacts::fold_asks(const Ask& mine) {
     asks.push_back(theirs);
   }
   engine_->remeasure(store_.view(), paired_ghosts_);
-  return decide(asks);
+  return decide(asks, drivers);
 }
 
 // The lists' bodies by kind, for exchange_ghosts' two parts of the poses.

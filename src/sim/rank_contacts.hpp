@@ -206,8 +206,9 @@ class RankContacts {
   Ask ask_here(const Drivers& drivers, bool ghosts_later);
   bool lists_stale(const Drivers& drivers);
   bool exchange_ghosts(const Drivers& drivers, double dt);
-  bool fold_asks(const Ask& mine);
-  bool decide(const std::vector<Ask>& asks);
+  bool fold_asks(const Ask& mine, const Drivers& drivers);
+  bool decide(const std::vector<Ask>& asks, const Drivers& drivers);
+  bool measured_rule(const Drivers& drivers);
   void redistribute(Bodies& bodies, const ContactEngine& whole);
   void spread_landed();
   void migrate_bodies();

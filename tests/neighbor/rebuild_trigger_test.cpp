@@ -508,5 +508,67 @@ TEST_CASE("points' margins kept on a team answer the pair rule as margins' own l
   CHECK(by_shift > 10);
 }
 
+// A rank's part of points (a sphere scene's): measured margins (kept in its pass, or its serial
+// loop) where `measured`, else only whether one of its bodies passed skin/2 (its pass's test).
+PairMargins point_part(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, const std::vector<int>& owner,
+                       int part, double skin, double shift, bool measured, bool kept) {
+  const std::vector<Quat> q(x0.size(), Quat::Identity());
+  RebuildTrigger t;
+  t.mark_built(x0, q, true);
+  std::vector<std::uint8_t> ghost(x0.size());
+  for (std::size_t i = 0; i < ghost.size(); ++i) ghost[i] = owner[i] != part;
+  PairMargins m;
+  if (measured && kept) t.keep_point_margins(x, {}, ghost.data());
+  if (measured) m = t.point_margins(x, skin, shift, ghost.data());
+  else m.exact = false;
+  bool past_half = false;  // the pass's test of its owned bodies
+  for (std::size_t i = 0; i < x.size(); ++i) past_half = past_half || (!ghost[i] && moved_past(x[i], x0[i], 0.5 * skin));
+  m.past = past_half || shift > 0.5 * skin;
+  return m;
+}
+
+TEST_CASE("ranks of points decide as one process: margins measured only once some point passed skin/2", "[rebuild]") {
+  const double skin = 0.125;  // m
+  std::mt19937_64 rng(40);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int keep = 0, rebuild = 0, measure = 0;
+  for (int trial = 0; trial < 800; ++trial) {
+    const std::size_t n = 2 + trial % 11;
+    const int parts = 2 + trial % 3;
+    std::vector<Vec3> x0(n), x(n);
+    std::vector<int> owner(n);
+    const double reach = trial % 2 ? 0.45 : 0.7;  // of the skin: half the trials every point under skin/2
+    for (std::size_t i = 0; i < n; ++i) {
+      x0[i] = Vec3(double(i), 0.0, 0.0);
+      x[i] = x0[i] + Vec3(0.0, reach * skin * unit(rng), 0.0);
+      owner[i] = int(rng() % parts);
+    }
+    if (trial % 13 == 0) x[rng() % n].z() = std::nan("");
+    const double shift = trial % 7 == 0 ? 0.6 * skin * unit(rng) : 0.0;  // m
+    std::vector<PairMargins> m;
+    for (int p = 0; p < parts; ++p) m.push_back(point_part(x0, x, owner, p, skin, shift, trial % 3 == 0, trial % 2 == 0));
+    const std::vector<Quat> q(n, Quat::Identity());
+    RebuildTrigger one;  // one process: skin/2 first, then the pair rule (ContactEngine::lists_past_skin)
+    one.mark_built(x0, q, true);
+    const bool past = one.needs_rebuild(x, q, std::vector<double>(n, 0.0), skin) || shift > 0.5 * skin;
+    const bool answer = past && one.pair_exceeded(x, skin, shift);
+    INFO("trial " << trial);
+    bool got = false;
+    switch (rule_verdict(m.data(), m.size(), skin)) {
+      case RuleVerdict::keep: ++keep; break;
+      case RuleVerdict::rebuild: ++rebuild, got = true; break;
+      case RuleVerdict::measure: {  // the second meeting: every part's margins measured
+        ++measure;
+        for (int p = 0; p < parts; ++p) m[p] = point_part(x0, x, owner, p, skin, shift, true, false);
+        got = pair_rule_exceeded(m.data(), m.size(), skin);
+      }
+    }
+    CHECK(got == answer);
+  }
+  CHECK(keep > 100);  // every path met often
+  CHECK(rebuild > 100);
+  CHECK(measure > 100);
+}
+
 }  // namespace
 }  // namespace polydem

@@ -151,6 +151,22 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
   }
 }
 
+TEST_CASE("A pile of spheres over 2 and 3 thread ranks rebuilds at one process's steps: the pair rule over points") {
+  Pile p;
+  for (BodySpec& b : p.specs) b.shape = "sphere";  // points: each rank's pass tests skin/2, the rule measured after
+  const int kSteps = steps_to_contacts(p, 120, 400);
+  const Outcome one = run(p, kSteps, nullptr);
+  REQUIRE(one.rebuilds > 5);
+  for (int n : {2, 3}) {
+    const std::vector<Outcome> got = over_ranks(p, kSteps, n);
+    for (int r = 0; r < n; ++r) {
+      INFO(n << " ranks, rank " << r);
+      require_same(one, got[r]);
+      CHECK(got[r].rebuilds == one.rebuilds);  // skin/2 a point on the ranks rebuilt more often
+    }
+  }
+}
+
 TEST_CASE("Drag and fluid forces over 2 and 3 thread ranks act on each rank's bodies with one process's bits") {
   // The pile in air drag and a water grid over its lower half (friction against a slow flow,
   // buoyancy, the void fraction): bodies leave and enter the grid, some straddle its faces.
