@@ -245,4 +245,5 @@ forces:
 output: {{csv_every: "1 s", checkpoint_every: "1 s", contacts: false}}""")
 
 
-main()
+if __name__ == "__main__":
+    main()
