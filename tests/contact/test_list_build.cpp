@@ -125,8 +125,10 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
   const int threads_before = omp_get_max_threads();
   // Each block matches its pairs to the kept searches on its own; the list and the searches are
   // laid out on two threads at once and copied on the team.
+  std::vector<std::size_t> recalled_at_one;  // per rebuild, at 1 thread: every team keeps the same searches
   for (int threads : {1, 2, 3, 4}) {
     omp_set_num_threads(threads);
+    std::vector<std::size_t> recalled_each;
     std::vector<Posed> bodies = random_bodies(shapes, 60);
     std::vector<double> reach;  // m
     for (const Posed& b : bodies) reach.push_back(core_reach(b));
@@ -148,6 +150,7 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
       PairList got;
       memory.find(near, posed, {x.data(), q.data(), reach.data()}, range, got);
       check_same_list(got, want);
+      recalled_each.push_back(memory.recalled());
       if (rebuild > 0) {
         recalled += memory.recalled();
         searched_again += memory.searched();
@@ -164,6 +167,8 @@ TEST_CASE("remembered searches give the list a new search gives, rebuild after r
     }
     CHECK(recalled > 0);        // searches kept
     CHECK(searched_again > 0);  // and made anew
+    if (threads == 1) recalled_at_one = recalled_each;
+    CHECK(recalled_each == recalled_at_one);
   }
   omp_set_num_threads(threads_before);
 }
