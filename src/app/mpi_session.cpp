@@ -63,6 +63,18 @@ class MpiLink final : public RankLink {
   std::vector<std::vector<char>> gather(const std::vector<char>& mine, int root) const override {
     return collect(mine, root);
   }
+  std::vector<std::vector<char>> all_gather_same(const std::vector<char>& mine) const override {
+    const int n = int(mine.size());
+    const TimedCall timed = timer(LinkTimes::kGather);
+    ++counts_.collectives;
+    counts_.collective_bytes += mine.size();
+    std::vector<int> offsets(ranks_ + 1);
+    for (int r = 0; r <= ranks_; ++r) offsets[r] = r * n;
+    std::vector<char> all(std::size_t(offsets[ranks_]) + 1);  // + 1: data() of an empty gather
+    MPI_Allgather(mine.data(), n, MPI_CHAR, all.data(), n, MPI_CHAR, MPI_COMM_WORLD);
+    counts_.collective_bytes_in += std::uint64_t(offsets[ranks_] - n);
+    return split(all, offsets);
+  }
   void post(const std::vector<Parcel>& out, std::vector<Parcel>& in) const override {
     pending_.resize(out.size() + in.size());
     for (std::size_t k = 0; k < in.size(); ++k)

@@ -30,11 +30,23 @@ struct RowCursor {
   const std::vector<std::uint32_t>& ids;
   std::size_t last = 0;
   std::size_t at(std::uint32_t g) {
-    if (last < ids.size() && ids[last] > g) last = 0;  // out of order: search all
+    if (last > 0 && ids[last - 1] >= g) last = 0;  // out of order: search all
     return last = after(last, g);
   }
+  // lower_bound's answer, galloping from `row` (a pair's bodies are near in id: the body order is
+  // spatial), so a search costs the log of the distance, not of the store.
   std::size_t after(std::size_t row, std::uint32_t g) const {
-    return std::size_t(std::lower_bound(ids.begin() + std::ptrdiff_t(row), ids.end(), g) - ids.begin());
+    const std::size_t n = ids.size();
+    std::size_t lo = row, step = 1;  // every id in [row, lo) is below g
+    while (lo < n && ids[lo] < g) {
+      const std::size_t hi = std::min(n, lo + step);
+      if (hi == n || ids[hi] >= g)  // g's place in (lo, hi]
+        return std::size_t(std::lower_bound(ids.begin() + std::ptrdiff_t(lo + 1), ids.begin() + std::ptrdiff_t(hi), g) -
+                           ids.begin());
+      lo = hi;
+      step *= 2;
+    }
+    return lo;
   }
 };
 

@@ -67,7 +67,7 @@ bool RankContacts::lists_stale(const Drivers& drivers) {
   std::vector<char> bytes;
   append_record(bytes, mine);
   std::vector<Ask> asks;
-  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+  for (const std::vector<char>& from : link_.all_gather_same(bytes)) {
     Ask theirs;
     std::memcpy(&theirs, from.data(), sizeof theirs);
     asks.push_back(theirs);
@@ -100,7 +100,7 @@ bool RankContacts::measured_rule(const Drivers& drivers) {
   std::vector<char> bytes;
   append_record(bytes, engine_->owned_point_margins(store_.view(), drivers));
   std::vector<PairMargins> all;
-  for (const std::vector<char>& from : link_.all_gather(bytes)) {
+  for (const std::vector<char>& from : link_.all_gather_same(bytes)) {
     PairMargins theirs;
     std::memcpy(&theirs, from.data(), sizeof theirs);
     all.push_back(theirs);

@@ -42,6 +42,11 @@ class RankLink {
   virtual int ranks() const = 0;
   // Every rank's `mine`, in rank order, on every rank (a collective: all ranks call it).
   virtual std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) const = 0;
+  // all_gather where every rank's `mine` has the same size (fixed records: the step's decision,
+  // a failing id): one message each way, no sizes first. By default all_gather.
+  virtual std::vector<std::vector<char>> all_gather_same(const std::vector<char>& mine) const {
+    return all_gather(mine);
+  }
   // Every rank's `mine`, in rank order, on rank `root` only (none elsewhere; a collective):
   // what only rank 0 reads (output). By default an all_gather whose copies are dropped.
   virtual std::vector<std::vector<char>> gather(const std::vector<char>& mine, int root) const {

@@ -114,7 +114,7 @@ long least_over_ranks(const RankLink& link, long mine) {
   std::vector<char> bytes;
   append_record(bytes, std::int64_t(mine));
   long least = -1;
-  for (const std::vector<char>& from : link.all_gather(bytes)) {
+  for (const std::vector<char>& from : link.all_gather_same(bytes)) {
     std::int64_t b = -1;
     std::memcpy(&b, from.data(), sizeof b);
     if (b >= 0 && (least < 0 || b < least)) least = long(b);

@@ -140,3 +140,21 @@ TEST_CASE("a rank's share laid out in one pass is the share of the table", "[che
     }
   }
 }
+
+TEST_CASE("a row cursor's galloping search finds lower_bound's row from any start", "[checkpoint][mpi]") {
+  std::mt19937_64 rng(40);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::uint32_t> ids(std::size_t(rng() % 200));  // increasing global ids with gaps
+    std::uint32_t id = 0;
+    for (std::uint32_t& g : ids) g = id += 1 + std::uint32_t(rng() % 3);
+    RowCursor rows{ids};
+    for (int ask = 0; ask < 50; ++ask) {
+      const std::size_t row = ids.empty() ? 0 : std::size_t(rng() % (ids.size() + 1));
+      const std::uint32_t g = std::uint32_t(rng() % (id + 3));
+      const auto from = ids.begin() + std::ptrdiff_t(row);
+      INFO("trial " << trial << ", row " << row << ", id " << g);
+      CHECK(rows.after(row, g) == std::size_t(std::lower_bound(from, ids.end(), g) - ids.begin()));
+      CHECK(rows.at(g) == std::size_t(std::lower_bound(ids.begin(), ids.end(), g) - ids.begin()));
+    }
+  }
+}
