@@ -22,11 +22,9 @@ python3 "$tool" 1 "$pile" "$here/../../shapes/platonic.shp" "$tmp/b1.csv" "$tmp/
     > "$tmp/a.log" 2>&1 || { cat "$tmp/a.log"; fail "the pile's resume"; }
 "$polydem" run "$tmp/t1.yaml" --resume "$tmp/t1.bin" --force --out "$tmp/b" --threads 1 --until "$(until_after 300)" \
     > "$tmp/b.log" 2>&1 || { cat "$tmp/b.log"; fail "one tile's resume"; }
-python3 - "$tool" "$tmp"/a/checkpoint_*.bin "$tmp"/b/checkpoint_*.bin <<'EOF' || fail "one tile ends on other bits than the pile"
-import importlib.util, sys
-spec = importlib.util.spec_from_file_location("tile_pile", sys.argv[1])
-tile = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(tile)
+PYTHONPATH="$(dirname "$tool")" python3 - "$tool" "$tmp"/a/checkpoint_*.bin "$tmp"/b/checkpoint_*.bin <<'EOF' || fail "one tile ends on other bits than the pile"
+import sys
+import tile_pile as tile
 a, b = tile.read_pile(sys.argv[2]), tile.read_pile(sys.argv[3])
 assert a["body_contacts"][0], "the pile has no contacts between bodies"
 for key in ("ids", "state", "driver_fields"):
@@ -40,11 +38,9 @@ EOF
 python3 "$tool" 2 "$pile" "$here/../../shapes/platonic.shp" "$tmp/b2.csv" "$tmp/t2.bin" > "$tmp/t2.yaml"
 "$polydem" run "$tmp/t2.yaml" --resume "$tmp/t2.bin" --force --out "$tmp/c" --threads 1 --until "$(until_after 300)" \
     > "$tmp/c.log" 2>&1 || { cat "$tmp/c.log"; fail "2 x 2 tiles' resume"; }
-python3 - "$tool" "$tmp"/b/checkpoint_*.bin "$tmp"/c/checkpoint_*.bin <<'EOF' || fail "2 x 2 tiles are not four piles"
-import importlib.util, struct, sys
-spec = importlib.util.spec_from_file_location("tile_pile", sys.argv[1])
-tile = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(tile)
+PYTHONPATH="$(dirname "$tool")" python3 - "$tool" "$tmp"/b/checkpoint_*.bin "$tmp"/c/checkpoint_*.bin <<'EOF' || fail "2 x 2 tiles are not four piles"
+import struct, sys
+import tile_pile as tile
 one, four = tile.read_pile(sys.argv[2]), tile.read_pile(sys.argv[3])
 count = lambda p, which: len(p[which][0]) // tile.kContactBytes
 assert len(four["ids"]) == 4 * len(one["ids"]) and four["drivers"] == 6, (len(four["ids"]), four["drivers"])
