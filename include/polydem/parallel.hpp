@@ -41,6 +41,16 @@ inline void barrier_unless_own_region(bool own_region) {
   }
 }
 
+// Inside a team: `first` on thread 0 and `second` on thread 1 (both on thread 0 in a team of one,
+// or outside any region), with no barrier after them: two serial tasks the other thread would
+// otherwise wait through.
+template <class First, class Second>
+void on_two_threads(const First& first, const Second& second) {
+  const int t = omp_get_thread_num(), second_on = omp_get_num_threads() > 1 ? 1 : 0;
+  if (t == 0) first();
+  if (t == second_on) second();
+}
+
 // Runs two independent tasks (each writes only its own outputs) at once on two threads of a region
 // of their own when `worth_waking` and two threads are allowed, else `first` then `second` here
 // (inside a team too: its loops are not to be split by one thread): the same results either way.
@@ -53,11 +63,7 @@ void two_tasks(bool worth_waking, const First& first, const Second& second) {
     return;
   }
 #pragma omp parallel num_threads(2)
-  {
-    const int t = omp_get_thread_num(), second_on = omp_get_num_threads() > 1 ? 1 : 0;  // a team of one does both
-    if (t == 0) first();
-    if (t == second_on) second();
-  }
+  on_two_threads(first, second);
 }
 
 // Items of a thousand instructions or more (a polyhedron's driver candidates, ~800 a wall pair,

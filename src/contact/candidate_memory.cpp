@@ -123,14 +123,13 @@ void CandidateMemory::find(const std::vector<BodyPair>& near, const std::vector<
     }
     // The list's layout and the memory's on two threads at once (a team of one does both): two
     // serial stretches the other thread waited through (~0.19e6 instructions a pour's rebuild).
-    const int t = omp_get_thread_num(), second = omp_get_num_threads() > 1 ? 1 : 0;
-    if (t == 0) at = lay_out_blocks(blocks, list);
-    if (t == second) {
-      // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang refuses a
-      // reduction over a lambda's captured reference)
-      recalled_ = std::size_t(std::count_if(from.begin(), from.end(), [](std::int64_t f) { return f >= 0; }));
-      next = laid_out(from, made);
-    }
+    on_two_threads([&] { at = lay_out_blocks(blocks, list); },
+                   [&] {
+                     // kept searches: from[k] >= 0 (counted here, not reduced in the loop: clang
+                     // refuses a reduction over a lambda's captured reference)
+                     recalled_ = std::size_t(std::count_if(from.begin(), from.end(), [](std::int64_t f) { return f >= 0; }));
+                     next = laid_out(from, made);
+                   });
 #pragma omp barrier
 #pragma omp for schedule(static) nowait
     for (std::size_t blk = 0; blk < n_blocks; ++blk) copy_block(blocks, blk, at, list);

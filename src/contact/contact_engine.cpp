@@ -257,15 +257,15 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   // One team for the old lists' active parts and the skins: the two lists' parts on two threads at
   // once (a team of one does both), ~0.12e6 instructions a pour's rebuild the other thread waited through.
   in_team(bodies.size() >= kParallelMinItems, [&] {
-    const int t = omp_get_thread_num(), second = omp_get_num_threads() > 1 ? 1 : 0;
-    if (t == 0) {
-      // active_part keeps the pairs with an active slot: any other's energy is counted now (none
-      // after a step here: flush_ended took them). Both flushes here: flushed_ is one sum.
-      flush_idle(body_list_, bodies.ghost);
-      flush_idle(driver_list_, bodies.ghost);  // its idle pairs, not active_part's: no pair read by both
-      old_body = active_part(body_list_);
-    }
-    if (t == second) old_driver = active_part(driver_list_);
+    on_two_threads(
+        [&] {
+          // active_part keeps the pairs with an active slot: any other's energy is counted now (none
+          // after a step here: flush_ended took them). Both flushes here: flushed_ is one sum.
+          flush_idle(body_list_, bodies.ghost);
+          flush_idle(driver_list_, bodies.ghost);  // its idle pairs, not active_part's: no pair read by both
+          old_body = active_part(body_list_);
+        },
+        [&] { old_driver = active_part(driver_list_); });
     choose_skins(bodies);
   });
   body_list_ = PairList{};  // freed before the new lists are built
