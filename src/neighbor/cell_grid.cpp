@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include <omp.h>
 
@@ -108,32 +107,23 @@ void CellGrid::link() {
   }
 }
 
-// A counting sort by cell id, stable in member order, each thread of the team on a run of cells: it
-// counts their members (reading every member's cell) and lays them out after its run's start...
-std::vector<std::uint32_t> CellGrid::count_cells() {
-  const std::size_t t = std::size_t(omp_get_thread_num()), team = std::size_t(omp_get_num_threads());
-  const std::size_t first = cells * t / team, last = cells * (t + 1) / team;  // this thread's cells
-  std::vector<std::uint32_t> fill(last - first, 0);  // its cells' counts, then their first sphere in the run
-  for (const std::uint32_t c : member_cell)
-    if (c >= first && c < last) ++fill[c - first];
-  std::uint32_t run = 0;  // spheres in this thread's cells
-  for (std::uint32_t& count : fill) run += std::exchange(count, run);
-  thread_total[t] = run;
-  return fill;
+// The spheres sorted by cell id (team_sort.hpp), each thread of the team on a run of cells: it
+// counts their members (reading every member's cell) ...
+KeyRun CellGrid::count_cells() {
+  KeyRun run = count_run(cells, [this](const auto& count) {
+    for (const std::uint32_t c : member_cell) count(c);
+  });
+  thread_total[std::size_t(omp_get_thread_num())] = run.items;
+  return run;
 }
 
-// ... then, once every thread counted, moves its run after the runs before and fills its cells
-// (writing only their spheres: the serial sort's layout, at any team).
+// ... then, once every thread counted, fills its cells (writing only their spheres).
 void CellGrid::place(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                     const std::vector<std::uint32_t>& members, std::vector<std::uint32_t>& fill) {
-  const std::size_t t = std::size_t(omp_get_thread_num()), team = std::size_t(omp_get_num_threads());
-  const std::size_t first = cells * t / team, last = cells * (t + 1) / team;
-  std::uint32_t before = 0;  // spheres in the cells of the threads before this one
-  for (std::size_t u = 0; u < t; ++u) before += thread_total[u];
-  for (std::size_t c = first; c < last; ++c) cell_start[c] = fill[c - first] += before;
+                     const std::vector<std::uint32_t>& members, KeyRun& run) {
+  place_run(run, thread_total, cell_start.data());
   for (std::size_t k = 0; k < members.size(); ++k) {
-    if (member_cell[k] < first || member_cell[k] >= last) continue;
-    const std::uint32_t at = fill[member_cell[k] - first]++;
+    if (!run.holds(member_cell[k])) continue;
+    const std::uint32_t at = run.take(member_cell[k]);
     const std::uint32_t i = members[k];
     spheres[at] = {centers[i].x(), centers[i].y(), centers[i].z(), radii[i]};
     sorted_id[at] = i;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "neighbor/cell_table.hpp"
+#include "neighbor/team_sort.hpp"
 #include "polydem/math.hpp"
 
 namespace polydem {
@@ -30,9 +31,9 @@ class CellGrid {
   void number(const std::vector<Vec3>& centers, const std::vector<std::uint32_t>& members);
   void lay_out();
   void link();
-  std::vector<std::uint32_t> count_cells();
+  KeyRun count_cells();
   void place(const std::vector<Vec3>& centers, const std::vector<double>& radii,
-             const std::vector<std::uint32_t>& members, std::vector<std::uint32_t>& fill);
+             const std::vector<std::uint32_t>& members, KeyRun& run);
 
   std::size_t cell_count() const { return cells; }
   bool hashed() const { return !dense; }

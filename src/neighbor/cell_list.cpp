@@ -227,13 +227,13 @@ bool CellList::bin_levels(const std::vector<Vec3>& centers, const std::vector<do
       cell_offset.push_back(cell_offset.back() + grids[g].cell_count());
     }
   }
-  std::vector<std::uint32_t> fill[kMaxLevels];  // this thread's cells' first spheres, by grid
+  KeyRun runs[kMaxLevels];  // this thread's cells and their first spheres, by grid
   for (std::size_t g = 0; g < used_levels; ++g) {
     grids[g].link();
-    fill[g] = grids[g].count_cells();
+    runs[g] = grids[g].count_cells();
   }
 #pragma omp barrier
-  for (std::size_t g = 0; g < used_levels; ++g) grids[g].place(centers, radii, members[g], fill[g]);
+  for (std::size_t g = 0; g < used_levels; ++g) grids[g].place(centers, radii, members[g], runs[g]);
 #pragma omp barrier
   return true;
 }
@@ -296,28 +296,18 @@ void CellList::merge_pairs(std::size_t n, SearchTeam& team, std::vector<BodyPair
     row_start.resize(n + 1);
     row_start[n] = std::uint32_t(total);
   }
-  const std::size_t t = std::size_t(omp_get_thread_num()), threads = std::size_t(omp_get_num_threads());
-  const std::size_t first = n * t / threads, last = n * (t + 1) / threads;  // this thread's rows
-  std::vector<std::uint32_t> fill(last - first, 0);  // its rows' counts, then their next free pair
-  for (const auto& buffer : thread_pairs)
-    for (const BodyPair& p : buffer)
-      if (p.i >= first && p.i < last) ++fill[p.i - first];
-  std::uint32_t run = 0;  // pairs in this thread's rows
-  for (std::size_t i = first; i < last; ++i) {
-    const std::uint32_t count = fill[i - first];
-    fill[i - first] = run;
-    run += count;
-  }
-  team.rows[t] = run;
+  KeyRun run = count_run(n, [this](const auto& count) {
+    for (const auto& buffer : thread_pairs)
+      for (const BodyPair& p : buffer) count(p.i);
+  });
+  team.rows[std::size_t(omp_get_thread_num())] = run.items;
 #pragma omp barrier
-  std::uint32_t before = 0;  // pairs in the rows of the threads before this one
-  for (std::size_t u = 0; u < t; ++u) before += team.rows[u];
-  for (std::size_t i = first; i < last; ++i) row_start[i] = fill[i - first] += before;
+  place_run(run, team.rows, row_start.data());
   for (const auto& buffer : thread_pairs)
     for (const BodyPair& p : buffer)
-      if (p.i >= first && p.i < last) out[fill[p.i - first]++] = p;
-  for (std::size_t i = first; i < last; ++i) {  // row i ends at fill (the next thread's starts may be unwritten)
-    std::sort(out.begin() + row_start[i], out.begin() + fill[i - first],
+      if (run.holds(p.i)) out[run.take(p.i)] = p;
+  for (std::size_t i = run.first; i < run.last; ++i) {  // row i ends at its next slot (the next thread's starts may be unwritten)
+    std::sort(out.begin() + row_start[i], out.begin() + run.next[i - run.first],
               [](const BodyPair& a, const BodyPair& b) { return a.j < b.j; });
   }
 }
