@@ -7,19 +7,32 @@
 
 namespace polydem {
 
+void append_pair_slots(const PairList& list, std::size_t k, const std::vector<std::uint32_t>& ids, bool driver,
+                       std::vector<TableSlot>& out) {
+  const BodyPair p = list.pairs[k];
+  const std::size_t first = out.size();
+  for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
+    if (list.active[s])
+      out.push_back({ids[p.i], driver ? p.j : ids[p.j], list.features[s], {list.history(s), {}},
+                     list.recording ? list.record(s) : SlotRecord{}});
+  if (out.size() > first) out[first].slot.pending = list.open_energy(k);
+}
+
 std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& store, bool driver) {
   std::vector<TableSlot> out;
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    const BodyPair p = list.pairs[k];
-    if (store.ghost[p.i]) continue;  // the owner of i answers for the pair
-    const std::size_t first = out.size();
-    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
-      if (list.active[s])
-        out.push_back({store.global_id[p.i], driver ? p.j : store.global_id[p.j], list.features[s],
-                       {list.history(s), {}}, list.recording ? list.record(s) : SlotRecord{}});
-    if (out.size() > first) out[first].slot.pending = list.open_energy(k);
-  }
+  for (std::size_t k = 0; k < list.size(); ++k)
+    if (!store.ghost[list.pairs[k].i]) append_pair_slots(list, k, store.global_id, driver, out);  // the owner of i answers
   return out;
+}
+
+std::vector<std::uint32_t> rows_now(const std::vector<std::uint32_t>& was, const std::vector<std::uint32_t>& now) {
+  std::vector<std::uint32_t> row(was.size(), kNotHeld);
+  for (std::size_t a = 0, b = 0; a < was.size() && b < now.size();) {
+    if (was[a] < now[b]) ++a;
+    else if (now[b] < was[a]) ++b;
+    else row[a++] = std::uint32_t(b++);
+  }
+  return row;
 }
 
 namespace {
@@ -143,6 +156,57 @@ PairList local_table(const std::vector<TableSlot>& slots, const std::vector<std:
   if (kept) mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
   finish(mine);
   return mine;
+}
+
+namespace {
+
+// Pair k of `from` with its slots appended to `to`.
+void append_pair(const PairList& from, std::size_t k, PairList& to) {
+  to.pairs.push_back(from.pairs[k]);
+  for (std::uint32_t s = from.slot_begin[k]; s < from.slot_begin[k + 1]; ++s) {
+    to.features.push_back(from.features[s]);
+    to.slots.push_back(from.slots[s]);
+    to.records.push_back(from.records[s]);
+  }
+  to.slot_begin.push_back(std::uint32_t(to.slots.size()));
+}
+
+}  // namespace
+
+PairList kept_table(const PairList& list, const std::vector<std::uint32_t>& row_now,
+                    const std::vector<std::uint8_t>& ghost, bool driver) {
+  PairList mine = reserved(list.slot_count());
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const BodyPair p = list.pairs[k];
+    const std::uint32_t i = row_now[p.i], j = driver ? p.j : row_now[p.j];
+    if (i == kNotHeld || j == kNotHeld || (ghost[i] && (driver || ghost[j]))) continue;  // not listed here again
+    bool first = true;  // the pair's pending energy goes on its first active slot (active_slots')
+    for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
+      if (!list.active[s]) continue;
+      mine.features.push_back(list.features[s]);
+      mine.slots.emplace_back(list.history(s), first ? list.open_energy(k) : EnergyParts{});
+      mine.records.push_back(list.recording ? list.record(s) : SlotRecord{});
+      first = false;
+    }
+    if (first) continue;  // no active slot: nothing to hand over
+    mine.pairs.push_back({i, j});
+    mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
+  }
+  finish(mine);
+  return mine;
+}
+
+PairList merged_tables(const PairList& a, const PairList& b) {
+  PairList both = reserved(a.slot_count() + b.slot_count());
+  const auto before = [](BodyPair x, BodyPair y) { return x.i != y.i ? x.i < y.i : x.j < y.j; };
+  std::size_t ka = 0, kb = 0;
+  while (ka < a.size() || kb < b.size()) {
+    const bool from_a = kb == b.size() || (ka < a.size() && before(a.pairs[ka], b.pairs[kb]));
+    if (from_a) append_pair(a, ka++, both);
+    else append_pair(b, kb++, both);
+  }
+  finish(both);
+  return both;
 }
 
 }  // namespace polydem

@@ -52,6 +52,25 @@ struct RowCursor {
 
 // The active slots of `list` (local indices of `store`) this rank answers for.
 std::vector<TableSlot> active_slots(const PairList& list, const LocalStore& store, bool driver);
+// Appends pair k's active slots of `list` (ids: the local rows' global ids) to `out`, the
+// pair's pending energy on its first active slot (active_slots' record of one pair).
+void append_pair_slots(const PairList& list, std::size_t k, const std::vector<std::uint32_t>& ids, bool driver,
+                       std::vector<TableSlot>& out);
+
+// A row of the store before a rebuild that the new store does not hold (rows_now).
+constexpr std::uint32_t kNotHeld = ~std::uint32_t(0);
+// Each row of a store of global ids `was` (increasing) in one of ids `now` (increasing), or kNotHeld.
+std::vector<std::uint32_t> rows_now(const std::vector<std::uint32_t>& was, const std::vector<std::uint32_t>& now);
+
+// A rank's staying pairs at a rebuild, without the table's round trip: the pairs of `list` (its
+// lists, rows of the store before) with an active slot whose bodies `row_now` finds both in the
+// new store, one of them owned there (`ghost`: the new store's flags; a driver pair: its body
+// owned), relabelled and laid out as local_table lays out their active_slots. A pair across the
+// cut is computed on both sides alike, so the copy here is the answering rank's, bit for bit.
+PairList kept_table(const PairList& list, const std::vector<std::uint32_t>& row_now,
+                    const std::vector<std::uint8_t>& ghost, bool driver);
+// Two tables of one rank's rows (no pair in both) as one, in pair order (kept and landed slots).
+PairList merged_tables(const PairList& a, const PairList& b);
 
 // The table of all ranks' slots: pairs in increasing (i, j), each pair's slots from one rank in key order.
 PairList table_of(const std::vector<TableSlot>& slots);

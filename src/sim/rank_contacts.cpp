@@ -167,16 +167,34 @@ void RankContacts::migrate_bodies() {
   if (bad >= 0) throw non_finite_position(std::size_t(bad));  // the same message on every rank
   const std::vector<std::uint32_t> owned_rows = store_.owned_rows();
   recut_if_unbalanced(owned_rows);
-  Handover h = migrate(link_, cut_, store_, active_slots(engine_->body_pairs(), store_, false),
-                       active_slots(engine_->driver_pairs(), store_, true));
+  Handover h = migrate_lists(link_, cut_, store_, engine_->body_pairs(), engine_->driver_pairs(), row_owners());
   const std::vector<std::uint32_t> was = std::move(store_.global_id);
   store_ = std::move(h.owned);
   plan_ = share_ghosts(link_, cut_, halo_, store_);
   // The pairs still local keep their searches: a pile's rebuild searches only its movers again.
   CandidateMemory searches = std::move(engine_->searches());
   searches.relabel(was, store_.global_id);
-  adopt_slots(h.body_slots, h.driver_slots);
+  // The pairs this rank held and lists again keep their slots here; the others came (migrate_lists).
+  const std::vector<std::uint32_t> row_now = rows_now(was, store_.global_id);
+  PairList body = merged_tables(kept_table(engine_->body_pairs(), row_now, store_.ghost, false),
+                                local_table(h.body_slots, store_.global_id, false));
+  PairList driver = merged_tables(kept_table(engine_->driver_pairs(), row_now, store_.ghost, true),
+                                  local_table(h.driver_slots, store_.global_id, true));
+  new_engine();
+  engine_->body_pairs() = std::move(body);
+  engine_->driver_pairs() = std::move(driver);
   engine_->searches() = std::move(searches);
+}
+
+// Each row's owner: this rank, or for a ghost some listed pair reads (narrow_parcels), the rank
+// its motion parcel comes from; -1 for the other ghosts.
+std::vector<int> RankContacts::row_owners() const {
+  std::vector<int> owner(store_.size(), -1);
+  for (std::size_t k = 0; k < store_.size(); ++k)
+    if (!store_.ghost[k]) owner[k] = link_.rank();
+  for (std::size_t k = 0; k < in_.size(); ++k)
+    for (std::uint32_t l : receive_local_[k]) owner[l] = in_[k].rank;
+  return owner;
 }
 
 // The smallest id of an owned body whose centre is not finite, or -1.

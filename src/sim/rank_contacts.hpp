@@ -212,6 +212,7 @@ class RankContacts {
   void redistribute(Bodies& bodies, const ContactEngine& whole);
   void spread_landed();
   void migrate_bodies();
+  std::vector<int> row_owners() const;
   long first_non_finite_position() const;
   void adopt(const PairList& body_table, const PairList& driver_table);
   void adopt_slots(const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver);

@@ -31,48 +31,87 @@ std::vector<int> near_parts(const DomainCut& cut, int p, double halo) {
 
 }  // namespace
 
-Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
-                 const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver) {
+namespace {
+
+// The slots each rank is sent (per rank: body pairs, driver pairs; global ids).
+struct SlotsTo {
+  std::vector<std::vector<TableSlot>> body, driver;
+  explicit SlotsTo(int ranks) : body(ranks), driver(ranks) {}
+};
+
+// Each owned row of `store` to its new owner `owner[row]` with `to`'s slots; the movers that come
+// merged with the kept rows, and the slots that come after this rank's own `to` ones (a collective).
+Handover send_movers(const RankLink& link, const LocalStore& store, const std::vector<int>& owner, SlotsTo to) {
   const int me = link.rank();
-  std::vector<int> owner(store.size());  // each row's new owner
-  for (std::size_t k = 0; k < store.size(); ++k) owner[k] = cut.owner(store.position[k]);
   std::vector<std::vector<std::uint32_t>> movers(link.ranks());  // store rows
-  std::vector<std::vector<TableSlot>> body_to(link.ranks()), driver_to(link.ranks());
   std::vector<std::uint32_t> kept;
   for (std::uint32_t k : store.owned_rows()) (owner[k] == me ? kept : movers[owner[k]]).push_back(k);
+  std::vector<Parcel> parcels;
+  for (int q = 0; q < link.ranks(); ++q) {
+    if (q == me || (movers[q].empty() && to.body[q].empty() && to.driver[q].empty())) continue;
+    Parcel p{q, {}};
+    append_bytes(p.bytes, pack_movers(store, movers[q]));
+    append_section(p.bytes, to.body[q]);
+    append_section(p.bytes, to.driver[q]);
+    parcels.push_back(std::move(p));
+  }
+  LocalStore landed;  // the movers that come, few: then merged with the kept rows, each field written once
+  Handover out;
+  out.body_slots = std::move(to.body[me]);  // each pair's slots from one rank: the old owner of i
+  out.driver_slots = std::move(to.driver[me]);
+  for (const Parcel& p : link.deliver(std::move(parcels))) {
+    std::size_t at = 0;
+    unpack_movers(read_section<char>(p.bytes, at), landed);
+    for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) out.body_slots.push_back(t);
+    for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) out.driver_slots.push_back(t);
+  }
+  landed.sort_by_id();
+  const auto ghosts = std::size_t(std::count(store.ghost.begin(), store.ghost.end(), std::uint8_t(1)));
+  out.owned.merge_of(store, kept, landed, ghosts + ghosts / 8 + 16);  // room for about as many ghosts as before
+  return out;
+}
+
+std::vector<int> new_owners(const DomainCut& cut, const LocalStore& store) {
+  std::vector<int> owner(store.size());  // each row's new owner
+  for (std::size_t k = 0; k < store.size(); ++k) owner[k] = cut.owner(store.position[k]);
+  return owner;
+}
+
+}  // namespace
+
+Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
+                 const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver) {
+  const std::vector<int> owner = new_owners(cut, store);
+  SlotsTo to(link.ranks());
   RowCursor rows{store.global_id};  // the slots come in pair order: i increasing, j > i
   for (const TableSlot& t : body) {  // a pair to both new owners: each lists it
     const std::size_t i = rows.at(t.i);
     const int to_i = owner[i], to_j = owner[rows.after(i, t.j)];
-    body_to[to_i].push_back(t);
-    if (to_j != to_i) body_to[to_j].push_back(t);
+    to.body[to_i].push_back(t);
+    if (to_j != to_i) to.body[to_j].push_back(t);
   }
   RowCursor driver_rows{store.global_id};
-  for (const TableSlot& t : driver) driver_to[owner[driver_rows.at(t.i)]].push_back(t);
-  std::vector<Parcel> parcels;
-  for (int q = 0; q < link.ranks(); ++q) {
-    if (q == me || (movers[q].empty() && body_to[q].empty() && driver_to[q].empty())) continue;
-    Parcel p{q, {}};
-    append_bytes(p.bytes, pack_movers(store, movers[q]));
-    append_section(p.bytes, body_to[q]);
-    append_section(p.bytes, driver_to[q]);
-    parcels.push_back(std::move(p));
+  for (const TableSlot& t : driver) to.driver[owner[driver_rows.at(t.i)]].push_back(t);
+  return send_movers(link, store, owner, std::move(to));
+}
+
+Handover migrate_lists(const RankLink& link, const DomainCut& cut, const LocalStore& store, const PairList& body,
+                       const PairList& driver, const std::vector<int>& was_owner) {
+  const int me = link.rank();
+  const std::vector<int> owner = new_owners(cut, store);
+  SlotsTo to(link.ranks());
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    const BodyPair p = body.pairs[k];
+    if (store.ghost[p.i]) continue;  // the owner of i answers for the pair
+    const int to_i = owner[p.i], to_j = owner[p.j], held = was_owner[p.j];  // this rank and j's owner hold it
+    if (to_i != me && to_i != held) append_pair_slots(body, k, store.global_id, false, to.body[to_i]);
+    if (to_j != to_i && to_j != me && to_j != held) append_pair_slots(body, k, store.global_id, false, to.body[to_j]);
   }
-  LocalStore landed;  // the movers that come, few: then merged with the kept rows, each field written once
-  std::vector<TableSlot> body_slots = std::move(body_to[me]), driver_slots = std::move(driver_to[me]);
-  for (const Parcel& p : link.deliver(std::move(parcels))) {
-    std::size_t at = 0;
-    unpack_movers(read_section<char>(p.bytes, at), landed);
-    for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) body_slots.push_back(t);
-    for (const TableSlot& t : read_section<TableSlot>(p.bytes, at)) driver_slots.push_back(t);
+  for (std::size_t k = 0; k < driver.size(); ++k) {
+    const std::uint32_t i = driver.pairs[k].i;
+    if (!store.ghost[i] && owner[i] != me) append_pair_slots(driver, k, store.global_id, true, to.driver[owner[i]]);
   }
-  landed.sort_by_id();
-  const auto ghosts = std::size_t(std::count(store.ghost.begin(), store.ghost.end(), std::uint8_t(1)));
-  Handover out;
-  out.owned.merge_of(store, kept, landed, ghosts + ghosts / 8 + 16);  // room for about as many ghosts as before
-  out.body_slots = std::move(body_slots);  // each pair's slots from one rank: the old owner of i
-  out.driver_slots = std::move(driver_slots);
-  return out;
+  return send_movers(link, store, owner, std::move(to));
 }
 
 GhostPlan share_ghosts(const RankLink& link, const DomainCut& cut, double halo, LocalStore& store) {

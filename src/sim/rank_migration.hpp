@@ -30,6 +30,13 @@ struct Handover {
 Handover migrate(const RankLink& link, const DomainCut& cut, const LocalStore& store,
                  const std::vector<TableSlot>& body, const std::vector<TableSlot>& driver);
 
+// The same from this rank's lists (local rows of `store`), without the table's round trip: a
+// pair goes only to the new owners of its bodies that did not hold it (`was_owner`: each
+// row's owner before, this rank for its owned rows; a listed ghost's is set), the others
+// keeping their own copy (kept_table); Handover's slots are the ones that came (a collective).
+Handover migrate_lists(const RankLink& link, const DomainCut& cut, const LocalStore& store, const PairList& body,
+                       const PairList& driver, const std::vector<int>& was_owner);
+
 // The plan of this rank's bodies in `store` (owned alone, increasing id): each goes, with its
 // id, ghost state and constants, to the ranks whose box lies within `halo` of it; the ghosts
 // that come join `store`, in id order (a collective). The same plan as plan_ghosts on every

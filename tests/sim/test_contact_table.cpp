@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 
 #include "sim/contact_table.hpp"
@@ -155,6 +156,114 @@ TEST_CASE("a row cursor's galloping search finds lower_bound's row from any star
       INFO("trial " << trial << ", row " << row << ", id " << g);
       CHECK(rows.after(row, g) == std::size_t(std::lower_bound(from, ids.end(), g) - ids.begin()));
       CHECK(rows.at(g) == std::size_t(std::lower_bound(ids.begin(), ids.end(), g) - ids.begin()));
+    }
+  }
+}
+
+namespace {
+
+template <class T>
+bool same_bytes(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+
+// Field by field (their padding aside), each double's bits.
+bool same_slot(const ContactSlot& a, const ContactSlot& b) {
+  const ContactHistory &x = a.history, &y = b.history;
+  return same_bytes(x.ft, y.ft) && same_bytes(x.fd, y.fd) && same_bytes(x.gap, y.gap) && same_bytes(x.weight, y.weight) &&
+         x.slipping == y.slipping && x.rolling_slipping == y.rolling_slipping && same_bytes(x.mr, y.mr) &&
+         same_bytes(a.pending, b.pending);  // EnergyParts: 4 doubles, no padding
+}
+
+// Slot by slot, bit for bit: the keys, the histories with their pending energies, the records.
+void check_bits(const PairList& got, const PairList& want) {
+  REQUIRE(got.pairs == want.pairs);
+  REQUIRE(got.slot_begin == want.slot_begin);
+  REQUIRE(got.slots.size() == want.slots.size());
+  REQUIRE(got.records.size() == want.records.size());
+  std::size_t wrong = 0;
+  for (std::size_t s = 0; s < got.slots.size(); ++s) {
+    const FeaturePair &a = got.features[s], &b = want.features[s];
+    const SlotRecord &r = got.records[s], &q = want.records[s];
+    wrong += a.type != b.type || a.a != b.a || a.b != b.b || !same_slot(got.slots[s], want.slots[s]) ||
+             !same_bytes(r.point, q.point) || !same_bytes(r.force, q.force) || !same_bytes(r.fn, q.fn);
+  }
+  CHECK(wrong == 0);
+  CHECK(got.active == want.active);
+}
+
+// A rank's dense list over a store of `ids`: pairs (i < j) of local rows, 1-3 slots each, some
+// inactive (a pair's first slot too: its pending energy, kept on that slot, then moves to the
+// first active one), each history, pending energy and record marked with its draw number.
+PairList random_list(std::mt19937_64& rng, std::size_t rows, std::size_t pairs) {
+  std::vector<BodyPair> drawn;
+  while (drawn.size() < pairs) {
+    const auto a = std::uint32_t(rng() % rows), b = std::uint32_t(rng() % rows);
+    if (a != b) drawn.push_back({std::min(a, b), std::max(a, b)});
+  }
+  std::sort(drawn.begin(), drawn.end(), [](BodyPair x, BodyPair y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
+  drawn.erase(std::unique(drawn.begin(), drawn.end(), [](BodyPair x, BodyPair y) { return x.i == y.i && x.j == y.j; }),
+              drawn.end());
+  PairList list;
+  list.slot_begin.push_back(0);
+  double mark = 0.0;
+  for (const BodyPair p : drawn) {
+    list.pairs.push_back(p);
+    for (std::uint16_t key = 0, n = std::uint16_t(1 + rng() % 3); key < n; ++key) {
+      list.features.push_back({PairType::vertex_vertex, key, 0});
+      ContactSlot slot;
+      slot.history.ft = Vec3(mark += 1.0, 0, 0);  // N
+      if (key == 0) slot.pending.net = mark;  // J, the pair's on its first slot
+      list.slots.push_back(slot);
+      list.records.push_back({Vec3(0, mark, 0), Vec3(0, 0, mark), mark});
+      list.active.push_back(std::uint8_t(rng() % 3 != 0));
+    }
+    list.slot_begin.push_back(std::uint32_t(list.slots.size()));
+  }
+  list.resize_results();
+  return list;
+}
+
+}  // namespace
+
+TEST_CASE("rows_now finds each row of a store in the next one, or none", "[checkpoint][mpi]") {
+  const std::vector<std::uint32_t> was{2, 3, 5, 8, 13}, now{1, 3, 4, 8, 9, 13, 20};
+  CHECK(rows_now(was, now) == std::vector<std::uint32_t>{kNotHeld, 1, kNotHeld, 3, 5});
+}
+
+TEST_CASE("a rank's kept pairs with the landed ones are the table the round trip gave", "[checkpoint][mpi]") {
+  // The round trip: every active slot of the old list as a table slot (append_pair_slots), with
+  // the landed ones, laid out over the new store (local_table), keeping the pairs with a body
+  // owned there; without it: the kept pairs relabelled (kept_table) merged with the landed ones.
+  std::mt19937_64 rng(41);
+  for (int draw = 0; draw < 60; ++draw) {
+    INFO("draw " << draw);
+    std::vector<std::uint32_t> was, now;  // the stores' global ids: half the old rows stay
+    for (std::uint32_t g = 0; g < 120; ++g) {
+      if (rng() % 3 != 0) was.push_back(g);
+      if (rng() % 2) now.push_back(g);
+    }
+    std::vector<std::uint8_t> ghost(now.size());
+    for (std::uint8_t& f : ghost) f = std::uint8_t(rng() % 2);
+    const PairList list = random_list(rng, was.size(), 200);
+    const auto held = [&](std::uint32_t g) { return std::binary_search(was.begin(), was.end(), g); };
+    const std::vector<std::vector<TableSlot>> drawn = random_pairs(rng, 40, 120);
+    for (bool driver : {false, true}) {
+      INFO((driver ? "driver pairs" : "body pairs"));
+      std::vector<TableSlot> landed;  // pairs the old store did not hold (a driver pair: its body)
+      for (const std::vector<TableSlot>& pair : drawn)
+        if (!held(pair[0].i) || (!driver && !held(pair[0].j))) landed.insert(landed.end(), pair.begin(), pair.end());
+      std::vector<TableSlot> round_trip;
+      for (std::size_t k = 0; k < list.size(); ++k) append_pair_slots(list, k, was, driver, round_trip);
+      const auto owned = [&](std::uint32_t g) {
+        const auto at = std::lower_bound(now.begin(), now.end(), g);
+        return at != now.end() && *at == g && !ghost[std::size_t(at - now.begin())];
+      };
+      std::erase_if(round_trip, [&](const TableSlot& t) { return !owned(t.i) && (driver || !owned(t.j)); });
+      const std::size_t kept = round_trip.size();
+      round_trip.insert(round_trip.end(), landed.begin(), landed.end());
+      const PairList want = local_table(round_trip, now, driver);
+      const PairList got = merged_tables(kept_table(list, rows_now(was, now), ghost, driver), local_table(landed, now, driver));
+      CHECK(kept > 0);
+      check_bits(got, want);
     }
   }
 }

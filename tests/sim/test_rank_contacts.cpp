@@ -12,9 +12,12 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <thread>
+#include <tuple>
 
 #include "pile.hpp"
+#include "sim/contact_table.hpp"
 #include "thread_link.hpp"
 
 using namespace polydem;
@@ -24,6 +27,51 @@ namespace {
 
 using polydem::test::same_bits;  // the arrays' (sim_fixtures.hpp), beside this one
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// A pair across the cut as one rank holds it at one step: its active slots in global ids
+// (append_pair_slots: histories, the pair's pending energy, records).
+struct HeldPair {
+  int step;
+  std::uint32_t i, j;
+  bool answers;  // this rank owns i
+  std::vector<TableSlot> slots;
+};
+
+template <class T>
+bool same_bytes(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+
+// Field by field (their padding aside), each double's bits.
+bool same_slot(const TableSlot& a, const TableSlot& b) {
+  const ContactHistory &x = a.slot.history, &y = b.slot.history;
+  const EnergyParts &e = a.slot.pending, &f = b.slot.pending;
+  return a.key.type == b.key.type && a.key.a == b.key.a && a.key.b == b.key.b && same_bytes(x.ft, y.ft) &&
+         same_bits(x.fd, y.fd) && same_bits(x.gap, y.gap) && same_bits(x.weight, y.weight) && x.slipping == y.slipping &&
+         x.rolling_slipping == y.rolling_slipping && same_bytes(x.mr, y.mr) && same_bits(e.net, f.net) &&
+         same_bits(e.sliding, f.sliding) && same_bits(e.rolling, f.rolling) && same_bits(e.patch, f.patch) &&
+         same_bytes(a.record.point, b.record.point) && same_bytes(a.record.force, b.record.force) &&
+         same_bits(a.record.fn, b.record.fn);
+}
+
+bool same_slots(const std::vector<TableSlot>& a, const std::vector<TableSlot>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t s = 0; s < a.size(); ++s)
+    if (!same_slot(a[s], b[s])) return false;
+  return true;
+}
+
+// The pairs across the cut this rank's lists hold at `step`, answering or not.
+std::vector<HeldPair> across(const RankContacts& rank, int step) {
+  std::vector<HeldPair> out;
+  const PairList& list = rank.lists()->body_pairs();
+  const LocalStore& store = rank.store();
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const BodyPair p = list.pairs[k];
+    if (store.ghost[p.i] == store.ghost[p.j]) continue;  // both owned here
+    HeldPair& h = out.emplace_back(HeldPair{step, store.global_id[p.i], store.global_id[p.j], !store.ghost[p.i], {}});
+    append_pair_slots(list, k, store.global_id, false, h.slots);
+  }
+  return out;
+}
 
 struct Outcome {
   Bodies bodies;
@@ -37,7 +85,10 @@ struct Outcome {
   std::size_t scene_bytes = 0;        // the scene's arrays (Bodies) before the gather
   std::size_t outside = 0;            // bodies outside the fluid grid (drag and fluid scenes)
   std::vector<double> alpha;          // the void fraction per cell, from the gathered bodies
+  std::vector<HeldPair> across;       // every kAcrossEvery steps, the pairs across the cut the rank lists
 };
+
+constexpr int kAcrossEvery = 5;  // steps
 
 Outcome outcome(Simulation& sim) {
   sim.sum_energy();  // a CSV row's energies from each rank's own bodies and pairs: no state gathered
@@ -59,10 +110,18 @@ Outcome outcome(Simulation& sim) {
 }
 
 // `open_kicks`: each step but the last leaves its closing kick to the next step's opening pass.
-Outcome run(const Pile& p, int steps, const RankLink* link, bool open_kicks = false) {
+// A rank's run keeps the pairs across its cut (Outcome::across) where `keep_across`.
+Outcome run(const Pile& p, int steps, const RankLink* link, bool open_kicks = false, bool keep_across = false) {
   Simulation sim(p.scene, p.lib, p.specs, link);
-  for (int s = 0; s < steps; ++s) sim.step(open_kicks && s + 1 < steps);
-  return outcome(sim);
+  std::vector<HeldPair> held;
+  for (int s = 1; s <= steps; ++s) {
+    sim.step(open_kicks && s < steps);
+    if (keep_across && s % kAcrossEvery == 0)
+      for (HeldPair& h : across(*sim.rank_contacts(), s)) held.push_back(std::move(h));
+  }
+  Outcome o = outcome(sim);
+  o.across = std::move(held);
+  return o;
 }
 
 // Steps of one process until the pile holds `contacts` contacts, then `more`.
@@ -98,15 +157,40 @@ void require_same(const Outcome& a, const Outcome& b) {
   CHECK(same_bits(a.alpha, b.alpha));
 }
 
+// The rebuild's hand-over keeps a rank's own copy of a pair across the cut it lists again
+// (kept_table): that copy must be the answering rank's, bit for bit, at every step (histories,
+// the pair's pending energy, records), and the other body's owner must list every such pair.
+void check_copies(const std::vector<Outcome>& got) {
+  std::map<std::tuple<int, std::uint32_t, std::uint32_t>, const HeldPair*> copies;  // (step, i, j): the other side's
+  for (const Outcome& o : got)
+    for (const HeldPair& h : o.across)
+      if (!h.answers) copies[{h.step, h.i, h.j}] = &h;
+  std::size_t answered = 0, matched = 0, touching = 0, differ = 0;
+  for (const Outcome& o : got)
+    for (const HeldPair& a : o.across) {
+      if (!a.answers) continue;
+      ++answered;
+      const auto b = copies.find({a.step, a.i, a.j});
+      if (b == copies.end()) continue;
+      ++matched;
+      touching += !a.slots.empty();
+      differ += !same_slots(a.slots, b->second->slots);
+    }
+  INFO(answered << " pairs across the cut answered (a step's), " << touching << " touching");
+  CHECK(matched == answered);  // the other body's owner lists each pair too
+  CHECK(touching > 20);
+  CHECK(differ == 0);
+}
+
 // Each of n thread ranks' outcome of `steps` steps of the pile.
-std::vector<Outcome> over_ranks(const Pile& p, int steps, int n) {
+std::vector<Outcome> over_ranks(const Pile& p, int steps, int n, bool keep_across = false) {
   ThreadRanks all(n);
   std::vector<Outcome> got(n);
   std::vector<std::thread> ranks;
   for (int r = 0; r < n; ++r)
     ranks.emplace_back([&, r] {
       const ThreadLink link(all, r);
-      got[r] = run(p, steps, &link, n == 3);  // 3 ranks: kicks left open, as the run loop leaves them
+      got[r] = run(p, steps, &link, n == 3, keep_across);  // 3 ranks: kicks left open, as the run loop leaves them
     });
   for (std::thread& t : ranks) t.join();
   CHECK_FALSE(all.mismatch);
@@ -123,7 +207,8 @@ TEST_CASE("A pile stepped over 2 and 3 thread ranks ends on one process's bits o
   REQUIRE(one.rebuilds > 5);
   REQUIRE(one.scene_bytes >= 272 * one.bodies.size());
   for (int n : {2, 3}) {
-    const std::vector<Outcome> got = over_ranks(p, kSteps, n);
+    const std::vector<Outcome> got = over_ranks(p, kSteps, n, true);
+    check_copies(got);
     std::size_t owned = 0, held = 0, fewest = one.bodies.size();
     double shares = 0.0;
     for (int r = 0; r < n; ++r) {
