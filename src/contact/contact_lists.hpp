@@ -23,15 +23,15 @@ namespace polydem {
 // pending energy (PairList::open_energy; zero on the others): read with the history where the
 // pair touches, not streamed for the pairs that do not (32 bytes a listed pair, issue 19).
 // The pending energy first: a contact without rolling touches bytes [0, 81) (ContactHistory's
-// mr last), 2.25 lines of 64 bytes on average at a 112-byte stride, where the history first
-// spread its 2.5 (issue 19).
-struct ContactSlot {
+// mr last), two lines of 64 bytes on a slot that starts a line, where a 112-byte stride spread
+// them over 2.25 on average (issue 19; 16 bytes a slot more memory).
+struct alignas(64) ContactSlot {
   EnergyParts pending;        // J, on a pair's first slot: its energies since the ledger closed
   ContactHistory history;     // N, N m: springs carried while the key lives
   ContactSlot() = default;
   ContactSlot(const ContactHistory& h, const EnergyParts& e) : pending(e), history(h) {}  // the history first, as it reads
 };
-static_assert(sizeof(ContactSlot) == 112, "ContactSlot: the history and a pair's pending energy");
+static_assert(sizeof(ContactSlot) == 128, "ContactSlot: the history and a pair's pending energy, a line's multiple");
 
 // Packs a contact key of one pair into an integer that orders slots deterministically.
 inline std::uint64_t feature_key(FeaturePair f) {

@@ -130,3 +130,15 @@ TEST_CASE("carry_history moves a touching pair's pending energy with its history
   CHECK(fresh.open_energy(1).sliding == old.open_energy(2).sliding);
   CHECK(fresh.open_energy(2).net == 0.0);
 }
+
+TEST_CASE("a sphere slot starts a cache line, so a contact without rolling reads two lines of it") {
+  constexpr std::uintptr_t kLine = 64;  // bytes
+  PairList list = make_list({{0, 1}, {0, 2}, {1, 2}}, {{{0, true}}, {{0, false}}, {{0, true}}});
+  for (const ContactSlot& slot : list.slots) CHECK(reinterpret_cast<std::uintptr_t>(&slot) % kLine == 0);
+  // The bytes a steady contact touches: the pending energy, then the history up to its slipping flag.
+  const ContactSlot& slot = list.slots[0];
+  const auto begin = reinterpret_cast<std::uintptr_t>(&slot);
+  const auto end = reinterpret_cast<std::uintptr_t>(&slot.history.slipping) + 1;
+  CHECK(reinterpret_cast<std::uintptr_t>(&slot.pending) == begin);
+  CHECK((end - 1) / kLine - begin / kLine + 1 == 2);
+}

@@ -67,4 +67,16 @@ TEST_CASE("the program's operator new puts large vectors on huge pages, small on
   const std::uintptr_t page = first_whole_page(small.data());
   if (page + 4096 <= reinterpret_cast<std::uintptr_t>(small.data() + small.size())) CHECK_FALSE(huge_at(page));
 }
+
+// A type aligned to a cache line (ContactSlot) takes the aligned operator new: its large vectors too.
+struct alignas(64) Line {
+  double word[8];
+};
+TEST_CASE("the program's operator new puts large vectors of an over-aligned type on huge pages, at its alignment") {
+  // 64 MiB: above glibc's largest mmap threshold (32 MiB), so a mapping of its own, not a block
+  // the cases above advised and freed.
+  std::vector<Line> large((std::size_t(64) << 20) / sizeof(Line));
+  CHECK(reinterpret_cast<std::uintptr_t>(large.data()) % alignof(Line) == 0);
+  CHECK(huge_at(first_whole_page(large.data())) == kernel_has_thp());
+}
 #endif

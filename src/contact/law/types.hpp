@@ -33,7 +33,7 @@ struct LawParams {
 constexpr double kNoGap = std::numeric_limits<double>::max();
 
 // The rolling part last: a contact without it touches the first 50 bytes alone (with the pending
-// energy before them, a sphere slot's 81 of 112: ContactSlot).
+// energy before them, a sphere slot's 81 of 128: ContactSlot).
 struct ContactHistory {
   Vec3 ft = Vec3::Zero();  // N, tangential spring force
   // The last step, for the energy budget and the dashpot (its last force: second_order.hpp):
