@@ -14,11 +14,11 @@ usage: tools/bench/scale/miss_lines.py SHORT.out LONG.out BODY_STEPS [BINARY [TO
   TOP                  rows printed of each table (default 40)
 Prints per body-step the instructions, L1 and last-level misses (reads and writes apart) of the
 functions and of the source lines, largest last-level first: which array a line reads is then
-one look at the line (the table of "The bytes a cube-step streams", README).
+one look at the line (README, "The bytes a cube-step streams": the settled piles' table).
 """
-import subprocess
 import collections
 import re
+import subprocess
 import sys
 
 # callgrind's events with --cache-sim=yes: Ir Dr Dw I1mr D1mr D1mw ILmr DLmr DLmw
