@@ -99,7 +99,9 @@ void unpack_ghosts(const std::vector<char>& bytes, const std::vector<std::uint32
   }
 }
 
-std::size_t motion_bytes(bool turning) { return (turning ? 16 : 12) * sizeof(double); }  // 4 vectors (1 quaternion)
+std::size_t motion_bytes(MotionFields fields) {
+  return (fields.orientation ? 16 : fields.spin_end ? 12 : 9) * sizeof(double);  // with_fields' kinds
+}
 
 namespace {
 
@@ -121,41 +123,53 @@ MotionArrays<V, Q> motion_arrays(S& store) {
           store.angular_velocity_end.data()};
 }
 
-template <bool kTurning>
-void pack_rows(const std::vector<std::uint32_t>& local, const MotionArrays<const Vec3, const Quat> a, char* into) {
-  Writer w{into};
-  for (std::uint32_t k : local) {
-    if (kTurning) w.field(a.orientation[k]);
-    velocity_fields(w, a, k);
-  }
+// A motion parcel's fields of body k, in one order for both directions (Io: Writer or Reader).
+template <bool kOrientation, bool kSpinEnd, class Io, class A>
+void motion_fields(Io& io, const A& a, std::size_t k) {
+  if (kOrientation) io.field(a.orientation[k]);
+  io.field(a.velocity[k]);
+  io.field(a.angular_velocity[k]);
+  io.field(a.velocity_end[k]);
+  if (kSpinEnd) io.field(a.angular_velocity_end[k]);
 }
 
-template <bool kTurning>
+template <bool kOrientation, bool kSpinEnd>
+void pack_rows(const std::vector<std::uint32_t>& local, const MotionArrays<const Vec3, const Quat> a, char* into) {
+  Writer w{into};
+  for (std::uint32_t k : local) motion_fields<kOrientation, kSpinEnd>(w, a, k);
+}
+
+template <bool kOrientation, bool kSpinEnd>
 void unpack_rows(const char* bytes, const MotionTarget& to, double dt, const MotionArrays<Vec3, Quat> a, Vec3* x) {
   Reader r{bytes};
   const std::uint32_t* local = to.local.data();
   Vec3* drifted = to.drifted;  // m
   for (std::size_t k = 0, n = to.local.size(); k < n; ++k) {
     const std::uint32_t l = local[k];
-    if (kTurning) r.field(a.orientation[l]);
-    velocity_fields(r, a, l);
+    motion_fields<kOrientation, kSpinEnd>(r, a, l);
     drifted[k] += a.velocity[l] * dt;  // the owner's drift (integrate.hpp drift_body): its bits
     x[l] = drifted[k];
   }
 }
 
-}  // namespace
-
-void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, bool turning, char* into) {
-  const auto a = motion_arrays<const Vec3, const Quat>(store);
-  if (turning) pack_rows<true>(local, a, into);
-  else pack_rows<false>(local, a, into);
+// f.template operator()<kOrientation, kSpinEnd>() for `fields`: the loops compiled per kind.
+template <class F>
+void with_fields(MotionFields fields, F&& f) {
+  if (fields.orientation) f.template operator()<true, true>();  // polyhedra read every field
+  else if (fields.spin_end) f.template operator()<false, true>();
+  else f.template operator()<false, false>();
 }
 
-void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, LocalStore& store) {
+}  // namespace
+
+void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, MotionFields fields, char* into) {
+  const auto a = motion_arrays<const Vec3, const Quat>(store);
+  with_fields(fields, [&]<bool kO, bool kS>() { pack_rows<kO, kS>(local, a, into); });
+}
+
+void unpack_motion(const char* bytes, const MotionTarget& to, MotionFields fields, double dt, LocalStore& store) {
   const auto a = motion_arrays<Vec3, Quat>(store);
-  if (turning) unpack_rows<true>(bytes, to, dt, a, store.position.data());
-  else unpack_rows<false>(bytes, to, dt, a, store.position.data());
+  with_fields(fields, [&]<bool kO, bool kS>() { unpack_rows<kO, kS>(bytes, to, dt, a, store.position.data()); });
 }
 
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids) {

@@ -33,20 +33,25 @@ std::vector<char> pack_movers(const LocalStore& store, const std::vector<std::ui
 // Appends the bodies of a pack_movers parcel to `store` as owned bodies, bit for bit.
 void unpack_movers(const std::vector<char>& bytes, LocalStore& store);
 
-// A step's ghost parcel between rebuilds (the ghosts' motion): the velocities, and the
-// orientation when bodies turn (`turning` false: a spheres-only scene, every orientation the
-// identity), not the position: the receiver drifts its copy as the owner did, x += v dt, the
-// same bits (the only write of a position between rebuilds). Spheres 96 bytes a body, else 128.
-std::size_t motion_bytes(bool turning);
+// A step's ghost parcel between rebuilds (the ghosts' motion): the velocities, their prediction
+// for the step's end and, when bodies turn, the orientation, not the position: the receiver
+// drifts its copy as the owner did, x += v dt, the same bits (the only write of a position
+// between rebuilds). What it leaves out where the scene never reads it of a ghost:
+struct MotionFields {
+  bool orientation = true;  // false: a spheres-only scene, every orientation the identity
+  bool spin_end = true;     // angular_velocity_end; false: spheres whose law has no tangential dashpot (its only reader)
+};
+// Bytes a body: spheres 72 without spin_end, 96 with it; else 128.
+std::size_t motion_bytes(MotionFields fields);
 // The motion of a rank's bodies at local indices `local` of its store (its owned bodies).
-void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, bool turning, char* into);
+void pack_motion(const LocalStore& store, const std::vector<std::uint32_t>& local, MotionFields fields, char* into);
 // Writes a pack_motion parcel into the store's ghosts at local indices `local`, each position
 // `drifted[k]` (the k-th body's at the last step) moved by v dt first.
 struct MotionTarget {
   const std::vector<std::uint32_t>& local;
   Vec3* drifted;  // m
 };
-void unpack_motion(const char* bytes, const MotionTarget& to, bool turning, double dt, LocalStore& store);
+void unpack_motion(const char* bytes, const MotionTarget& to, MotionFields fields, double dt, LocalStore& store);
 
 // The integration state of bodies `ids` with their ids.
 std::vector<char> pack_owned(const Bodies& bodies, const std::vector<std::uint32_t>& ids);

@@ -52,6 +52,9 @@ RankContacts::RankContacts(const RankLink& link, const std::vector<Shape>& shape
   // Pairs listed within R_i + R_j + (s_i + s_j) / 2 + band: the widest skins.
   const double widest = per_body_skins(settings_, settings_.spheres_only) ? settings_.skin_max : settings_.skin;  // m
   halo_ = ghost_halo(largest_bounding_radius(shapes, bodies), widest + band);
+  // A sphere's orientation stays the identity; its spin's prediction is read only by the
+  // tangential dashpot (sphere_kernel.hpp's v_end; a ghost's wall pairs are its owner's).
+  motion_ = {!settings_.spheres_only, !settings_.spheres_only || settings_.particle.tangential_damping};
 }
 
 // This rank's word: a rebuild (none listed yet, or asked for), a stop, its owned bodies' margins.
@@ -349,19 +352,17 @@ bool RankContacts::exchange_ghosts(const Drivers& drivers, double dt) {
 
 // Each owned body's motion into the parcels of the ranks that hold it, then (fold_) the word.
 void RankContacts::pack_parcels(const Ask& mine) {
-  const bool turning = !settings_.spheres_only;  // a sphere's orientation stays the identity
   for (std::size_t k = 0; k < out_.size(); ++k) {
     Parcel& p = out_[k];
-    pack_motion(store_, send_local_[k], turning, p.bytes.data());
+    pack_motion(store_, send_local_[k], motion_, p.bytes.data());
     if (fold_) std::memcpy(p.bytes.data() + p.bytes.size() - sizeof mine, &mine, sizeof mine);
   }
 }
 
 // Each landed motion parcel into the store's ghosts, drifted by dt (s).
 void RankContacts::unpack_parcels(double dt) {
-  const bool turning = !settings_.spheres_only;
   for (std::size_t k = 0; k < in_.size(); ++k)
-    unpack_motion(in_[k].bytes.data(), {receive_local_[k], drifted_[k].data()}, turning, dt, store_);
+    unpack_motion(in_[k].bytes.data(), {receive_local_[k], drifted_[k].data()}, motion_, dt, store_);
 }
 
 // The step's decision where the ghost parcels carry it (fold_: every rank a neighbour of every
@@ -400,7 +401,7 @@ void RankContacts::size_parcels() {
   for (int q = 0; q < link_.ranks(); ++q) links += !plan_.send[q].empty() && !plan_.receive[q].empty();
   fold_ = link_.ranks() > 1 && link_.sum({links}).at(0) == std::uint64_t(link_.ranks()) * (link_.ranks() - 1);
   const std::size_t word = fold_ ? sizeof(Ask) : 0;  // bytes after the ghosts
-  const std::size_t body = motion_bytes(!settings_.spheres_only);
+  const std::size_t body = motion_bytes(motion_);
   for (int q = 0; q < link_.ranks(); ++q) {
     if (!plan_.send[q].empty()) {
       out_.push_back({q, std::vector<char>(plan_.send[q].size() * body + word)});
@@ -426,7 +427,7 @@ void RankContacts::narrow_parcels() {
     for (std::uint32_t l : receive_local_[k]) owner[l] = in_[k].rank;
   PairedRows paired = paired_across(engine_->body_pairs().pairs, owner, link_.ranks());
   const std::size_t word = fold_ ? sizeof(Ask) : 0;  // bytes after the ghosts
-  const std::size_t body = motion_bytes(!settings_.spheres_only);
+  const std::size_t body = motion_bytes(motion_);
   for (std::size_t k = 0; k < out_.size(); ++k) {
     send_local_[k] = std::move(paired.send[out_[k].rank]);
     out_[k].bytes.resize(send_local_[k].size() * body + word);

@@ -25,6 +25,7 @@
 #include "field/external_forces.hpp"
 #include "integrate/integrate.hpp"
 #include "integrate/turn_table.hpp"
+#include "sim/body_exchange.hpp"
 #include "sim/contact_table.hpp"
 #include "sim/domain_cut.hpp"
 #include "sim/ghost_plan.hpp"
@@ -253,6 +254,7 @@ class RankContacts {
   TurnTable kept_turns_;      // the turns close_and_start applies (keep_turns), by local index
   std::unique_ptr<ContactEngine> engine_;
   LocalStore store_;
+  MotionFields motion_;  // what the motion parcels carry (body_exchange.hpp)
   std::vector<Parcel> out_, in_;  // the ghost exchange's, sized to plan_
   std::vector<std::vector<std::uint32_t>> send_local_, receive_local_;  // per parcel of out_, in_: its bodies' local indices
   std::vector<std::vector<Vec3>> drifted_;  // m, per parcel of in_: its bodies' positions at the last step

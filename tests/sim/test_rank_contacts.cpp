@@ -252,6 +252,16 @@ TEST_CASE("A pile of spheres over 2 and 3 thread ranks rebuilds at one process's
   }
 }
 
+TEST_CASE("A pile of spheres with a tangential dashpot over 2 thread ranks: the ghosts' spin predictions travel") {
+  // The dashpot reads both spheres' angular_velocity_end (sphere_kernel.hpp): the motion parcels
+  // carry it here, and leave it out without the dashpot (the test above).
+  Pile p(0.5);
+  for (BodySpec& b : p.specs) b.shape = "sphere";
+  const int kSteps = steps_to_contacts(p, 120, 200);
+  const Outcome one = run(p, kSteps, nullptr);
+  for (const Outcome& got : over_ranks(p, kSteps, 2)) require_same(one, got);
+}
+
 TEST_CASE("Drag and fluid forces over 2 and 3 thread ranks act on each rank's bodies with one process's bits") {
   // The pile in air drag and a water grid over its lower half (friction against a slow flow,
   // buoyancy, the void fraction): bodies leave and enter the grid, some straddle its faces.
