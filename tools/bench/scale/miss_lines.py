@@ -20,19 +20,14 @@ import collections
 import re
 import subprocess
 import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tools/bench
+from callgrind_asm import position  # noqa: E402
 
 # callgrind's events with --cache-sim=yes: Ir Dr Dw I1mr D1mr D1mw ILmr DLmr DLmw
 IR, I1MR, D1MR, D1MW, ILMR, DLMR, DLMW = 0, 3, 4, 5, 6, 7, 8
 EVENTS = 9
-
-
-def position(token, last):
-    """A callgrind position: '*' the same, '+n'/'-n' relative, else absolute (hex with 0x)."""
-    if token == '*':
-        return last
-    if token[0] in '+-':
-        return last + int(token)
-    return int(token, 16) if token.startswith('0x') else int(token)
 
 
 def self_costs(path):
