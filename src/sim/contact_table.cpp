@@ -171,15 +171,19 @@ void append_pair(const PairList& from, std::size_t k, PairList& to) {
   to.slot_begin.push_back(std::uint32_t(to.slots.size()));
 }
 
+bool pair_before(BodyPair a, BodyPair b) { return a.i != b.i ? a.i < b.i : a.j < b.j; }
+
 }  // namespace
 
 PairList kept_table(const PairList& list, const std::vector<std::uint32_t>& row_now,
-                    const std::vector<std::uint8_t>& ghost, bool driver) {
-  PairList mine = reserved(list.slot_count());
+                    const std::vector<std::uint8_t>& ghost, bool driver, const PairList& landed) {
+  PairList mine = reserved(list.slot_count() + landed.slot_count());
+  std::size_t next = 0;  // the first landed pair not yet placed
   for (std::size_t k = 0; k < list.size(); ++k) {
     const BodyPair p = list.pairs[k];
     const std::uint32_t i = row_now[p.i], j = driver ? p.j : row_now[p.j];
     if (i == kNotHeld || j == kNotHeld || (ghost[i] && (driver || ghost[j]))) continue;  // not listed here again
+    while (next < landed.size() && pair_before(landed.pairs[next], {i, j})) append_pair(landed, next++, mine);
     bool first = true;  // the pair's pending energy goes on its first active slot (active_slots')
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s) {
       if (!list.active[s]) continue;
@@ -192,21 +196,9 @@ PairList kept_table(const PairList& list, const std::vector<std::uint32_t>& row_
     mine.pairs.push_back({i, j});
     mine.slot_begin.push_back(std::uint32_t(mine.slots.size()));
   }
+  while (next < landed.size()) append_pair(landed, next++, mine);
   finish(mine);
   return mine;
-}
-
-PairList merged_tables(const PairList& a, const PairList& b) {
-  PairList both = reserved(a.slot_count() + b.slot_count());
-  const auto before = [](BodyPair x, BodyPair y) { return x.i != y.i ? x.i < y.i : x.j < y.j; };
-  std::size_t ka = 0, kb = 0;
-  while (ka < a.size() || kb < b.size()) {
-    const bool from_a = kb == b.size() || (ka < a.size() && before(a.pairs[ka], b.pairs[kb]));
-    if (from_a) append_pair(a, ka++, both);
-    else append_pair(b, kb++, both);
-  }
-  finish(both);
-  return both;
 }
 
 }  // namespace polydem

@@ -65,12 +65,11 @@ std::vector<std::uint32_t> rows_now(const std::vector<std::uint32_t>& was, const
 // A rank's staying pairs at a rebuild, without the table's round trip: the pairs of `list` (its
 // lists, rows of the store before) with an active slot whose bodies `row_now` finds both in the
 // new store, one of them owned there (`ghost`: the new store's flags; a driver pair: its body
-// owned), relabelled and laid out as local_table lays out their active_slots. A pair across the
+// owned), relabelled and laid out as local_table lays out their active_slots, merged in pair
+// order with the pairs that came (`landed`, local_table's; no pair in both). A pair across the
 // cut is computed on both sides alike, so the copy here is the answering rank's, bit for bit.
 PairList kept_table(const PairList& list, const std::vector<std::uint32_t>& row_now,
-                    const std::vector<std::uint8_t>& ghost, bool driver);
-// Two tables of one rank's rows (no pair in both) as one, in pair order (kept and landed slots).
-PairList merged_tables(const PairList& a, const PairList& b);
+                    const std::vector<std::uint8_t>& ghost, bool driver, const PairList& landed);
 
 // The table of all ranks' slots: pairs in increasing (i, j), each pair's slots from one rank in key order.
 PairList table_of(const std::vector<TableSlot>& slots);

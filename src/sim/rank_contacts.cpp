@@ -179,10 +179,10 @@ void RankContacts::migrate_bodies() {
   searches.relabel(was, store_.global_id);
   // The pairs this rank held and lists again keep their slots here; the others came (migrate_lists).
   const std::vector<std::uint32_t> row_now = rows_now(was, store_.global_id);
-  PairList body = merged_tables(kept_table(engine_->body_pairs(), row_now, store_.ghost, false),
-                                local_table(h.body_slots, store_.global_id, false));
-  PairList driver = merged_tables(kept_table(engine_->driver_pairs(), row_now, store_.ghost, true),
-                                  local_table(h.driver_slots, store_.global_id, true));
+  PairList body = kept_table(engine_->body_pairs(), row_now, store_.ghost, false,
+                             local_table(h.body_slots, store_.global_id, false));
+  PairList driver = kept_table(engine_->driver_pairs(), row_now, store_.ghost, true,
+                               local_table(h.driver_slots, store_.global_id, true));
   new_engine();
   engine_->body_pairs() = std::move(body);
   engine_->driver_pairs() = std::move(driver);

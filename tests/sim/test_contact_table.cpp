@@ -232,7 +232,7 @@ TEST_CASE("rows_now finds each row of a store in the next one, or none", "[check
 TEST_CASE("a rank's kept pairs with the landed ones are the table the round trip gave", "[checkpoint][mpi]") {
   // The round trip: every active slot of the old list as a table slot (append_pair_slots), with
   // the landed ones, laid out over the new store (local_table), keeping the pairs with a body
-  // owned there; without it: the kept pairs relabelled (kept_table) merged with the landed ones.
+  // owned there; without it: the kept pairs relabelled and merged with the landed ones (kept_table).
   std::mt19937_64 rng(41);
   for (int draw = 0; draw < 60; ++draw) {
     INFO("draw " << draw);
@@ -261,7 +261,7 @@ TEST_CASE("a rank's kept pairs with the landed ones are the table the round trip
       const std::size_t kept = round_trip.size();
       round_trip.insert(round_trip.end(), landed.begin(), landed.end());
       const PairList want = local_table(round_trip, now, driver);
-      const PairList got = merged_tables(kept_table(list, rows_now(was, now), ghost, driver), local_table(landed, now, driver));
+      const PairList got = kept_table(list, rows_now(was, now), ghost, driver, local_table(landed, now, driver));
       CHECK(kept > 0);
       check_bits(got, want);
     }
