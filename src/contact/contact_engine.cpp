@@ -627,7 +627,7 @@ void ContactEngine::name_arrays(const LocalBodies& bodies) const {
 #endif
 
 void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies,
-                           AfterPairs then) {
+                           AfterPairs then, const WalkTrail* trail) {
 #ifdef POLYDEM_LINE_AUDIT
   if (omp_get_thread_num() == 0) name_arrays(bodies);
 #endif
@@ -643,10 +643,15 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                       any_sphere_,
                       &turns_};
   // Both pair loops end without a barrier: the one after them is kept only where the region
-  // reads their results (the sums) before its end.
+  // reads their results (the sums) before its end. A trailing pass reads a body's driver pairs
+  // after its body pairs: each thread makes its driver pairs first.
+  if (trail) {
+    trail_driver_range(*trail);
+    driver_pair_forces(view, drivers, dt);
+  }
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_,
-                     equal_spheres_ ? &*equal_spheres_ : nullptr);
+                     equal_spheres_ ? &*equal_spheres_ : nullptr, true, trail);
   } else {
     const BodyPartner partner{posed_.data(),          view.position,         view.velocity,
                               view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
@@ -667,6 +672,31 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       }
     });
   }
+  if (!trail) driver_pair_forces(view, drivers, dt);
+  if (then != AfterPairs::region_ends) {
+#pragma omp barrier
+  }
+  if (then == AfterPairs::sum_bodies) reduce_bodies(bodies);
+}
+
+// This thread's bodies whose driver pairs it makes (even_pair_forces' blocks): all of each one's.
+void ContactEngine::trail_driver_range(const WalkTrail& trail) const {
+  const std::size_t t = omp_get_thread_num();
+  const std::uint32_t n = std::uint32_t(driver_begin_.size() - 1);
+  if (driver_list_.pairs.empty()) {
+    trail.done[t] = {0, n};
+    return;
+  }
+  const auto [first, end] = even_blocks(driver_list_, driver_begin_.data(), body_cut(), t, omp_get_num_threads());
+  const std::uint32_t p0 = std::uint32_t(first * driver_list_.block);
+  const std::uint32_t p1 = std::uint32_t(std::min(end * driver_list_.block, driver_list_.size()));
+  const auto at = driver_begin_.begin();
+  const std::uint32_t lo = std::uint32_t(std::lower_bound(at, driver_begin_.end(), p0) - at);  // driver_begin[b] >= p0
+  const std::uint32_t hi = std::uint32_t(std::upper_bound(at, driver_begin_.end(), p1) - at) - 1;  // [b + 1] <= p1
+  trail.done[t] = {lo, std::max(lo, hi)};
+}
+
+void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, double dt) {
   if (!driver_list_.pairs.empty()) {
     const audit::Scope driver_pairs(audit::kDriverPairs);
     with_law(settings_.driver, [&](auto parts) {
@@ -698,10 +728,6 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
         all_pair_forces<true>(driver_list_, kernel);
     });
   }
-  if (then != AfterPairs::region_ends) {
-#pragma omp barrier
-  }
-  if (then == AfterPairs::sum_bodies) reduce_bodies(bodies);
 }
 
 std::vector<BodyTurn> ContactEngine::take_turns(const std::vector<std::uint8_t>* ghost) {

@@ -177,7 +177,10 @@ class ContactEngine {
   // The pairs' forces (a team stage, on every thread of the region); then, after the region,
   // close_forces on one thread. `pose_bodies`: false right after a rebuild (it posed them) or
   // after pose_before_forces; spheres are posed by measure_motion, which must come first.
-  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, AfterPairs then);
+  // `trail` (spheres' lists, one process): a pass right behind the body pairs' walk (WalkTrail).
+  void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, AfterPairs then,
+              const WalkTrail* trail = nullptr);
+  bool spheres_only() const { return spheres_only_; }
   // After forces()' region, on one thread: the drivers' reactions, the step's contact count and
   // the ended contacts' energy (~23k instructions a bed step: no barrier inside the region for them).
   void close_forces(const LocalBodies& bodies, Drivers& drivers);
@@ -295,6 +298,8 @@ class ContactEngine {
   std::vector<std::uint32_t> make_driver_list(const LocalBodies& bodies, const Drivers& drivers, PairList fresh,
                                               const PairList& old_driver, bool share_candidates);
   void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
+  void driver_pair_forces(const BodyView& view, Drivers& drivers, double dt);  // a team stage, no barrier
+  void trail_driver_range(const WalkTrail& trail) const;
   void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build
   // skin_, at a rebuild: each body's own skin from its speed, or none (skin_max not above skin,

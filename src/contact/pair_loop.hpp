@@ -236,9 +236,21 @@ template <class Kernel>
 // Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
 // foreign pair's other side kept as a late term (DirectSums::foreign); the blocks' contacts and
 // ended flags. The runs of internal pairs between two foreign ones are plain loops (one thread:
-// the whole list).
+// the whole list). After each block, the bodies it finished go to `behind`'s pass.
+// The bodies [next, last) a trailing pass may move on this thread (WalkTrail), handed to it in order.
+struct ChunkTrail {
+  const WalkTrail* trail = nullptr;
+  std::uint32_t next = 0, last = 0;
+  // The walk is done with every body below `upto`.
+  void done_below(std::uint32_t upto) {
+    const std::uint32_t stop = std::min(upto, last);
+    if (next < stop) trail->pass(trail->context, next, stop), next = stop;
+  }
+};
+
 template <class Kernel>
-void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t) {
+void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t,
+                ChunkTrail& behind) {
   const PairSplit& split = direct.split;
   if (split.cut[t] == split.cut[t + 1]) return;
   const InternalAdd internal{direct.sums.data(), list.pairs.data()};
@@ -259,6 +271,8 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
     }
     list.block_contacts[b] = contacts;
     list.block_ended[b] = ended;
+    // Pairs are sorted by i: the bodies below the next block's first i have all their pairs done.
+    if (behind.trail && end < split.cut[t + 1]) behind.done_below(list.pairs[end].i);
   }
 }
 
@@ -332,8 +346,11 @@ void block_forces(PairList& list, const Kernel& kernel, std::size_t b, PairScrat
 
 // The body pairs with each body's sum made in the loop (pair_split.hpp), on every thread of the
 // team: the list is cut for the team's size when that changes (or the list did: reset).
+// With `trail`, thread t's pass runs behind its walk on the bodies of done[t] that no other chunk
+// reads (PairSplit::trail_from), done[t] narrowed to them.
 template <bool kNoWait, class Kernel>
-void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch) {
+void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch,
+                        const WalkTrail* trail) {
   const int threads = omp_get_num_threads();
   if (direct.split.threads != threads) {
 #pragma omp barrier
@@ -343,7 +360,15 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
   const int t = omp_get_thread_num();
   if (!std::exchange(direct.zero[t].on, false)) pair_loop_detail::clear_home_sums(direct, t);
   const double start = threads > 1 ? omp_get_wtime() : 0.0;  // s; two clock reads a thread-step (~50 ns of ~100 us)
-  pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t);
+  pair_loop_detail::ChunkTrail behind;
+  if (trail) {
+    BodyRange& done = trail->done[t];
+    done.first = std::max(done.first, direct.split.trail_from[t]);
+    done.last = std::max(done.first, std::min(done.last, direct.split.body_cut[t + 1]));
+    behind = {trail, done.first, done.last};
+  }
+  pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t, behind);
+  if (trail) behind.done_below(direct.split.body_cut[t + 1]);
   if (threads > 1) direct.pace[t].took(omp_get_wtime() - start);
   if constexpr (!kNoWait) {
 #pragma omp barrier
@@ -359,7 +384,8 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
 // With `direct` (body pairs) each pair's force and torques go into its bodies' sums instead
 // (direct_pair_forces), not into the list.
 template <bool kNoWait = false, class Kernel>
-void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr) {
+void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = nullptr,
+                     const WalkTrail* trail = nullptr) {
   const std::size_t n = list.size(), blocks = list.blocks();
   assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
   assert(list.pending.size() == (list.sparse ? n : 0));
@@ -367,7 +393,7 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
   in_team(n > kPairBlock, [&] {
     PairScratch scratch;
     if (direct) {
-      direct_pair_forces<kNoWait>(list, kernel, *direct, scratch);
+      direct_pair_forces<kNoWait>(list, kernel, *direct, scratch, trail);
       return;
     }
     if constexpr (kNoWait) {
@@ -386,18 +412,24 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
 // pairs; the same every step, so a pair's arrays and its body's state stay in one core's cache
 // (shared as they came, blocks moved between the cores each step). Inside a team the threads
 // leave without a barrier: the caller meets where something reads the results (ContactEngine::forces).
+// even_pair_forces' blocks [first, second) of thread t of `threads`.
+inline std::pair<std::size_t, std::size_t> even_blocks(const PairList& list, const std::uint32_t* begin, TeamCut cut,
+                                                       std::size_t t, std::size_t threads) {
+  const std::size_t n = list.size();
+  const bool by_bodies = begin && cut.threads == int(threads);
+  auto first_pair = [&](std::size_t u) { return by_bodies ? std::size_t(begin[cut.at[u]]) : u * n / threads; };
+  auto first_block = [&](std::size_t u) { return (first_pair(u) + list.block / 2) / list.block; };
+  return {first_block(t), t + 1 == threads ? list.blocks() : first_block(t + 1)};
+}
+
 template <class Kernel>
 void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t* begin = nullptr, TeamCut cut = {}) {
   const std::size_t n = list.size(), blocks = list.blocks();
   assert(list.block_contacts.size() == blocks && list.block_ended.size() == blocks);
   in_team(n > kPairBlock, [&] {
     PairScratch scratch;
-    const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
-    const bool by_bodies = begin && cut.threads == int(threads);
-    auto first_pair = [&](std::size_t u) { return by_bodies ? std::size_t(begin[cut.at[u]]) : u * n / threads; };
-    auto first_block = [&](std::size_t u) { return (first_pair(u) + list.block / 2) / list.block; };
-    for (std::size_t b = first_block(t), end = t + 1 == threads ? blocks : first_block(t + 1); b < end; ++b)
-      pair_loop_detail::block_forces(list, kernel, b, scratch);
+    const auto [first, end] = even_blocks(list, begin, cut, omp_get_thread_num(), omp_get_num_threads());
+    for (std::size_t b = first; b < end; ++b) pair_loop_detail::block_forces(list, kernel, b, scratch);
   });
 }
 

@@ -103,6 +103,12 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
   split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
     split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
+  split.trail_from.assign(threads + 1, std::uint32_t(n_bodies));
+  std::uint32_t read_below = 0;  // one past the largest body of the pairs before chunk t (j > i)
+  for (std::uint32_t t = 0, k = 0; t < std::uint32_t(threads); ++t) {
+    for (; k < split.cut[t]; ++k) read_below = std::max(read_below, pairs[k].j + 1);
+    split.trail_from[t] = std::max(split.body_cut[t], read_below);
+  }
   // The foreign pairs, with the side (if any) homed in their own chunk.
   split.foreign.clear();
   split.foreign_side.clear();

@@ -61,6 +61,23 @@ struct PairSplit {
   std::vector<std::uint32_t> homes;          // the bodies with pairs, by home chunk
   std::vector<std::uint32_t> late_begin;     // per body + 1: its late terms in `late` (LateTerms)
   std::vector<std::uint32_t> late;           // foreign ordinal << 1 | (1 when the body is j), by body
+  std::vector<std::uint32_t> trail_from;     // per chunk: its first body no earlier chunk's pair reads (WalkTrail)
+};
+
+// Bodies [first, last) of one thread, increasing; empty where first == last.
+struct BodyRange {
+  std::uint32_t first = 0, last = 0;
+};
+
+// A pass run right behind the body pairs' walk (Simulation's trailing pass): a body is done once
+// the walk has passed its pairs as i (pairs sorted by i < j: no later pair reads it) and no other
+// chunk's pair reads it. Thread t runs `pass(context, first, last)` on its own done bodies as its
+// walk finishes them, within done[t] (set by the caller to the bodies whose driver pairs thread t
+// made, narrowed by the walk to those it may move): the caller's next pass moves the others.
+struct WalkTrail {
+  void (*pass)(const void* context, std::uint32_t first, std::uint32_t last);
+  const void* context;
+  BodyRange* done;  // per thread of the team
 };
 
 // The work a cut adds where it crosses pairs, in split_pairs' unit (a pair apart): a foreign pair's

@@ -16,8 +16,10 @@ namespace polydem {
 // them before reading the results. `equal`: every sphere alike, so no radius or mass is read per
 // body and the list keeps no k', c' per pair (its linear_steps may be empty). `lanes`: steady
 // pairs two at a time where the law allows (sphere_lanes.hpp; false: one at a time, the same bits).
+// `trail`: a pass right behind the walk (WalkTrail).
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
-                      DirectSums& direct, const EqualSpheres* equal = nullptr, bool lanes = true);
+                      DirectSums& direct, const EqualSpheres* equal = nullptr, bool lanes = true,
+                      const WalkTrail* trail = nullptr);
 
 // The radii and pair masses the sphere kernel reads: each body's, and k', c' cached per pair.
 struct EachSphere {

@@ -34,7 +34,7 @@ struct SphereLanesKernel : SphereKernel<SteadyParts, Sizes> {
 }  // namespace
 
 void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyView& bodies, PairList& list,
-                      DirectSums& direct, const EqualSpheres* equal, bool lanes) {
+                      DirectSums& direct, const EqualSpheres* equal, bool lanes, const WalkTrail* trail) {
   assert(!list.sparse);
   with_law(law, [&](auto parts) {
     using Parts = decltype(parts);
@@ -42,9 +42,10 @@ void sphere_pair_loop(const LawParams& law, double band, double dt, const BodyVi
       using Sizes = std::decay_t<decltype(sizes)>;
       if constexpr (std::is_same_v<Parts, SteadyParts>) {
         if (lanes && lanes_fit<Parts>(law, list))
-          return all_pair_forces<true>(list, SphereLanesKernel<Sizes>{{law, band, dt, bodies, list, sizes}}, &direct);
+          return all_pair_forces<true>(list, SphereLanesKernel<Sizes>{{law, band, dt, bodies, list, sizes}}, &direct,
+                                       trail);
       }
-      all_pair_forces<true>(list, SphereKernel<Parts, Sizes>{law, band, dt, bodies, list, sizes}, &direct);
+      all_pair_forces<true>(list, SphereKernel<Parts, Sizes>{law, band, dt, bodies, list, sizes}, &direct, trail);
     };
     if (!equal) return run(EachSphere{bodies, list});
     const double r = equal->radius, m = equal->mass;  // m, kg

@@ -330,6 +330,20 @@ template <Rotor kRotor, class Arrays>
   }
 }
 
+// close_and_start_step<true>'s pass for body i: its force and torque made in registers, m gravity
+// plus before's sum (N, N m), both kicks, the drift, moved(i, x) and the end velocities.
+template <Rotor kRotor, class Arrays, class Before, class Moved>
+[[gnu::always_inline]] inline void close_and_start_from_gravity(const Arrays& a, std::size_t i, double h, double dt,
+                                                                const Vec3& gravity, const Before& before,
+                                                                const Moved& moved) {
+  Vec3 f = a.mass[i] * gravity, t = Vec3::Zero();  // N, N m
+  before.add_to(i, f, t);
+  kick_body_twice<kRotor>(a, i, h, f, t);  // the closing kick and start_body's
+  drift_body<kRotor>(a, i, dt);
+  moved(i, a.position[i]);
+  predict_spin<kRotor>(a, i, h, t);  // the last step's torque
+}
+
 // close_and_start_step's pass for body i when it turns: the closing kick (kick_after's, with
 // before(i)), the turn (turn_body, its work -torque . angle in `turn`), then start_body.
 template <Rotor kRotor, class Arrays, class Before>
@@ -421,12 +435,7 @@ void close_and_start_step(B& b, double h, double dt, const RotorGroups& groups, 
       }
     }
     if constexpr (kFromGravity) {
-      Vec3 f = a.mass[i] * gravity, t = Vec3::Zero();  // N, N m
-      before.add_to(i, f, t);
-      integrate_detail::kick_body_twice<kRotor>(a, i, h, f, t);  // the closing kick and start_body's
-      integrate_detail::drift_body<kRotor>(a, i, dt);
-      moved(i, a.position[i]);
-      integrate_detail::predict_spin<kRotor>(a, i, h, t);  // the last step's torque
+      integrate_detail::close_and_start_from_gravity<kRotor>(a, i, h, dt, gravity, before, moved);
     } else {
       before(i);
       integrate_detail::kick_body_twice<kRotor>(a, i, h, a.force[i], a.torque[i]);

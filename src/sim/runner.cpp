@@ -534,7 +534,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     const bool unread = !recorded && next % kCheckSteps != 0 && !vtk.due_at(t_next, dt) && !csv.due_at(t_next, dt);
     try {
       const auto step_start = Clock::now();
-      sim.step(unread);
+      sim.step(unread, unread);  // an interrupt after it: close_step leaves the kick to the extra step
       stepping += std::chrono::duration<double>(Clock::now() - step_start).count();
     } catch (const RunError&) {  // the neighbour search refuses non-finite positions (every rank alike)
       const long bad = sim.first_non_finite();  // a rank holds only its bodies current: the first over all

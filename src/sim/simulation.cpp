@@ -242,7 +242,7 @@ void Simulation::driver_work_half() {
 // and checks its thread's bodies; the pair loops' results are read after the join), else after
 // the pair loops too (a closing kick in the region reads every body's sum). Many ranks: the
 // contact stage runs between the regions, exchanges and all, and each rank moves the bodies it owns.
-void Simulation::step(bool leave_kick_open) {
+void Simulation::step(bool leave_kick_open, bool next_follows) {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
@@ -252,6 +252,7 @@ void Simulation::step(bool leave_kick_open) {
   const RotorGroups& moved = rotors_;  // a rank's own passes move its owned bodies, in its store
   const bool rank_passes = !one_process && contacts;
   const bool close_last = std::exchange(kick_open_, false);  // the last step's sums are still in the engine
+  const bool ahead = std::exchange(trailed_, false);  // the last step's walk moved most bodies (trails_walk)
   if (close_last) keep_turns();  // the joined pass turns each body between its closing kick and its drift
   const bool turning = !kept_turns_.empty();  // one process's kept turns (a rank keeps its own)
   // Each thread moves the bodies whose pairs it walks, or the passes' own cut (one process: the contact stage's).
@@ -275,6 +276,8 @@ void Simulation::step(bool leave_kick_open) {
     const bool wait = cut.threads != omp_get_num_threads();
     if (close_last && !one_process)
       ranks_->close_and_start(0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
+    else if (ahead)  // the bodies the walk left: spheres' lists, watched
+      trailing_.rest(closing_sums());
     else if (watched)  // points (spheres' lists): no turns
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
     else if (turning)  // kept only where close_last
@@ -313,11 +316,16 @@ void Simulation::step(bool leave_kick_open) {
       audit::serial(audit::kSerial);
     }
   }
+  PointWatch next_watch;
+  const bool trailing = trails_walk(leave_kick_open && next_follows, next_watch);
+  const WalkTrail trail =
+      trailing ? trailing_.open(bodies, 0.5 * dt_, dt_, gravity_, closing_sums(), next_watch) : WalkTrail{};
   in_team(team, [&] {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
       using Then = ContactEngine::AfterPairs;
-      engine_->forces(local, drivers, dt_, false, leave_kick_open ? Then::region_ends : Then::read_sums);
+      engine_->forces(local, drivers, dt_, false, leave_kick_open ? Then::region_ends : Then::read_sums,
+                      trailing ? &trail : nullptr);
       const audit::Scope kick(audit::kKick);
       if (!leave_kick_open) kick_after(bodies, 0.5 * dt_, moved, closing_sums(), engine_->pass_cut(), false);
     } else if (contacts) {
@@ -326,6 +334,8 @@ void Simulation::step(bool leave_kick_open) {
       kick(bodies, 0.5 * dt_, moved);
     }
   });
+  if (trailing) trailing_.close(bodies.size());
+  trailed_ = trailing;
   audit::serial(audit::kClose);
   if (contacts && one_process) engine_->close_forces(all_owned(bodies), drivers);
   audit::serial(audit::kSerial);
@@ -341,6 +351,7 @@ void Simulation::step(bool leave_kick_open) {
 }
 
 void Simulation::close_step() {
+  if (trailed_) return;  // the next step's joined pass has begun (the runner's interrupt: one more step)
   if (!std::exchange(kick_open_, false)) return;
   in_team(bodies.size() >= kParallelMinItems, [&] {
     if (ranks_)
@@ -368,6 +379,14 @@ void Simulation::keep_turns() {
 void Simulation::book_kept_turns() {
   if (ranks_) return ranks_->book_kept_turns();
   kept_turns_.book([&](double work) { engine_->book_turn(work); });
+}
+
+// One process, the kick left open and the next step to follow, spheres' lists with nothing but gravity and the contacts
+// acting: the next step's joined pass (its watched one) can run behind this step's walk, `watch`
+// its rebuild test.
+bool Simulation::trails_walk(bool next_follows, PointWatch& watch) {
+  return next_follows && scene_.forces.contact.present && !ranks_ && !external_ && engine_->spheres_only() &&
+         trailing_fits(rotors_, bodies.size()) && engine_->watch_motion(all_owned(bodies), watch);
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the

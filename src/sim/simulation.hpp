@@ -16,6 +16,7 @@
 #include "polydem/shape_library.hpp"
 #include "sim/rank_contacts.hpp"
 #include "sim/time_step.hpp"
+#include "sim/trailing_pass.hpp"
 
 namespace polydem {
 
@@ -54,10 +55,14 @@ class Simulation {
   // step's opening pass (one pass over the bodies for both: each body's arithmetic and bits as
   // two passes'), so nothing may read the bodies before that step or close_step(). With
   // contacts only (a distributed run's rank: its owned bodies); elsewhere the step closes as usual.
-  void step(bool leave_kick_open = false);
-  // Applies a closing kick left open (nothing to do otherwise): the bodies at the full step.
+  // `next_follows` (with leave_kick_open): the caller's next call is step(), so one process may
+  // run that step's joined pass right behind this step's pair walk (TrailingPass, spheres' lists).
+  void step(bool leave_kick_open = false, bool next_follows = false);
+  // Applies a closing kick left open (nothing to do otherwise): the bodies at the full step. After
+  // a step whose next one has begun (next_follows) nothing: the next step() closes it.
   void close_step();
   bool kick_open() const { return kick_open_; }
+  bool ran_ahead() const { return trailed_; }  // the last step ran the next one's joined pass (next_follows)
 
   // The contacts' energies enter `ledger` when it closes, at the end of every kLedgerSteps-th
   // step (close_ledger; a collective); between, each pair sums its own, flushed exactly when its
@@ -162,6 +167,7 @@ class Simulation {
   bool turns_left() const;
   void keep_turns();        // the last step's turns, left open with its kick: for the joined pass
   void book_kept_turns();   // after the joined pass: their work
+  bool trails_walk(bool next_follows, PointWatch& watch);  // the next step's joined pass behind this one's walk
   ForceSums closing_sums();  // one process: the sums a closing pass adds (from gravity where nothing else acts)
   StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 
@@ -170,6 +176,8 @@ class Simulation {
   std::unique_ptr<ContactEngine> engine_;
   RotorGroups rotors_;           // spheres turn no orientation, isotropic bodies take one rotation
   TurnTable kept_turns_;         // one process: the turns the joined pass applies (keep_turns)
+  TrailingPass trailing_;        // one process's joined pass run behind the last step's walk
+  bool trailed_ = false;         // the last step ran it: this step's first region moves the rest
   TimeStepEstimate dt_estimate_;
   std::string impact_warning_;  // fast_impact_warning
   double dt_ = 0.0;

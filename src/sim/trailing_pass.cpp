@@ -1,0 +1,62 @@
+#include "sim/trailing_pass.hpp"
+
+#include <omp.h>
+
+#include "polydem/parallel.hpp"
+
+namespace polydem {
+
+bool trailing_fits(const RotorGroups& groups, std::size_t n) {
+  return groups.spheres_alike && groups.spheres_in_order && groups.spheres.size() == n && groups.isotropic.empty() &&
+         groups.asymmetric.empty();
+}
+
+WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity, ForceSums sums,
+                             const PointWatch& watch) {
+  arrays_ = alike_arrays_of(b, 0);
+  h_ = h, dt_ = dt, gravity_ = gravity;
+  sums.late = LateTerms{};  // a body moved behind its walk has every pair in its home chunk: no late term
+  sums_ = sums;
+  watch_ = watch;
+  done_.assign(std::size_t(omp_get_max_threads()), BodyRange{});
+  return {&TrailingPass::pass, this, done_.data()};
+}
+
+void TrailingPass::pass(const void* self, std::uint32_t first, std::uint32_t last) {
+  const TrailingPass& p = *static_cast<const TrailingPass*>(self);
+  const AlikeArrays a = p.arrays_;  // in registers, as over_group's copy
+  const ForceSums sums = p.sums_;
+  const PointWatch watch = p.watch_;
+  for (std::uint32_t i = first; i < last; ++i)
+    integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, p.h_, p.dt_, p.gravity_, sums, watch);
+}
+
+void TrailingPass::close(std::size_t n) {
+  left_.clear();
+  left_count_ = 0;
+  std::uint32_t at = 0;  // the threads' ranges are increasing with the thread
+  for (const BodyRange& d : done_) {
+    if (d.first == d.last) continue;
+    if (at < d.first) left_.push_back({at, d.first}), left_count_ += d.first - at;
+    at = d.last;
+  }
+  if (at < n) left_.push_back({at, std::uint32_t(n)}), left_count_ += std::uint32_t(n) - at;
+}
+
+void TrailingPass::rest(const ForceSums& sums) const {
+  const AlikeArrays a = arrays_;
+  const PointWatch watch = watch_;
+  const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
+  std::size_t skipped = 0;  // bodies of the gaps before this one
+  for (const BodyRange& g : left_) {
+    const std::size_t size = g.last - g.first;
+    const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
+    for (std::size_t k = from; k < to; ++k)
+      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, g.first + (k - skipped), h_, dt_, gravity_,
+                                                                    sums, watch);
+    skipped += size;
+  }
+#pragma omp barrier
+}
+
+}  // namespace polydem
