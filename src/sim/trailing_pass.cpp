@@ -24,11 +24,14 @@ WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity
 
 void TrailingPass::pass(const void* self, std::uint32_t first, std::uint32_t last) {
   const TrailingPass& p = *static_cast<const TrailingPass*>(self);
-  const AlikeArrays a = p.arrays_;  // in registers, as over_group's copy
+  // Copies, as over_group's: the arrays' stores may alias `p`, whose members would be reloaded each body.
+  const AlikeArrays a = p.arrays_;
   const ForceSums sums = p.sums_;
   const PointWatch watch = p.watch_;
+  const double h = p.h_, dt = p.dt_;  // s
+  const Vec3 gravity = p.gravity_;    // m/s^2
   for (std::uint32_t i = first; i < last; ++i)
-    integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, p.h_, p.dt_, p.gravity_, sums, watch);
+    integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
 }
 
 void TrailingPass::close(std::size_t n) {
@@ -44,16 +47,18 @@ void TrailingPass::close(std::size_t n) {
 }
 
 void TrailingPass::rest(const ForceSums& sums) const {
-  const AlikeArrays a = arrays_;
+  const AlikeArrays a = arrays_;  // copies, as pass's
   const PointWatch watch = watch_;
+  const double h = h_, dt = dt_;  // s
+  const Vec3 gravity = gravity_;  // m/s^2
   const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
   std::size_t skipped = 0;  // bodies of the gaps before this one
   for (const BodyRange& g : left_) {
     const std::size_t size = g.last - g.first;
     const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
     for (std::size_t k = from; k < to; ++k)
-      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, g.first + (k - skipped), h_, dt_, gravity_,
-                                                                    sums, watch);
+      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, g.first + (k - skipped), h, dt, gravity, sums,
+                                                                    watch);
     skipped += size;
   }
 #pragma omp barrier
