@@ -381,9 +381,9 @@ void Simulation::book_kept_turns() {
   kept_turns_.book([&](double work) { engine_->book_turn(work); });
 }
 
-// One process, the kick left open and the next step to follow, spheres' lists with nothing but gravity and the contacts
-// acting: the next step's joined pass (its watched one) can run behind this step's walk, `watch`
-// its rebuild test.
+// One process, the kick left open and the next step to follow, spheres' lists with nothing but
+// gravity and the contacts acting: the next step's joined pass (its watched one) can run behind
+// this step's walk, `watch` its rebuild test.
 bool Simulation::trails_walk(bool next_follows, PointWatch& watch) {
   return next_follows && scene_.forces.contact.present && !ranks_ && !external_ && engine_->spheres_only() &&
          trailing_fits(rotors_, bodies.size()) && engine_->watch_motion(all_owned(bodies), watch);
