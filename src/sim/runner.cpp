@@ -520,6 +520,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
   omp_set_num_threads(threads);
   double stepping = 0.0;  // s of wall time inside the steps: what the governor compares, output apart
   bool stopping = false;  // interrupted after a step that kept no contact records: one more step, then stop
+  sim.open_steps_follow(true);  // an interrupt after an open step: close_step leaves its kick to that extra step
   while (sim.step_index() < last_step) {
     // Contact points and forces are kept only for a step whose state is written after it (the
     // same decision on every rank: an interrupt is seen by all after the step, see below).
@@ -534,7 +535,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& o) {
     const bool unread = !recorded && next % kCheckSteps != 0 && !vtk.due_at(t_next, dt) && !csv.due_at(t_next, dt);
     try {
       const auto step_start = Clock::now();
-      sim.step(unread, unread);  // an interrupt after it: close_step leaves the kick to the extra step
+      sim.step(unread);
       stepping += std::chrono::duration<double>(Clock::now() - step_start).count();
     } catch (const RunError&) {  // the neighbour search refuses non-finite positions (every rank alike)
       const long bad = sim.first_non_finite();  // a rank holds only its bodies current: the first over all

@@ -242,7 +242,7 @@ void Simulation::driver_work_half() {
 // and checks its thread's bodies; the pair loops' results are read after the join), else after
 // the pair loops too (a closing kick in the region reads every body's sum). Many ranks: the
 // contact stage runs between the regions, exchanges and all, and each rank moves the bodies it owns.
-void Simulation::step(bool leave_kick_open, bool next_follows) {
+void Simulation::step(bool leave_kick_open) {
   const bool contacts = scene_.forces.contact.present;
   const bool one_process = !ranks_;
   const bool team = bodies.size() >= kParallelMinItems;
@@ -317,7 +317,7 @@ void Simulation::step(bool leave_kick_open, bool next_follows) {
     }
   }
   PointWatch next_watch;
-  const bool trailing = trails_walk(leave_kick_open && next_follows, next_watch);
+  const bool trailing = trails_walk(leave_kick_open && open_steps_follow_, next_watch);
   const WalkTrail trail =
       trailing ? trailing_.open(bodies, 0.5 * dt_, dt_, gravity_, closing_sums(), next_watch) : WalkTrail{};
   in_team(team, [&] {

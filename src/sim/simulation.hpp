@@ -55,14 +55,16 @@ class Simulation {
   // step's opening pass (one pass over the bodies for both: each body's arithmetic and bits as
   // two passes'), so nothing may read the bodies before that step or close_step(). With
   // contacts only (a distributed run's rank: its owned bodies); elsewhere the step closes as usual.
-  // `next_follows` (with leave_kick_open): the caller's next call is step(), so one process may
-  // run that step's joined pass right behind this step's pair walk (TrailingPass, spheres' lists).
-  void step(bool leave_kick_open = false, bool next_follows = false);
+  void step(bool leave_kick_open = false);
+  // On: after a step left open the caller's next call is step() (the run loop), so one process
+  // may run that step's joined pass right behind this step's pair walk (TrailingPass, spheres'
+  // lists). The signature of step() stays: the counting tools toggle on it.
+  void open_steps_follow(bool on) { open_steps_follow_ = on; }
   // Applies a closing kick left open (nothing to do otherwise): the bodies at the full step. After
-  // a step whose next one has begun (next_follows) nothing: the next step() closes it.
+  // a step whose next one has begun (open_steps_follow) nothing: the next step() closes it.
   void close_step();
   bool kick_open() const { return kick_open_; }
-  bool ran_ahead() const { return trailed_; }  // the last step ran the next one's joined pass (next_follows)
+  bool ran_ahead() const { return trailed_; }  // the last step ran the next one's joined pass (open_steps_follow)
 
   // The contacts' energies enter `ledger` when it closes, at the end of every kLedgerSteps-th
   // step (close_ledger; a collective); between, each pair sums its own, flushed exactly when its
@@ -178,6 +180,7 @@ class Simulation {
   TurnTable kept_turns_;         // one process: the turns the joined pass applies (keep_turns)
   TrailingPass trailing_;        // one process's joined pass run behind the last step's walk
   bool trailed_ = false;         // the last step ran it: this step's first region moves the rest
+  bool open_steps_follow_ = false;
   TimeStepEstimate dt_estimate_;
   std::string impact_warning_;  // fast_impact_warning
   double dt_ = 0.0;

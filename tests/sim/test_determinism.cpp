@@ -47,14 +47,15 @@ std::uint64_t run_open(const Scene& scene, const ShapeLibrary& lib, const std::v
   return fnv(state_hash(sim.bodies), energies, sizeof(energies));
 }
 
-// The same with each open step's next one begun behind its walk (next_follows), at `threads`;
+// The same with each open step's next one begun behind its walk (open_steps_follow), at `threads`;
 // `ahead` counts the steps that ran it.
 std::uint64_t run_ahead(const Scene& scene, const ShapeLibrary& lib, const std::vector<BodySpec>& specs, int steps,
                         int threads, int& ahead) {
   omp_set_num_threads(threads);
   Simulation sim(scene, lib, specs);
+  sim.open_steps_follow(true);
   for (int s = 1; s <= steps; ++s) {
-    sim.step(s < steps, s < steps);
+    sim.step(s < steps);
     ahead += sim.ran_ahead();
   }
   omp_set_num_threads(2);
