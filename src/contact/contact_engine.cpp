@@ -273,9 +273,12 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
   PairList fresh, fresh_d;
   // A sphere list's records are written by the step's kernel, not carried: sized only once the
   // old lists are freed, so a rebuild at an output step holds no more than another.
-  fresh.recording = !spheres_only_;
+  fresh.recording = !spheres_only_ && record_contacts_;  // a sparse list's states are sized with their records
   fresh.sparse = !spheres_only_;  // the sphere kernel's one slot a pair stays dense
+  fresh.rolls = fresh.sparse && settings_.particle.rolling;  // its states' rolling moments, apart
+  fresh_d.recording = record_contacts_;
   fresh_d.sparse = true;
+  fresh_d.rolls = settings_.driver.rolling;
   {  // the broad phase's pairs are freed before the slots' state is sized
     std::vector<BodyPair> near;
     if (skin_.empty()) {

@@ -213,11 +213,13 @@ class ContactEngine {
   void force_rebuild() { must_rebuild_ = true; }
   // Whether the coming steps keep each active contact's point and forces (PairList::records),
   // which contact output and checkpoints read: on by default; the run loop turns it off for
-  // steps after which nothing is written. Only a sphere list obeys (56 bytes a slot saved
-  // between output steps); lists of polyhedra and drivers always record for their hand-over.
+  // steps after which nothing is written (a sphere list's 56 bytes a slot, a sparse list's 32 a
+  // state saved between output steps; a sparse list keeps its points for the hand-over).
   void record_contacts(bool on) {
     record_contacts_ = on;
-    if (spheres_only_) body_list_.set_recording(on);
+    // A dense list read from a checkpoint or table keeps its records for the rebuild to carry.
+    if (spheres_only_ || body_list_.sparse) body_list_.set_recording(on);
+    if (driver_list_.sparse) driver_list_.set_recording(on);
   }
   bool records_contacts() const { return record_contacts_; }
   // Whether close_forces sums the drivers' reactions (pair order, on one thread: ~24k
@@ -329,7 +331,7 @@ class ContactEngine {
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
   std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
-  bool record_contacts_ = true;            // the sphere list keeps its records (record_contacts)
+  bool record_contacts_ = true;            // the lists keep their records (record_contacts)
   bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)
   bool margins_read_ = false;              // a step since the last rebuild read the pair rule (watch_motion)
   // owned_margins' part for points: measured where margins_read_, else `past` alone.

@@ -27,7 +27,9 @@ PairList active_part(const PairList& list) {
   kept.slot_begin.reserve(n_pairs + 1);
   kept.features.reserve(n_slots);
   kept.slots.reserve(n_slots);
-  if (list.recording) kept.records.reserve(n_slots);
+  // A sparse list's points always: the hand-over reads them (force and fn +0 while not recording).
+  kept.recording = list.recording || list.sparse;
+  if (kept.recording) kept.records.reserve(n_slots);
   kept.slot_begin.push_back(0);
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::size_t before = kept.slots.size();
@@ -35,7 +37,7 @@ PairList active_part(const PairList& list) {
       if (!list.active[s]) continue;
       kept.features.push_back(list.features[s]);
       kept.slots.push_back(ContactSlot{list.history(s), {}});
-      if (list.recording) kept.records.push_back(list.record(s));
+      if (kept.recording) kept.records.push_back(list.record(s));
     }
     if (kept.slots.size() == before) continue;
     kept.pairs.push_back(list.pairs[k]);
@@ -43,7 +45,6 @@ PairList active_part(const PairList& list) {
     kept.slot_begin.push_back(std::uint32_t(kept.slots.size()));
   }
   kept.active.assign(kept.slots.size(), 1);
-  kept.recording = list.recording;
   return kept;
 }
 
@@ -65,8 +66,8 @@ std::vector<std::uint32_t> carry_history(const PairList& old_list, PairList& fre
       const std::uint64_t key = feature_key(old_list.features[s]);
       while (s_new < s_new_end && feature_key(fresh.features[s_new]) < key) ++s_new;
       if (s_new < s_new_end && feature_key(fresh.features[s_new]) == key) {
-        fresh.history(s_new) = old_list.history(s);  // a sparse list's states made here in slot order
-        if (fresh.recording) fresh.record(s_new) = old_list.recording ? old_list.record(s) : SlotRecord{};
+        fresh.set_history(s_new, old_list.history(s));  // a sparse list's states made here in slot order
+        fresh.set_record(s_new, old_list.record(s));
         fresh.active[s_new] = 1;
         ++fresh.touching[k_new];
       }

@@ -60,11 +60,12 @@ struct PairList {
   std::vector<std::uint32_t> slot_begin;   // slots of pair k: [slot_begin[k], slot_begin[k+1])
   std::vector<FeaturePair> features;       // per slot: the key (type, feature of i, feature of j); hot
   // Sparse (lists of polyhedra and drivers): a slot's state is states[state_of[s]], made at its
-  // first touch since the build (kNoState before), always with its record (the hand-over reads
-  // the points). Dense (spheres, and lists read from checkpoints and tables): `slots` and, when
-  // `recording`, `records` per slot; the sphere fast path records only at the steps whose state
-  // is written (ContactEngine::record_contacts). Only active slots' state is read.
+  // first touch since the build (kNoState before), always with its record's point (the hand-over
+  // reads it), its force and fn while `recording`. Dense (spheres, and lists read from checkpoints
+  // and tables): `slots` and, when `recording`, `records` per slot. Both record only at the steps
+  // whose state is written (ContactEngine::record_contacts). Only active slots' state is read.
   bool sparse = false;
+  bool rolls = false;  // a sparse list's states keep rolling moments (its law rolls)
   std::vector<std::uint32_t> state_of;
   SlotStore states;
   std::vector<ContactSlot> slots;
@@ -92,9 +93,20 @@ struct PairList {
     if (g == kNoState) g = states.make();
     return states[g];
   }
-  // Slot s's history and record, made on first use in a sparse list (the const ones: an active slot's).
-  ContactHistory& history(std::uint32_t s) { return sparse ? touch(s).history : slots[s].history; }
-  const ContactHistory& history(std::uint32_t s) const { return sparse ? states[state_of[s]].history : slots[s].history; }
+  // Slot s's history (an active slot's, in a sparse list), and its setter (made on first use).
+  ContactHistory history(std::uint32_t s) const {
+    if (!sparse) return slots[s].history;
+    const std::uint32_t g = state_of[s];
+    return states[g].history(states.rolls() ? states.moment(g) : Vec3::Zero());
+  }
+  void set_history(std::uint32_t s, const ContactHistory& h) {
+    if (!sparse) {
+      slots[s].history = h;
+      return;
+    }
+    touch(s).keep(h);
+    if (states.rolls()) states.moment(state_of[s]) = h.mr;
+  }
   // J, pair k's energies summed in step order since the ledger last closed or its contact began
   // (ContactEngine::flush_ended): the same bits whatever thread or rank steps the pair and
   // whenever the lists rebuild (carried with the history; zero while not touching). A dense
@@ -107,11 +119,26 @@ struct PairList {
     if (sparse) return k < pending.size() ? pending[k] : EnergyParts{};
     return has_slots(k) ? slots[slot_begin[k]].pending : EnergyParts{};
   }
-  SlotRecord& record(std::uint32_t s) { return sparse ? touch(s).record : records.at(s); }
-  const SlotRecord& record(std::uint32_t s) const { return sparse ? states[state_of[s]].record : records.at(s); }
+  // Slot s's record (an active slot's; force and fn +0 while not recording), and its setter (a
+  // sparse list keeps the point always, a dense one all only while recording).
+  SlotRecord record(std::uint32_t s) const {
+    if (!sparse) return recording ? records.at(s) : SlotRecord{};
+    const std::uint32_t g = state_of[s];
+    if (!recording) return SlotRecord{states[g].point, Vec3::Zero(), 0.0};
+    return SlotRecord{states[g].point, states.force(g).force, states.force(g).fn};
+  }
+  void set_record(std::uint32_t s, const SlotRecord& r) {
+    if (!sparse) {
+      if (recording) records.at(s) = r;
+      return;
+    }
+    touch(s).point = r.point;
+    if (recording) states.force(state_of[s]) = SlotForce{r.force, r.fn};
+  }
   void set_recording(bool on) {
     recording = on;
-    if (on) records.resize(slots.size());
+    if (sparse) states.set_records(on);  // 32 bytes a state freed between output steps
+    else if (on) records.resize(slots.size());
     else release(records);  // freed: a sphere's 56 bytes a slot between output steps
   }
   // pair_steps false: no linear_steps (a kernel that keeps one k', c' for all pairs).

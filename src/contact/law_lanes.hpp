@@ -36,9 +36,10 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
 // for every lane (one pair's); the law's constants (kn, kt, mu, dt) are pc[0]'s.
 // Bit l of the result is set when lane l was: its force is in out[l], its torque about its xi (N m)
 // in torque[l], and its history h[l] is advanced; another lane's h, out and torque are left as they were.
-template <int N, bool kAcross = false>
+// H: ContactHistory, or a sparse list's SlotState (the same springs by name, read and written in place).
+template <int N, bool kAcross = false, class H>
 [[gnu::always_inline]] inline unsigned steady_law(const LaneConstants* const pc[N], const ContactPoint* const g[N],
-                                                  const double w_of[N], ContactHistory* const h[N],
+                                                  const double w_of[N], H* const h[N],
                                                   ContactForce out[N], Vec3 torque[N]) {
   using namespace lanes;
   using V = typename Types<N>::V;
@@ -120,22 +121,24 @@ template <int N, bool kAcross = false>
 }
 
 // Sub-contacts a and b side by side (steady_law<2>).
+template <class H>
 [[gnu::always_inline]] inline unsigned steady_lanes(const LaneConstants& p, const ContactPoint& ga,
-                                                    const ContactPoint& gb, double wa, double wb, ContactHistory& ha,
-                                                    ContactHistory& hb, ContactForce out[2], Vec3 torque[2]) {
+                                                    const ContactPoint& gb, double wa, double wb, H& ha, H& hb,
+                                                    ContactForce out[2], Vec3 torque[2]) {
   const LaneConstants* const pc[2] = {&p, &p};
   const ContactPoint* const g[2] = {&ga, &gb};
   const double w[2] = {wa, wb};
-  ContactHistory* const h[2] = {&ha, &hb};
+  H* const h[2] = {&ha, &hb};
   return steady_law<2>(pc, g, w, h, out, torque);
 }
 
 // One sub-contact (steady_law<1>): true when it was steady and done.
-[[gnu::always_inline]] inline bool steady_alone(const LaneConstants& p, const ContactPoint& g, double w,
-                                                ContactHistory& h, ContactForce& out, Vec3& torque) {
+template <class H>
+[[gnu::always_inline]] inline bool steady_alone(const LaneConstants& p, const ContactPoint& g, double w, H& h,
+                                                ContactForce& out, Vec3& torque) {
   const LaneConstants* const pc[1] = {&p};
   const ContactPoint* const gs[1] = {&g};
-  ContactHistory* const hs[1] = {&h};
+  H* const hs[1] = {&h};
   return steady_law<1>(pc, gs, &w, hs, &out, &torque) != 0;
 }
 

@@ -108,7 +108,7 @@ void size_slots(PairList& list) {
   const std::size_t n_slots = list.slot_begin.back();
   if (list.sparse) {  // states made as slots touch
     list.state_of.assign(n_slots, kNoState);
-    list.states.reset(n_slots);
+    list.states.reset(n_slots, list.rolls, list.recording);
   } else {
     list.slots.assign(n_slots, ContactSlot{});
     list.records.assign(list.recording ? n_slots : 0, SlotRecord{});

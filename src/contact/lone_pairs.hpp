@@ -37,7 +37,7 @@ struct LonePairKernel {
     const LaneConstants* const pc[2] = {&a.lc, &b.lc};
     const ContactPoint* const g[2] = {&a.contact.geometry, &bc->geometry};
     const double w[2] = {1.0, 1.0};  // a lone contact's patch weight
-    ContactHistory* const h[2] = {&a.contact.state->history, &bc->state->history};
+    SlotState* const h[2] = {a.contact.state, bc->state};
     ContactForce f[2];
     Vec3 torque[2];
     const unsigned steady = steady_law<2, true>(pc, g, w, h, f, torque);
@@ -52,7 +52,7 @@ struct LonePairKernel {
   void alone(LonePair& a, PairScratch& scratch) const {
     ContactForce f;
     Vec3 torque;
-    const bool steady = steady_alone(a.lc, a.contact.geometry, 1.0, a.contact.state->history, f, torque);
+    const bool steady = steady_alone(a.lc, a.contact.geometry, 1.0, *a.contact.state, f, torque);
     finish(a, a.contact, steady, f, torque, scratch);
   }
 
@@ -61,7 +61,7 @@ struct LonePairKernel {
   // contact c (a.contact, or b's in the scratch while it is steady).
   [[gnu::always_inline]] void finish(LonePair& a, const FoundContact& c, bool steady, const ContactForce& f,
                                      const Vec3& torque, PairScratch& scratch) const {
-    if (steady) add_to_totals<true>(c, a.totals, f, torque);
+    if (steady) add_to_totals<true>(list, c, a.totals, f, torque);
     else by_law(a, scratch);
     const Vec3& xi = a.lc.xi;  // m
     a.totals.torque_j = -(a.totals.torque_i + (xi - partner.center(list.pairs[a.k].j)).cross(a.totals.force_i));

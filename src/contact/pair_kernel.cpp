@@ -17,7 +17,7 @@ EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uin
     if (!list.active[found[c].slot] && n_fresh < kMaxHandOver) fresh[n_fresh++] = std::uint32_t(c);
   for (std::uint32_t s = slot_begin; s < slot_end && n_ended < kMaxHandOver; ++s)
     if (list.active[s] && !now_on[s - slot_begin]) ended[n_ended++] = s;
-  for (int k = 0; k < n_fresh; ++k) list.history(found[fresh[k]].slot) = ContactHistory{};
+  for (int k = 0; k < n_fresh; ++k) list.set_history(found[fresh[k]].slot, ContactHistory{});
   // Greedy matching, closest pair first: each ended contact gives its history once.
   while (n_fresh > 0 && n_ended > 0) {
     int best_f = 0, best_e = 0;
@@ -27,8 +27,8 @@ EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uin
         const double d2 = (list.record(ended[e]).point - found[fresh[f]].geometry.point).squaredNorm();
         if (d2 < best) { best = d2; best_f = f; best_e = e; }
       }
-    list.history(found[fresh[best_f]].slot) = list.history(ended[best_e]);
-    list.history(ended[best_e]) = ContactHistory{};  // handed over: nothing released
+    list.set_history(found[fresh[best_f]].slot, list.history(ended[best_e]));
+    list.set_history(ended[best_e], ContactHistory{});  // handed over: nothing released
     fresh[best_f] = fresh[--n_fresh];
     ended[best_e] = ended[--n_ended];
   }
@@ -36,9 +36,8 @@ EnergyParts hand_over_history(PairList& list, std::uint32_t slot_begin, std::uin
   for (std::uint32_t s = slot_begin; s < slot_end; ++s) {
     const bool on = now_on[s - slot_begin] != 0;
     if (list.active[s] && !on) {
-      ContactHistory& history = list.history(s);
-      if (law) released += released_energy(*law, history, r_star);
-      history = ContactHistory{};  // its record is read no more: only active slots' are
+      if (law) released += released_energy(*law, list.history(s), r_star);
+      list.set_history(s, ContactHistory{});  // its record is read no more: only active slots' are
     }
     list.active[s] = on;
   }

@@ -82,7 +82,7 @@ struct FoundContact {
   FoundContact(std::uint32_t s, const ContactPoint& g) : slot(s), geometry(g) {}
   std::uint32_t slot;
   ContactPoint geometry;
-  SlotState* state;  // the slot's in a sparse list (find_contacts): the law's history and record
+  SlotState* state;  // the slot's in a sparse list (find_contacts): the law's springs and the record's point
 };
 
 // Patch weights (SPEC "faces in contact"): the sub-contacts of one pair share the pair's
@@ -166,11 +166,11 @@ inline void patch_onsets(bool regions, PairScratch& scratch) {
   scratch.onsets = true;
   const auto same = [&](std::size_t c, std::size_t o) { return !regions || scratch.region[o] == scratch.region[c]; };
   for (std::size_t c = 0; c < n; ++c) {
-    if (scratch.found[c].state->history.gap < 0.0) continue;  // overlapped at n (or took a history)
+    if (scratch.found[c].state->gap < 0.0) continue;  // overlapped at n (or took a history)
     double depth = 0.0;  // m
     for (std::size_t o = 0; o < n && depth >= 0.0; ++o) {
       if (!same(c, o)) continue;
-      if (scratch.found[o].state->history.gap < 0.0) depth = -1.0;
+      if (scratch.found[o].state->gap < 0.0) depth = -1.0;
       else depth = std::max(depth, -scratch.found[o].geometry.gap);
     }
     scratch.patch_depth[c] = depth;
@@ -192,7 +192,7 @@ inline void patch_pushes(const Vec3& xi, const Vec3& v_centre, const Vec3& w_rel
   for (std::size_t o = 0; o < n; ++o) {
     const ContactPoint& g = scratch.found[o].geometry;
     const double x = -g.gap, r = -(v_centre + w_rel.cross(g.point - xi)).dot(g.normal);  // m, m/s
-    const bool old = scratch.found[o].state->history.gap < 0.0 || !(x < r * dt);
+    const bool old = scratch.found[o].state->gap < 0.0 || !(x < r * dt);
     scratch.all_drift.push_back({x, r, old ? dt : x / r, old});
     touched = touched || !old;
   }
@@ -338,8 +338,8 @@ template <class Partner>
     next.slot = s;
     next.state = &list.touch(s);  // a shadowed one's too (rare): made, left as it was
     types |= 1u << unsigned(f.type);
-    // The slot's history is read and written by the law, after the pair's other candidates: fetch it
-    // now (its 80 bytes, two lines at most; the record after it is only written).
+    // The slot's state is read and written by the law, after the pair's other candidates: fetch it
+    // now (its 80 bytes, two lines at most).
     const char* state = reinterpret_cast<const char*>(next.state);
     __builtin_prefetch(state, 1);
     __builtin_prefetch(state + 64, 1);
@@ -378,16 +378,19 @@ struct LonePair {
   PairTotals totals;
 };
 
-// Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it.
+// Adds sub-contact c's force f and torque about i's centre to the pair's totals and records it
+// (its point always: the hand-over reads it; its force and fn while `list` records).
 // kSteady: a steady lane's contact (law_lanes.hpp), whose sliding and rolling shares are +0: not
 // added, as adding +0 to a sum changes it only from -0, and a sum that starts at +0 never is -0.
 template <bool kSteady = false>
-[[gnu::always_inline]] inline void add_to_totals(const FoundContact& found, PairTotals& totals, const ContactForce& f,
-                                                 const Vec3& torque) {
-  SlotRecord& record = found.state->record;  // always recording: the hand-over reads the point
-  record.point = found.geometry.point;  // member by member: an aggregate went through a copy on the stack
-  record.force = f.force;
-  record.fn = f.fn;
+[[gnu::always_inline]] inline void add_to_totals(PairList& list, const FoundContact& found, PairTotals& totals,
+                                                 const ContactForce& f, const Vec3& torque) {
+  found.state->point = found.geometry.point;
+  if (list.recording) [[unlikely]] {  // a step whose contacts are read
+    SlotForce& record = list.states.force(list.state_of[found.slot]);
+    record.force = f.force;  // member by member: an aggregate went through a copy on the stack
+    record.fn = f.fn;
+  }
   totals.force_i += f.force;
   totals.torque_i += torque;
   if constexpr (kSteady) {
@@ -400,7 +403,7 @@ template <bool kSteady = false>
 template <bool kSteady = false, class Partner>
 [[gnu::always_inline]] inline void add_contact(const PairLaw<Partner>& pl, std::size_t c, const ContactForce& f,
                                                const Vec3& torque) {
-  add_to_totals<kSteady>(pl.scratch.found[c], pl.totals, f, torque);
+  add_to_totals<kSteady>(pl.list, pl.scratch.found[c], pl.totals, f, torque);
 }
 
 // Sub-contact c through contact_force, as it computes a contact alone, added and recorded.
@@ -436,7 +439,14 @@ template <class Parts, class Partner>
                         law.contact_mass ? nullptr : &pl.list.linear_steps[pl.k],  // k', c' for the pair's fixed mass
                         pl.scratch.onsets ? pl.scratch.patch_depth[c] : 0.0,
                         pl.scratch.pushes && pl.scratch.pushing[c] ? &pl.scratch.patch_push[c] : nullptr};
-  const ContactForce f = contact_force<Parts, false, Stored::kSkip>(law, kin, pl.scratch.found[c].state->history, lc.dt);
+  SlotState& state = *pl.scratch.found[c].state;
+  Vec3* const moment = Parts::rolling && pl.list.states.rolls()  // N m, kept apart
+                           ? &pl.list.states.moment(pl.list.state_of[pl.scratch.found[c].slot])
+                           : nullptr;
+  ContactHistory h = state.history(moment ? *moment : Vec3::Zero());
+  const ContactForce f = contact_force<Parts, false, Stored::kSkip>(law, kin, h, lc.dt);
+  state.keep(h);
+  if (moment) *moment = h.mr;
   if constexpr (Parts::rolling) add_contact(pl, c, f, motion.lever.cross(f.force) + f.moment);
   else add_contact(pl, c, f, motion.lever.cross(f.force));
 }
@@ -460,8 +470,7 @@ template <class Parts, class Partner>
     Vec3 torque[2];
     const unsigned steady = steady_lanes(pl.lc, scratch.found[c].geometry, scratch.found[c + 1].geometry,
                                          scratch.weight[c], scratch.weight[c + 1],
-                                         scratch.found[c].state->history, scratch.found[c + 1].state->history, f,
-                                         torque);
+                                         *scratch.found[c].state, *scratch.found[c + 1].state, f, torque);
     if (steady & 1u) add_contact<true>(pl, c, f[0], torque[0]);
     else contact_by_law_apart<Parts>(pl, c);
     if (steady & 2u) add_contact<true>(pl, c + 1, f[1], torque[1]);
@@ -470,7 +479,7 @@ template <class Parts, class Partner>
   if (c == n) return;
   ContactForce f;
   Vec3 torque;
-  if (steady_alone(pl.lc, scratch.found[c].geometry, scratch.weight[c], scratch.found[c].state->history, f, torque))
+  if (steady_alone(pl.lc, scratch.found[c].geometry, scratch.weight[c], *scratch.found[c].state, f, torque))
     add_contact<true>(pl, c, f, torque);
   else
     contact_by_law_apart<Parts>(pl, c);

@@ -47,21 +47,22 @@ struct SteadyLawOf {
   lanes::Vec3Of<V> force;   // N, on i: fn n + ft
   typename lanes::Types<lanes::kWidth<V>>::Mask steady;  // overlapping now and at n, glued over the step, sticking
 };
-// Lanes' last steps: each one's history and k', c' (read where the law reads them, in its order).
-template <int N>
+// Lanes' last steps: each one's history (H: ContactHistory or a sparse list's SlotState) and k',
+// c' (read where the law reads them, in its order).
+template <int N, class H = ContactHistory>
 struct LastSteps {
-  const ContactHistory* h[N];
+  const H* h[N];
   const LinearStep* step[N];
 };
 // contact_force's steady branch for LawParts<NormalLinear> at weight 1 (the law's products by it
 // are exact) with the exact step, written once for the sphere pairs and the sphere-wall pairs: n
 // (unit, j to i), gap (m), v_rel and v_end (m/s, at the half step and the end), m (kg, the dashpot's
 // mass) and the lanes' last steps.
-template <class V, int N = lanes::kWidth<V>>
+template <class V, int N = lanes::kWidth<V>, class H = ContactHistory>
 [[gnu::always_inline]] inline SteadyLawOf<V> steady_linear_law(const LawParams& law, double dt, const lanes::Vec3Of<V>& n,
                                                                 V gap, const lanes::Vec3Of<V>& v_rel,
                                                                 const lanes::Vec3Of<V>& v_end, V m,
-                                                                const LastSteps<N>& last) {
+                                                                const LastSteps<N, H>& last) {
   using namespace lanes;
   using V3 = Vec3Of<V>;
   const V zero = splat<V>(0.0), dt_v = splat<V>(dt);

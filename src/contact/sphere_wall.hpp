@@ -90,9 +90,14 @@ template <class Parts>
                         law.exact_step,
                         law.contact_mass ? nullptr : &sizes.steps[k & sizes.mask]};
   SlotState& state = list.touch(s);  // a driver list is sparse
+  Vec3* const moment = Parts::rolling && list.states.rolls() ? &list.states.moment(list.state_of[s]) : nullptr;  // N m
+  ContactHistory h = state.history(moment ? *moment : Vec3::Zero());
   // kLone: weights 1 at both steps, as every sphere-wall contact's (no division by them: the same bits).
-  const ContactForce f = contact_force<Parts, true, Stored::kSkip>(law, kin, state.history, dt);
-  state.record = {point, f.force, f.fn};  // a driver list always records: the hand-over reads the point
+  const ContactForce f = contact_force<Parts, true, Stored::kSkip>(law, kin, h, dt);
+  state.keep(h);
+  if (moment) *moment = h.mr;
+  state.point = point;  // a driver list keeps its points: the hand-over reads them
+  if (list.recording) list.states.force(list.state_of[s]) = SlotForce{f.force, f.fn};
   totals.force_i += f.force;  // from zero, as apply_law's sum: the same signed zeros
   totals.torque_i += lever.cross(f.force) + f.moment;
   totals.energy += energy_parts(f);

@@ -39,12 +39,12 @@ template <int N, class Take>
   std::uint32_t body[N];
   const DriverState* wall[N];
   SlotState* state[N];
-  LastSteps<N> last;
+  LastSteps<N, SlotState> last;
   for (int l = 0; l < N; ++l) {
     body[l] = list.pairs[ks[l]].i;
     wall[l] = &drivers[list.pairs[ks[l]].j];
     state[l] = &list.touch(list.slot_begin[ks[l]]);  // made: the slot is active
-    last.h[l] = &state[l]->history;
+    last.h[l] = state[l];
     last.step[l] = &sizes.steps[ks[l] & sizes.mask];
   }
   const auto each = [&](auto get) { return gather<V>(get); };
@@ -75,14 +75,15 @@ template <int N, class Take>
       take(l, nullptr);
       continue;
     }
-    ContactHistory& hl = state[l]->history;
+    SlotState& hl = *state[l];
     hl.ft = lane(f.ft, l);
     hl.fd = at(f.fd, l);
     hl.gap = at(gap, l);
     hl.weight = 1.0;
     hl.slipping = false;  // under its cap
     const Vec3 force = lane(f.force, l);
-    state[l]->record = {lane(point, l), force, at(f.fn, l)};
+    hl.point = lane(point, l);
+    if (list.recording) list.states.force(list.state_of[list.slot_begin[ks[l]]]) = SlotForce{force, at(f.fn, l)};
     PairTotals t;
     t.force_i = lane(force_i, l);
     t.torque_i = lane(torque_i, l);

@@ -42,7 +42,8 @@ void write_active(Writer& w, const PairList& list) {
         w.pod(list.pairs[k].i);
         w.pod(list.pairs[k].j);
         const ContactSlot slot{list.history(s), {}};
-        slot_fields(w, list.features[s], slot, list.record(s));  // a dense list must record
+        const SlotRecord record = list.record(s);  // a dense list must record
+        slot_fields(w, list.features[s], slot, record);
       }
   for (std::size_t k = 0; k < list.size(); ++k)  // the pairs above, in order: their pending energies
     for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)

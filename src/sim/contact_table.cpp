@@ -14,7 +14,7 @@ void append_pair_slots(const PairList& list, std::size_t k, const std::vector<st
   for (std::uint32_t s = list.slot_begin[k]; s < list.slot_begin[k + 1]; ++s)
     if (list.active[s])
       out.push_back({ids[p.i], driver ? p.j : ids[p.j], list.features[s], {list.history(s), {}},
-                     list.recording ? list.record(s) : SlotRecord{}});
+                     list.record(s)});
   if (out.size() > first) out[first].slot.pending = list.open_energy(k);
 }
 
@@ -189,7 +189,7 @@ PairList kept_table(const PairList& list, const std::vector<std::uint32_t>& row_
       if (!list.active[s]) continue;
       mine.features.push_back(list.features[s]);
       mine.slots.emplace_back(list.history(s), first ? list.open_energy(k) : EnergyParts{});
-      mine.records.push_back(list.recording ? list.record(s) : SlotRecord{});
+      mine.records.push_back(list.record(s));
       first = false;
     }
     if (first) continue;  // no active slot: nothing to hand over

@@ -60,8 +60,8 @@ TEST_CASE("a sparse list holds states for the carried slots alone, then for each
   CHECK(fresh.state_of[1] == kNoState);
   const SlotState& made = fresh.touch(6);  // a new contact: a zero state
   CHECK(fresh.states.size() == 4);
-  CHECK(made.history.gap == kNoGap);
-  CHECK(made.record.fn == 0.0);
+  CHECK(made.gap == kNoGap);
+  CHECK(fresh.record(6).fn == 0.0);
   CHECK(&fresh.touch(6) == &made);  // made once
 }
 
@@ -72,7 +72,7 @@ TEST_CASE("a sparse list's states made by several threads at once are distinct a
 #pragma omp parallel for schedule(dynamic, 7)
   for (std::uint32_t s = 0; s < n; ++s) {
     SlotState& state = list.touch(s);
-    state.history.fd = double(s);  // N, a tag
+    state.fd = double(s);  // N, a tag
     at[s] = &state;
   }
   CHECK(list.states.size() == n);

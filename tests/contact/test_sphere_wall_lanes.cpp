@@ -47,14 +47,15 @@ PairList random_wall_list(Draw& d, const std::vector<BodyPair>& pairs, const Law
   list.sparse = true;  // before resize_results: a sparse list keeps its pairs' energies apart
   list.resize_results();
   list.state_of.assign(pairs.size(), kNoState);
-  list.states.reset(pairs.size());
+  list.rolls = law.rolling;
+  list.states.reset(pairs.size(), list.rolls, list.recording);
   list.features.resize(pairs.size());
   list.slot_begin.push_back(0);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     list.slot_begin.push_back(std::uint32_t(k + 1));
     list.active.push_back(!d.chance(0.05));
     list.touching[k] = list.active.back();
-    if (list.active.back()) list.touch(std::uint32_t(k)).history = random_history(d);
+    if (list.active.back()) list.set_history(std::uint32_t(k), random_history(d));
     if (list.touching[k]) list.pending[k] = {d.uniform(0.0, 1e-6), 0.0, 0.0, 0.0};  // J; +0 while not touching
     if (!d.chance(0.05)) list.linear_steps[k] = linear_step(law.kn, law.alpha_n, s.mass[pairs[k].i], kDt);
   }
