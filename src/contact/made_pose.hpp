@@ -45,7 +45,7 @@ struct MadePose {
   MadeBox own;  // where the body's slot holds the other side's body
 };
 
-// with_vertices' slot lookup, and the make where b is not there (inline: out of line, +99
+// with_vertices' slot lookup, and the make where b is not there (inline: out of line, +93
 // instructions a cube-step at 54,000; the walk of stored vertices is another instance, no test).
 [[gnu::always_inline]] inline const PosedBody& find_or_make(const PosedBody& posed, std::uint32_t b, ShapeBoxes boxes,
                                                        MadeCorners& corners, MadePose& made, const MadePose& other) {
