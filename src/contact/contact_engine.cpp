@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "polydem/line_audit.hpp"
@@ -22,9 +23,12 @@ namespace polydem {
 
 namespace {
 
-// The partner of a body-body pair: the other body.
+// The partner of a body-body pair: the other body. kMade: a box's vertices are made where read
+// (made_pose.hpp); else every pose's are stored, and read with no test (chosen once a step).
+template <bool kMade>
 struct BodyPartner {
   static constexpr bool kRetires = true;  // the kernels' allowances hold between two bodies (pair_kernel.hpp)
+  static constexpr bool kMadeVertices = kMade;
   const PosedBody* posed;
   const Vec3* position;          // m
   const Vec3* velocity;          // m/s
@@ -33,35 +37,40 @@ struct BodyPartner {
   const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;            // kg
   const double* displacement;  // m, per body since the lists were built
-  const Vec3* world_vertices;
+  const Vec3* world_vertices;  // null: every body a box, its vertices made where read
   const std::uint32_t* vertex_offset;  // body j's vertices: world_vertices[vertex_offset[j] ...]
+  ShapeBoxes boxes;
   // Starts loading what the kernels will read of body j: its pose, vertices and velocities
   // sit anywhere in memory, and the next pair's loads would otherwise stall.
   void prefetch(std::uint32_t j) const {
     const char* pose = reinterpret_cast<const char*>(&posed[j]);
     __builtin_prefetch(pose);
     __builtin_prefetch(pose + 64);
-    const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
-    const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
-    for (; v < v_end; v += 64) __builtin_prefetch(v);
+    if (world_vertices) {
+      const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
+      const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
+      for (; v < v_end; v += 64) __builtin_prefetch(v);
+    }
     __builtin_prefetch(&velocity[j]);
     __builtin_prefetch(&angular_velocity[j]);
     __builtin_prefetch(&velocity_end[j]);
     __builtin_prefetch(&angular_velocity_end[j]);
   }
-  bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
-    return feature_contact(a, posed[j], f, max_gap, out);
+  const PosedBody& posed_of(std::uint32_t j, PairScratch& s) const {
+    if constexpr (kMade) return with_vertices(posed[j], j, boxes, s.corners, s.made_j, s.made_i);
+    return posed[j];
   }
-  double allowance(const PosedBody& a, std::uint32_t j, FeaturePair f) const { return rejection_allowance(a, posed[j], f); }  // m
+  bool contact(const PosedBody& a, const PosedBody& b, FeaturePair f, double max_gap, ContactPoint& out) const {
+    return feature_contact(a, b, f, max_gap, out);
+  }
+  double allowance(const PosedBody& a, const PosedBody& b, FeaturePair f) const { return rejection_allowance(a, b, f); }  // m
   // Rigorous: a feature distance shrinks by at most the two bodies' displacement bounds.
   bool apart(const PairList& list, std::uint32_t k, double band) const {
     const BodyPair p = list.pairs[k];
     return list.gap_at_build[k] - displacement[p.i] - displacement[p.j] >= band;
   }
   double moved(std::uint32_t i, std::uint32_t j) const { return displacement[i] + displacement[j]; }  // m
-  bool separated(const PosedBody& a, std::uint32_t j, double band) const {
-    return separated_along_centres(a, posed[j], band);
-  }
+  bool separated(const PosedBody& a, const PosedBody& b, double band) const { return separated_along_centres(a, b, band); }
   double radius(std::uint32_t j) const { return posed[j].radius; }
   double r_star(double r_i, std::uint32_t j) const { return r_i * posed[j].radius / (r_i + posed[j].radius); }  // m
   bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
@@ -79,11 +88,14 @@ struct BodyPartner {
   }
 };
 
-// The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC).
+// The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC). kMade: as BodyPartner's.
+template <bool kMade>
 struct DriverPartner {
   static constexpr bool kRetires = false;  // a driver's kernels pose their partner anew: no allowance
+  static constexpr bool kMadeVertices = kMade;
   const Drivers* drivers;
   const double* mass;  // kg, per local body
+  std::uint32_t posed_of(std::uint32_t j, PairScratch&) const { return j; }  // its kernels pose it themselves
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return drivers->contact(a, j, f, max_gap, out);
   }
@@ -127,9 +139,11 @@ struct PoseArrays {
   const std::uint32_t* vertex_offset;
   Vec3* world_vertices;  // m
   PosedBody* posed;
+  bool box_vertices;  // a box's too (a rebuild's readers); else left unmade, made where read (made_pose.hpp)
 };
 
 // Body b's rotation and world vertices, filled in place: no temporary pose to copy.
+// A box's vertices only where a.box_vertices: a step's walk makes them (with_vertices).
 [[gnu::always_inline]] inline void pose_body(const PoseArrays& a, std::uint32_t b) {
   const Shape& s = a.shapes[a.shape[b]];
   Vec3* v = a.world_vertices + a.vertex_offset[b];
@@ -138,15 +152,24 @@ struct PoseArrays {
   const Vec3 position = a.position[b];  // m
   const double scale = a.scale[b];
   posed.rotation = a.orientation[b].toRotationMatrix();  // once per body and step
-  if (const std::optional<BoxCorners>& box = a.boxes[a.shape[b]])
-    pose_box(*box, scale, position, posed.rotation, v);  // the same bits in a third of the arithmetic
-  else
+  const std::optional<BoxCorners>& box = a.boxes[a.shape[b]];
+  if (!box)
     pose_vertices(s, scale, position, posed.rotation, v);
+  else if (a.box_vertices)
+    pose_box(*box, scale, position, posed.rotation, v);  // the same bits in a third of the arithmetic
   posed.shape = &s;
-  posed.vertices = v;
+  posed.vertices = box && !a.box_vertices ? nullptr : v;
   posed.position = position;
   posed.radius = s.radius * scale;
   posed.scale = scale;
+}
+
+// f(std::true_type{}) where a box's vertices are made where read, else f(std::false_type{}): the
+// walk's kernels chosen once a step, the stored path with no test a pair (made_pose.hpp).
+template <class F>
+void with_made(bool made, F&& f) {
+  if (made) f(std::true_type{});
+  else f(std::false_type{});
 }
 
 }  // namespace
@@ -176,6 +199,9 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   any_sphere_ = std::any_of(shape.begin(), shape.end(), [&](int s) { return shapes_[s].is_sphere(); });
   radius_.resize(n);
   for (std::size_t b = 0; b < n; ++b) radius_[b] = shapes_[shape[b]].radius * scale[b];
+  made_vertices_ = settings_.made_vertices >= 0 ? settings_.made_vertices == 1 : n >= kMadeVerticesBodies;
+  made_vertices_ = made_vertices_ && std::any_of(shape.begin(), shape.end(), [&](int s) { return boxes_[s].has_value(); });
+  boxes_only_ = std::all_of(shape.begin(), shape.end(), [&](int s) { return boxes_[s].has_value(); });
   if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
   world_vertices_.resize(vertex_offset_[n]);
   if (was && !was->spheres_only_) posed_ = std::move(was->posed_);  // its rows are posed again before read
@@ -204,7 +230,7 @@ void ContactEngine::keep_sphere_poses(const LocalBodies& bodies, bool needed) {
 }
 
 void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait,
-                         std::size_t min_items) {
+                         std::size_t min_items, bool box_vertices) {
   const std::size_t n = some.size();
   if (n == 0) return;  // the same on every thread: no barrier skipped by some only
   // The arrays' addresses, copied into each thread's loop: read through the vectors, each body
@@ -212,7 +238,7 @@ void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint3
   const PoseArrays arrays{bodies.position->data(), bodies.orientation->data(), bodies.shape->data(),
                           bodies.scale->data(),    shapes_.data(),             boxes_.data(),
                           some.data(),             vertex_offset_.data(),      world_vertices_.data(),
-                          posed_.data()};
+                          posed_.data(),           box_vertices || !made_vertices_};
   wait = wait && omp_get_level() > 0;  // a region of its own ends at its own barrier
   in_team(n >= min_items, [&] {
     const PoseArrays a = arrays;
@@ -303,7 +329,9 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
       mark_listed(bodies.size(), near, fresh_d.pairs);
       // ~500 instructions a body: a pour's ~100 newcomers pay for the team, where the step has one
       const std::size_t min_posed = bodies.size() >= kParallelMinItems ? kParallelMinHeavyItems : kParallelMinItems;
-      pose(bodies, listed_posed ? newcomers(listed_, posed_before) : listed_, true, min_posed);
+      // The searches read stored vertices: a box posed by this step's pass (none stored) is posed again.
+      const bool newcomers_only = listed_posed && !made_vertices_;
+      pose(bodies, newcomers_only ? newcomers(listed_, posed_before) : listed_, true, min_posed, true);
       const PairRange range = skin_.empty() ? PairRange(range_p) : PairRange(band_particle_, skin_.data());
       memory_.find(near, posed_, {bodies.position->data(), bodies.orientation->data(), core_reach_.data()}, range,
                    fresh);
@@ -644,7 +672,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                       bodies.angular_velocity_end->data(),
                       bodies.mass->data(),
                       any_sphere_,
-                      &turns_};
+                      &turns_,
+                      {shapes_.data(), boxes_.data()}};
   // Both pair loops end without a barrier: the one after them is kept only where the region
   // reads their results (the sums) before its end. A trailing pass reads a body's driver pairs
   // after its body pairs: each thread makes its driver pairs first.
@@ -656,23 +685,27 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_,
                      equal_spheres_ ? &*equal_spheres_ : nullptr, true, trail);
   } else {
-    const BodyPartner partner{posed_.data(),          view.position,         view.velocity,
-                              view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
-                              view.mass,              trigger_.displacement().data(),
-                              world_vertices_.data(), vertex_offset_.data()};
     const audit::Scope walk(audit::kWalk);
-    with_law(settings_.particle, [&](auto parts) {
-      using Parts = decltype(parts);
-      if constexpr (lanes_law<Parts>()) {  // lone contacts of two pairs side by side
-        all_pair_forces<true>(
-            body_list_,
-            LonePairKernel<Parts, BodyPartner>{settings_.particle, band_particle_, dt, view, partner, body_list_},
-            &direct_);
-      } else {
-        all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
-          return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-        }, &direct_);
-      }
+    with_made(made_vertices_, [&](auto made) {
+      using Partner = BodyPartner<decltype(made)::value>;
+      const Partner partner{posed_.data(),          view.position,         view.velocity,
+                            view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
+                            view.mass,              trigger_.displacement().data(),
+                            boxes_only_ && made ? nullptr : world_vertices_.data(), vertex_offset_.data(),
+                            view.boxes};
+      with_law(settings_.particle, [&](auto parts) {
+        using Parts = decltype(parts);
+        if constexpr (lanes_law<Parts>()) {  // lone contacts of two pairs side by side
+          all_pair_forces<true>(
+              body_list_,
+              LonePairKernel<Parts, Partner>{settings_.particle, band_particle_, dt, view, partner, body_list_},
+              &direct_);
+        } else {
+          all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
+            return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
+          }, &direct_);
+        }
+      });
     });
   }
   if (!trail) driver_pair_forces(view, drivers, dt);
@@ -702,33 +735,35 @@ void ContactEngine::trail_driver_range(const WalkTrail& trail) const {
 void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, double dt) {
   if (!driver_list_.pairs.empty()) {
     const audit::Scope driver_pairs(audit::kDriverPairs);
-    with_law(settings_.driver, [&](auto parts) {
-      using Parts = decltype(parts);
-      const LawParams& law = settings_.driver;
-      const DriverPartner partner{&drivers, view.mass};
-      const std::uint64_t at_rest = drivers_at_rest(drivers);
-      // Equal spheres: one radius, mass and k', c' for all (index 0 through mask 0).
-      const double r = equal_spheres_ ? equal_spheres_->radius : 0.0, m = equal_spheres_ ? equal_spheres_->mass : 0.0;
-      LinearStep step;
-      if (equal_spheres_ && !law.contact_mass) step = same_linear_step<Parts>(law, m, dt);
-      const WallSpheres sizes = equal_spheres_ ? WallSpheres{&r, &m, &step, 0}
-                                               : WallSpheres{view.radius, view.mass, driver_list_.linear_steps.data(), ~0u};
-      const auto kernel = [&](std::uint32_t k, PairScratch& scratch) {
-        if (spheres_only_ && drivers.is_wall(driver_list_.pairs[k].j))  // one slot, the centre: sphere_wall.hpp
-          return sphere_wall_forces<Parts>(law, band_driver_, dt, view, drivers, driver_list_, k, scratch, sizes, at_rest);
-        return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
-      };
-      // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
-      // also even out the body pairs' walk, which ends without a barrier).
-      if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
-        even_pair_forces(driver_list_,
-                         WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
-                                                           sizes, at_rest},
-                         driver_begin_.data(), body_cut());
-      else if (spheres_only_)
-        even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
-      else
-        all_pair_forces<true>(driver_list_, kernel);
+    with_made(made_vertices_, [&](auto made) {
+      with_law(settings_.driver, [&](auto parts) {
+        using Parts = decltype(parts);
+        const LawParams& law = settings_.driver;
+        const DriverPartner<decltype(made)::value> partner{&drivers, view.mass};
+        const std::uint64_t at_rest = drivers_at_rest(drivers);
+        // Equal spheres: one radius, mass and k', c' for all (index 0 through mask 0).
+        const double r = equal_spheres_ ? equal_spheres_->radius : 0.0, m = equal_spheres_ ? equal_spheres_->mass : 0.0;
+        LinearStep step;
+        if (equal_spheres_ && !law.contact_mass) step = same_linear_step<Parts>(law, m, dt);
+        const WallSpheres sizes = equal_spheres_ ? WallSpheres{&r, &m, &step, 0}
+                                                 : WallSpheres{view.radius, view.mass, driver_list_.linear_steps.data(), ~0u};
+        const auto kernel = [&](std::uint32_t k, PairScratch& scratch) {
+          if (spheres_only_ && drivers.is_wall(driver_list_.pairs[k].j))  // one slot, the centre: sphere_wall.hpp
+            return sphere_wall_forces<Parts>(law, band_driver_, dt, view, drivers, driver_list_, k, scratch, sizes, at_rest);
+          return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
+        };
+        // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
+        // also even out the body pairs' walk, which ends without a barrier).
+        if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
+          even_pair_forces(driver_list_,
+                           WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
+                                                             sizes, at_rest},
+                           driver_begin_.data(), body_cut());
+        else if (spheres_only_)
+          even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
+        else
+          all_pair_forces<true>(driver_list_, kernel);
+      });
     });
   }
 }

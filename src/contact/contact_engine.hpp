@@ -26,6 +26,9 @@ struct ContactSettings {
   // chosen for the whole scene (1 or 0; -1: for the bodies given).
   int spheres_only = -1;
   bool equal_spheres = true;  // false: each sphere's radius and mass read even when all are alike (tests)
+  // A box's world vertices: made where the walk reads them (1, made_pose.hpp) or stored by each
+  // step's pose pass (0); -1: made from kMadeVerticesBodies bodies (the same bits either way).
+  int made_vertices = -1;
   // Rebuild when the two largest motions since the build could close the skin between two bodies
   // (RebuildTrigger::pair_exceeded), not as soon as one body moved skin/2. false: skin/2 each
   // (and no per-body skins).
@@ -37,6 +40,11 @@ struct ContactSettings {
   double skin_max = 0.0;
 };
 
+// Bodies from which a box's world vertices are made where read (ContactSettings::made_vertices):
+// a step streams ~2 KB a cube (34 lines at 216,000, README "The bytes a cube-step streams"), so
+// from ~16,000 cubes the stored vertices leave a 32 MB last level before the walk reads them.
+// Counted (cachegrind's Ir + 10 L1 + 100 LL a cube-step): 54,000 cubes -4.6%; the settled 3,375 made so +6.1% instructions.
+constexpr std::size_t kMadeVerticesBodies = 16384;
 // Steps a body's own skin lasts at its speed at the rebuild (ContactSettings::skin_max): the pour
 // counted at 20, 30 and 50 (README, "A skin per body").
 constexpr double kSkinSteps = 30.0;
@@ -269,9 +277,10 @@ class ContactEngine {
 
  private:
   // The bodies `some` (increasing: listed_ or some of it), each thread its share of the cut.
-  // `wait`: a barrier at its end; min_items: the bodies that pay for waking a team outside one
+  // `wait`: a barrier at its end; min_items: the bodies that pay for waking a team outside one;
+  // `box_vertices`: a box's world vertices stored too (a rebuild), else made where read (made_pose.hpp)
   void pose(const LocalBodies& bodies, const std::vector<std::uint32_t>& some, bool wait = true,
-            std::size_t min_items = kParallelMinItems);
+            std::size_t min_items = kParallelMinItems, bool box_vertices = false);
   void keep_sphere_poses(const LocalBodies& bodies, bool needed);
   void measure_in_team(const LocalBodies& bodies, bool watched, const OwnedPart* owned = nullptr);  // measure_motion in a team of its own, or the caller's
   // A sphere's pose, made where read: its one vertex, at the shape's origin, is its centre.
@@ -330,6 +339,8 @@ class ContactEngine {
   bool must_rebuild_ = true;
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
+  bool made_vertices_ = false;             // a step's poses leave a box's vertices unmade (made_pose.hpp)
+  bool boxes_only_ = false;                // every body a box: no stored vertices to prefetch in the walk
   std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
   bool record_contacts_ = true;            // the lists keep their records (record_contacts)
   bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)

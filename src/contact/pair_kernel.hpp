@@ -10,6 +10,7 @@
 #include "contact/contact_mass.hpp"
 #include "contact/law.hpp"
 #include "contact/law_lanes.hpp"
+#include "contact/made_pose.hpp"
 #include "geometry/shadowing.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/contact_regions.hpp"
@@ -49,6 +50,7 @@ struct BodyView {
   const double* mass;       // kg
   bool any_sphere = true;   // some body is a sphere: else no body pair takes the exact step (no shape read per pair)
   std::vector<PairTurn>* turns = nullptr;  // where a pair whose patch pushed leaves its turn (rare)
+  ShapeBoxes boxes;         // a pose without vertices is a box's: its corners made where read (made_pose.hpp)
 };
 // Every body of the contact stage the same sphere: one radius (m) and mass (kg) for all.
 struct EqualSpheres {
@@ -150,6 +152,8 @@ struct PairScratch {
   std::vector<PatchDrift> all_drift;  // the pair's sub-contacts over the step (patch_pushes)
   std::vector<PatchDrift> drift;      // one region's of them
   bool pushes = false;                // patch_push is set for some contact of this pair
+  MadeCorners corners;                // box corners made in this walk (with_vertices)
+  MadePose made_i, made_j;            // the walked pair's box poses with their corners
 };
 
 // The sub-contacts whose overlap starts this step (none at n) in a patch of several (their region;
@@ -286,10 +290,10 @@ struct RigidMotion {
 // to a float), so the slot scan skips it while `moved` (m, the bounds' sum, from the build) stays
 // within the allowance. A skipped call would have been rejected: the same bits. Issue 19: ~700,000
 // of the settled cubes' 3.12M kernel calls in 200 steps were rejected, nearly all again each step.
-template <class Partner>
-[[gnu::noinline]] void retire_slot(const Partner& partner, const PosedBody& a, std::uint32_t j, FeaturePair f,
+template <class Partner, class Posed>
+[[gnu::noinline]] void retire_slot(const Partner& partner, const PosedBody& a, const Posed& b, FeaturePair f,
                                    double moved, double band, float& slot_gap) {
-  const double allowance = partner.allowance(a, j, f);  // m
+  const double allowance = partner.allowance(a, b, f);  // m
   const double gap = allowance - moved + band;          // m
   if (!(allowance > moved) || !(gap > double(slot_gap))) return;
   float low = float(gap);
@@ -298,10 +302,13 @@ template <class Partner>
 }
 
 // Partner must provide:
-//   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint&)
+//   kMadeVertices: a box's pose may come without vertices (made_pose.hpp: with_vertices makes them)
+//   posed_of(j, PairScratch&): what contact, separated and allowance take of partner j for one pair (a
+//     body: its pose with vertices, with_vertices; a driver: j)
+//   bool contact(const PosedBody& a, posed_of(j), FeaturePair f, double max_gap, ContactPoint&)
 //   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
 //   double moved(i, j): m, bound on how much closer two features got since the build
-//   bool separated(const PosedBody& a, std::uint32_t j, double band): true only when no contact is possible
+//   bool separated(const PosedBody& a, posed_of(j), double band): true only when no contact is possible
 //   double radius(j): the partner's rounding radius (m)
 //   double r_star(r_i, j): m, the curvature radius of a contact of a body of rounding r_i with j (Hertz)
 //   bool convex(j): the partner's core is convex (drivers: true; a mesh keeps its own rules)
@@ -310,13 +317,13 @@ template <class Partner>
 //   double point_inverse_mass(j, point, n): 1/kg, the partner's share of 1/m* (contact_mass.hpp; a driver: 0)
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 //   kRetires: a rejected candidate's allowance holds for it (bodies, whose displacement bounds `moved`
-//     sums; not a driver, whose partner pose is made anew); then double allowance(a, j, FeaturePair)
+//     sums; not a driver, whose partner pose is made anew); then double allowance(a, posed_of(j), FeaturePair)
 
 // Evaluates the candidate feature pairs of pair k (slots [s0, s1)) into scratch.found and drops
 // the shadowed ones. Inline in pair_forces (its own call cost ~17 instructions a touching cube pair, issue 19).
-template <class Partner>
-[[gnu::always_inline]] inline void find_contacts(double band, const PosedBody& a, const Partner& partner, PairList& list,
-                                     std::uint32_t k, PairScratch& scratch) {
+template <class Partner, class Posed>
+[[gnu::always_inline]] inline void find_contacts(double band, const PosedBody& a, const Posed& b, const Partner& partner,
+                                                 PairList& list, std::uint32_t k, PairScratch& scratch) {
   const BodyPair p = list.pairs[k];
   scratch.found.clear();
   const double moved = partner.moved(p.i, p.j);  // m, how much closer any two features may be than at the build
@@ -329,9 +336,9 @@ template <class Partner>
     if (slot_gap[s] - moved >= band) continue;  // cannot touch yet
     FoundContact& next = scratch.found.emplace_back();  // the kernel fills it in place: no copy
     const FeaturePair f = features[s];
-    if (!partner.contact(a, p.j, f, band, next.geometry)) {
+    if (!partner.contact(a, b, f, band, next.geometry)) {
       if constexpr (Partner::kRetires)
-        if (next.geometry.gap > 0.0) [[unlikely]] retire_slot(partner, a, p.j, f, moved, band, list.slot_gap[s]);
+        if (next.geometry.gap > 0.0) [[unlikely]] retire_slot(partner, a, b, f, moved, band, list.slot_gap[s]);
       scratch.found.pop_back();
       continue;
     }
@@ -591,12 +598,15 @@ template <class Parts, bool kLone, class Partner>
                                                     std::uint32_t k, PairScratch& scratch, PairTotals& totals,
                                                     LonePair* lone) {
   const BodyPair p = list.pairs[k];
-  const PosedBody& a = bodies.posed[p.i];
   if (k + 1 < list.size()) partner.prefetch(list.pairs[k + 1].j);
   const int was_touching = list.touching[k];
-  if (!was_touching && (partner.apart(list, k, band) || partner.separated(a, p.j, band)))
-    return true;  // most listed pairs, at a glance
-  find_contacts(band, a, partner, list, k, scratch);
+  if (!was_touching && partner.apart(list, k, band)) return true;  // most listed pairs, at a glance
+  const PosedBody& a = Partner::kMadeVertices
+                           ? with_vertices(bodies.posed[p.i], p.i, bodies.boxes, scratch.corners, scratch.made_i, scratch.made_j)
+                           : bodies.posed[p.i];
+  decltype(auto) b = partner.posed_of(p.j, scratch);  // a body's pose (a reference) or a driver's index
+  if (!was_touching && partner.separated(a, b, band)) return true;
+  find_contacts(band, a, b, partner, list, k, scratch);
   const double r_star = Parts::Normal::kCurved ? partner.r_star(a.radius, p.j) : 0.0;  // m
   const bool changed = (was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found);
   if (changed)

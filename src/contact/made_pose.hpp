@@ -1,0 +1,85 @@
+#pragma once
+// A box's world vertices made where the pair walk reads them (issue 19): the step's pose pass
+// leaves them unmade (PosedBody::vertices null) and the walk makes the eight corners with
+// pose_box from the pose's own rotation, position and scale, the pass's arithmetic and bits. At
+// scale the pose was written every step and read back after ~70 MB of other traffic: its 192
+// bytes of vertices a cube were ~6 of a cube-step's 34 last-level lines at 216,000 cubes.
+// Other shapes keep their stored vertices, and a rebuild stores every listed body's (its
+// candidate searches and the rebuild step's walk read them there).
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "geometry/box_pose.hpp"
+
+namespace polydem {
+
+// The engine's shapes and each one's box corners (ContactEngine::boxes_): a posed body's shape
+// is one of `shapes`, so its corners are boxes[shape - shapes].
+struct ShapeBoxes {
+  const Shape* shapes = nullptr;
+  const std::optional<BoxCorners>* boxes = nullptr;
+};
+
+// A box's pose with its corners made.
+struct MadeBox {
+  PosedBody pose;  // its vertices: `vertices`
+  std::array<Vec3, 8> vertices;  // m, world
+};
+
+// A thread's boxes made in one walk, kept by body (slot b mod kSlots): bodies in space order
+// (cells z, y, x) meet their pairs within about two layers of cells of the pile (~450 bodies),
+// so a cube's corners are made about once a walk, not once for each of its ~4.6 pair ends.
+struct MadeCorners {
+  static constexpr std::uint32_t kSlots = 512;  // 160 KB: a core's L2, not the last level
+  std::unique_ptr<std::uint32_t[]> body;        // per slot, whose pose it holds; ~0: none
+  std::unique_ptr<MadeBox[]> made;
+};
+
+// The box pose a kernel reads of one side of the walked pair (PairScratch).
+struct MadePose {
+  std::uint32_t body = ~0u;  // whose pose `pose` is; ~0: none yet
+  const PosedBody* pose = nullptr;
+  MadeBox own;  // where the body's slot holds the other side's body
+};
+
+// with_vertices' slot lookup, and the make where b is not there (inline: out of line, +93
+// instructions a cube-step at 54,000; the walk of stored vertices is another instance, no test).
+[[gnu::always_inline]] inline const PosedBody& find_or_make(const PosedBody& posed, std::uint32_t b, ShapeBoxes boxes,
+                                                       MadeCorners& corners, MadePose& made, const MadePose& other) {
+  if (!corners.body) {  // first use in this walk
+    corners.body.reset(new std::uint32_t[MadeCorners::kSlots]);
+    corners.made.reset(new MadeBox[MadeCorners::kSlots]);
+    std::fill_n(corners.body.get(), MadeCorners::kSlots, ~0u);
+  }
+  const std::uint32_t slot = b % MadeCorners::kSlots;
+  made.body = b;
+  if (corners.body[slot] != b) {
+    const bool taken = other.body != ~0u && corners.body[slot] == other.body;
+    MadeBox& box = taken ? made.own : corners.made[slot];
+    if (!taken) corners.body[slot] = b;
+    box.pose = posed;
+    box.pose.vertices = box.vertices.data();
+    pose_box(*boxes.boxes[posed.shape - boxes.shapes], posed.scale, posed.position, posed.rotation,
+             box.vertices.data());
+    made.pose = &box.pose;
+  } else {
+    made.pose = &corners.made[slot].pose;
+  }
+  return *made.pose;
+}
+
+// Body b's pose as the kernels read it: `posed` where its vertices are stored, else its box
+// made in `corners` (or found there). The slot of `other` (the pair's other side, whose pose
+// the kernels read beside) is never taken: b is then made in made.own (rare).
+[[gnu::always_inline]] inline const PosedBody& with_vertices(const PosedBody& posed, std::uint32_t b, ShapeBoxes boxes,
+                                                             MadeCorners& corners, MadePose& made,
+                                                             const MadePose& other) {
+  if (posed.vertices) return posed;
+  if (made.body == b) return *made.pose;
+  return find_or_make(posed, b, boxes, corners, made, other);
+}
+
+}  // namespace polydem
