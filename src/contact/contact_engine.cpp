@@ -57,7 +57,11 @@ struct BodyPartner {
     __builtin_prefetch(&angular_velocity_end[j]);
   }
   const PosedBody& posed_of(std::uint32_t j, PairScratch& s) const {
-    if constexpr (kMade) return with_vertices(posed[j], j, boxes, s.corners, s.made_j, s.made_i);
+    if constexpr (kMade) {
+      if (posed[j].vertices) return posed[j];
+      MadeWalk& w = made_walk(s.made);
+      return with_vertices(posed[j], j, boxes, w.corners, w.made_j, w.made_i);
+    }
     return posed[j];
   }
   bool contact(const PosedBody& a, const PosedBody& b, FeaturePair f, double max_gap, ContactPoint& out) const {

@@ -152,9 +152,16 @@ struct PairScratch {
   std::vector<PatchDrift> all_drift;  // the pair's sub-contacts over the step (patch_pushes)
   std::vector<PatchDrift> drift;      // one region's of them
   bool pushes = false;                // patch_push is set for some contact of this pair
-  MadeCorners corners;                // box corners made in this walk (with_vertices)
-  MadePose made_i, made_j;            // the walked pair's box poses with their corners
+  std::unique_ptr<MadeWalk> made;     // box corners made in this walk (with_vertices), from its first box
 };
+
+// The walked pair's side i as the kernels read it: stored, or a box made (with_vertices).
+[[gnu::always_inline]] inline const PosedBody& pose_of_i(const PosedBody& posed, std::uint32_t i, ShapeBoxes boxes,
+                                                         PairScratch& scratch) {
+  if (posed.vertices) return posed;
+  MadeWalk& w = made_walk(scratch.made);
+  return with_vertices(posed, i, boxes, w.corners, w.made_i, w.made_j);
+}
 
 // The sub-contacts whose overlap starts this step (none at n) in a patch of several (their region;
 // the pair on convex bodies) act as one contact, whose force starts at the patch's first touch:
@@ -602,7 +609,7 @@ template <class Parts, bool kLone, class Partner>
   const int was_touching = list.touching[k];
   if (!was_touching && partner.apart(list, k, band)) return true;  // most listed pairs, at a glance
   const PosedBody& a = Partner::kMadeVertices
-                           ? with_vertices(bodies.posed[p.i], p.i, bodies.boxes, scratch.corners, scratch.made_i, scratch.made_j)
+                           ? pose_of_i(bodies.posed[p.i], p.i, bodies.boxes, scratch)
                            : bodies.posed[p.i];
   decltype(auto) b = partner.posed_of(p.j, scratch);  // a body's pose (a reference) or a driver's index
   if (!was_touching && partner.separated(a, b, band)) return true;
