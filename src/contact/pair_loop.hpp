@@ -233,10 +233,6 @@ template <class Kernel>
   return stop;
 }
 
-// Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
-// foreign pair's other side kept as a late term (DirectSums::foreign); the blocks' contacts and
-// ended flags. The runs of internal pairs between two foreign ones are plain loops (one thread:
-// the whole list). After each block, the bodies it finished go to `behind`'s pass.
 // The bodies [next, last) a trailing pass may move on this thread (WalkTrail), handed to it in order.
 struct ChunkTrail {
   // Bodies a pass call takes at least (but the last): its setup (~40 instructions) spread over
@@ -251,7 +247,10 @@ struct ChunkTrail {
   }
 };
 
-
+// Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
+// foreign pair's other side kept as a late term (DirectSums::foreign); the blocks' contacts and
+// ended flags. The runs of internal pairs between two foreign ones are plain loops (one thread:
+// the whole list). After each block, the bodies it finished go to `behind`'s pass.
 template <class Kernel>
 void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t,
                 ChunkTrail& behind) {
@@ -417,12 +416,6 @@ void all_pair_forces(PairList& list, const Kernel& kernel, DirectSums* direct = 
   });
 }
 
-// all_pair_forces for pairs of like cost (spheres and walls) in a list sorted by body: each
-// thread takes the run of blocks nearest the pairs of its bodies in `cut` (`begin`, per body + 1:
-// its first pair), the bodies its passes move, or without a cut for this team its share of the
-// pairs; the same every step, so a pair's arrays and its body's state stay in one core's cache
-// (shared as they came, blocks moved between the cores each step). Inside a team the threads
-// leave without a barrier: the caller meets where something reads the results (ContactEngine::forces).
 // even_pair_forces' blocks [first, second) of thread t of `threads`.
 inline std::pair<std::size_t, std::size_t> even_blocks(const PairList& list, const std::uint32_t* begin, TeamCut cut,
                                                        std::size_t t, std::size_t threads) {
@@ -433,6 +426,12 @@ inline std::pair<std::size_t, std::size_t> even_blocks(const PairList& list, con
   return {first_block(t), t + 1 == threads ? list.blocks() : first_block(t + 1)};
 }
 
+// all_pair_forces for pairs of like cost (spheres and walls) in a list sorted by body: each
+// thread takes the run of blocks nearest the pairs of its bodies in `cut` (`begin`, per body + 1:
+// its first pair), the bodies its passes move, or without a cut for this team its share of the
+// pairs; the same every step, so a pair's arrays and its body's state stay in one core's cache
+// (shared as they came, blocks moved between the cores each step). Inside a team the threads
+// leave without a barrier: the caller meets where something reads the results (ContactEngine::forces).
 template <class Kernel>
 void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t* begin = nullptr, TeamCut cut = {}) {
   const std::size_t n = list.size(), blocks = list.blocks();
