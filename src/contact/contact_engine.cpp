@@ -16,6 +16,7 @@
 #include "contact/candidate_memory.hpp"
 #include "contact/lone_pairs.hpp"
 #include "contact/pair_loop.hpp"
+#include "contact/pair_partners.hpp"
 #include "contact/sphere_kernel.hpp"
 #include "contact/sphere_wall_lanes.hpp"
 
@@ -23,102 +24,8 @@ namespace polydem {
 
 namespace {
 
-// The partner of a body-body pair: the other body. kMade: a box's vertices are made where read
-// (made_pose.hpp); else every pose's are stored, and read with no test (chosen once a step).
-template <bool kMade>
-struct BodyPartner {
-  static constexpr bool kRetires = true;  // the kernels' allowances hold between two bodies (pair_kernel.hpp)
-  static constexpr bool kMadeVertices = kMade;
-  const PosedBody* posed;
-  const Vec3* position;          // m
-  const Vec3* velocity;          // m/s
-  const Vec3* angular_velocity;  // rad/s
-  const Vec3* velocity_end;      // m/s, predicted for the end of the step
-  const Vec3* angular_velocity_end;  // rad/s, likewise
-  const double* mass;            // kg
-  const double* displacement;  // m, per body since the lists were built
-  const Vec3* world_vertices;  // null: every body a box, its vertices made where read
-  const std::uint32_t* vertex_offset;  // body j's vertices: world_vertices[vertex_offset[j] ...]
-  ShapeBoxes boxes;
-  // Starts loading what the kernels will read of body j: its pose, vertices and velocities
-  // sit anywhere in memory, and the next pair's loads would otherwise stall.
-  void prefetch(std::uint32_t j) const {
-    const char* pose = reinterpret_cast<const char*>(&posed[j]);
-    __builtin_prefetch(pose);
-    __builtin_prefetch(pose + 64);
-    if (world_vertices) {
-      const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
-      const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
-      for (; v < v_end; v += 64) __builtin_prefetch(v);
-    }
-    __builtin_prefetch(&velocity[j]);
-    __builtin_prefetch(&angular_velocity[j]);
-    __builtin_prefetch(&velocity_end[j]);
-    __builtin_prefetch(&angular_velocity_end[j]);
-  }
-  const PosedBody& posed_of(std::uint32_t j, PairScratch& s) const {
-    if constexpr (kMade) {
-      if (posed[j].vertices) return posed[j];
-      MadeWalk& w = made_walk(s.made);
-      return with_vertices(posed[j], j, boxes, w.corners, w.made_j, w.made_i);
-    }
-    return posed[j];
-  }
-  bool contact(const PosedBody& a, const PosedBody& b, FeaturePair f, double max_gap, ContactPoint& out) const {
-    return feature_contact(a, b, f, max_gap, out);
-  }
-  double allowance(const PosedBody& a, const PosedBody& b, FeaturePair f) const { return rejection_allowance(a, b, f); }  // m
-  // Rigorous: a feature distance shrinks by at most the two bodies' displacement bounds.
-  bool apart(const PairList& list, std::uint32_t k, double band) const {
-    const BodyPair p = list.pairs[k];
-    return list.gap_at_build[k] - displacement[p.i] - displacement[p.j] >= band;
-  }
-  double moved(std::uint32_t i, std::uint32_t j) const { return displacement[i] + displacement[j]; }  // m
-  bool separated(const PosedBody& a, const PosedBody& b, double band) const { return separated_along_centres(a, b, band); }
-  double radius(std::uint32_t j) const { return posed[j].radius; }
-  double r_star(double r_i, std::uint32_t j) const { return r_i * posed[j].radius / (r_i + posed[j].radius); }  // m
-  bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
-  const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
-  Vec3 center(std::uint32_t j) const { return position[j]; }
-  RigidMotion motion(std::uint32_t j) const {
-    return {velocity[j], angular_velocity[j], position[j], velocity_end[j], angular_velocity_end[j]};
-  }
-  double point_inverse_mass(std::uint32_t j, const Vec3& point, const Vec3& n) const {
-    return polydem::point_inverse_mass(posed[j], mass[j], point - position[j], n);
-  }
-  double m_eff(std::uint32_t i, std::uint32_t j) const {
-    const double mi = mass[i], mj = mass[j];
-    return mi * mj / (mi + mj);
-  }
-};
-
-// The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC). kMade: as BodyPartner's.
-template <bool kMade>
-struct DriverPartner {
-  static constexpr bool kRetires = false;  // a driver's kernels pose their partner anew: no allowance
-  static constexpr bool kMadeVertices = kMade;
-  const Drivers* drivers;
-  const double* mass;  // kg, per local body
-  std::uint32_t posed_of(std::uint32_t j, PairScratch&) const { return j; }  // its kernels pose it themselves
-  bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
-    return drivers->contact(a, j, f, max_gap, out);
-  }
-  bool apart(const PairList&, std::uint32_t, double) const { return false; }  // a moving driver has no bound
-  double moved(std::uint32_t, std::uint32_t) const { return 0.0; }  // its slots' gaps are -inf
-  bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
-  double radius(std::uint32_t j) const { return drivers->rounding(j); }  // balls and posts: a rounded point, segment
-  double r_star(double r_i, std::uint32_t j) const { return drivers->r_star(j, r_i); }  // m
-  bool convex(std::uint32_t) const { return true; }
-  const Shape* shape(std::uint32_t) const { return nullptr; }
-  Vec3 center(std::uint32_t j) const { return drivers->center(j); }
-  RigidMotion motion(std::uint32_t j) const {  // as Drivers::velocity_at
-    const DriverState& d = (*drivers)[j];
-    return {d.velocity, d.omega, d.pivot, d.velocity, d.omega};
-  }
-  double m_eff(std::uint32_t i, std::uint32_t) const { return mass[i]; }
-  double point_inverse_mass(std::uint32_t, const Vec3&, const Vec3&) const { return 0.0; }  // infinitely massive
-  void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
-};
+using engine_detail::BodyPartner;
+using engine_detail::DriverPartner;
 
 // Of the skin: how far beyond the range a body pair's candidate search looks, to be kept over
 // the next rebuilds (candidate_memory.hpp).
