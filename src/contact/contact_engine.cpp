@@ -13,6 +13,7 @@
 #include "polydem/line_audit.hpp"
 #include "polydem/parallel.hpp"
 #include "polydem/release.hpp"
+#include "contact/body_pose.hpp"
 #include "contact/candidate_memory.hpp"
 #include "contact/lone_pairs.hpp"
 #include "contact/pair_loop.hpp"
@@ -26,6 +27,8 @@ namespace {
 
 using engine_detail::BodyPartner;
 using engine_detail::DriverPartner;
+using engine_detail::pose_body;
+using engine_detail::PoseArrays;
 
 // Of the skin: how far beyond the range a body pair's candidate search looks, to be kept over
 // the next rebuilds (candidate_memory.hpp).
@@ -36,43 +39,6 @@ double core_reach(const Shape& s) {
   double r = 0.0;
   for (const Vec3& v : s.vertices) r = std::max(r, v.norm());
   return r;
-}
-
-// What pose reads and writes, by address (ContactEngine::pose).
-struct PoseArrays {
-  const Vec3* position;  // m
-  const Quat* orientation;
-  const int* shape;
-  const double* scale;
-  const Shape* shapes;
-  const std::optional<BoxCorners>* boxes;  // per shape
-  const std::uint32_t* listed;
-  const std::uint32_t* vertex_offset;
-  Vec3* world_vertices;  // m
-  PosedBody* posed;
-  bool box_vertices;  // a box's too (a rebuild's readers); else left unmade, made where read (made_pose.hpp)
-};
-
-// Body b's rotation and world vertices, filled in place: no temporary pose to copy.
-// A box's vertices only where a.box_vertices: a step's walk makes them (with_vertices).
-[[gnu::always_inline]] inline void pose_body(const PoseArrays& a, std::uint32_t b) {
-  const Shape& s = a.shapes[a.shape[b]];
-  Vec3* v = a.world_vertices + a.vertex_offset[b];
-  PosedBody& posed = a.posed[b];
-  // Read once into locals: the vertices' stores may alias anything, so each read reloaded them.
-  const Vec3 position = a.position[b];  // m
-  const double scale = a.scale[b];
-  posed.rotation = a.orientation[b].toRotationMatrix();  // once per body and step
-  const std::optional<BoxCorners>& box = a.boxes[a.shape[b]];
-  if (!box)
-    pose_vertices(s, scale, position, posed.rotation, v);
-  else if (a.box_vertices)
-    pose_box(*box, scale, position, posed.rotation, v);  // the same bits in a third of the arithmetic
-  posed.shape = &s;
-  posed.vertices = box && !a.box_vertices ? nullptr : v;
-  posed.position = position;
-  posed.radius = s.radius * scale;
-  posed.scale = scale;
 }
 
 // f(std::true_type{}) where a box's vertices are made where read, else f(std::false_type{}): the
@@ -159,6 +125,13 @@ void ContactEngine::pose(const LocalBodies& bodies, const std::vector<std::uint3
 #pragma omp barrier
     }
   });
+}
+
+ListedPoses ContactEngine::listed_poses(const LocalBodies& bodies) {
+  return {{bodies.position->data(), bodies.orientation->data(), bodies.shape->data(), bodies.scale->data(),
+           shapes_.data(), boxes_.data(), listed_.data(), vertex_offset_.data(), world_vertices_.data(),
+           posed_.data(), !made_vertices_},
+          std::uint32_t(listed_.size())};
 }
 
 // Bodies far from every other body and driver (falling in a pour) need no world vertices.
@@ -589,8 +562,9 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
   // reads their results (the sums) before its end. A trailing pass reads a body's driver pairs
   // after its body pairs: each thread makes its driver pairs first.
   if (trail) {
+    turns_left_here = 0;  // this thread's, from its driver pairs on (ChunkTrail)
     trail_driver_range(*trail);
-    driver_pair_forces(view, drivers, dt);
+    driver_pair_forces(view, drivers, dt, true);
   }
   if (spheres_only_) {
     sphere_pair_loop(settings_.particle, band_particle_, dt, view, body_list_, direct_,
@@ -610,11 +584,11 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
           all_pair_forces<true>(
               body_list_,
               LonePairKernel<Parts, Partner>{settings_.particle, band_particle_, dt, view, partner, body_list_},
-              &direct_);
+              &direct_, trail);
         } else {
           all_pair_forces<true>(body_list_, [&](std::uint32_t k, PairScratch& scratch) {
             return pair_forces<Parts>(settings_.particle, band_particle_, dt, view, partner, body_list_, k, scratch);
-          }, &direct_);
+          }, &direct_, trail);
         }
       });
     });
@@ -643,7 +617,7 @@ void ContactEngine::trail_driver_range(const WalkTrail& trail) const {
   trail.done[t] = {lo, std::max(lo, hi)};
 }
 
-void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, double dt) {
+void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, double dt, bool by_bodies) {
   if (!driver_list_.pairs.empty()) {
     const audit::Scope driver_pairs(audit::kDriverPairs);
     with_made(made_vertices_, [&](auto made) {
@@ -664,13 +638,14 @@ void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, d
           return pair_forces<Parts>(law, band_driver_, dt, view, partner, driver_list_, k, scratch);
         };
         // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
-        // also even out the body pairs' walk, which ends without a barrier).
+        // also even out the body pairs' walk, which ends without a barrier), but by bodies ahead of a
+        // trailing pass (trail_driver_range).
         if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
           even_pair_forces(driver_list_,
                            WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
                                                              sizes, at_rest},
                            driver_begin_.data(), body_cut());
-        else if (spheres_only_)
+        else if (spheres_only_ || by_bodies)
           even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
         else
           all_pair_forces<true>(driver_list_, kernel);

@@ -9,6 +9,7 @@
 #include "geometry/box_pose.hpp"
 #include "polydem/parallel.hpp"
 #include "polydem/shape.hpp"
+#include "contact/body_pose.hpp"
 #include "contact/candidate_memory.hpp"
 #include "contact/contact_lists.hpp"
 #include "contact/exact_sum.hpp"
@@ -155,6 +156,9 @@ class ContactEngine {
     if (!spheres_only_) pose(bodies, some);
   }
   const std::vector<std::uint32_t>& listed() const { return listed_; }  // the bodies of some pair, increasing
+  // The listed bodies' poses for a pass that moves them (the next step's, behind the walk: TrailingPass),
+  // as pose_before_forces makes them; valid until the next rebuild.
+  ListedPoses listed_poses(const LocalBodies& bodies);
   // True, with `watch` set, where the trigger's test of every local body can run in the pass
   // that moves them (points: spheres' lists), instead of measure_motion's own read of the positions.
   // Once a step read the pair rule, the next steps' measure_motion keeps the points' margins for
@@ -185,7 +189,7 @@ class ContactEngine {
   // The pairs' forces (a team stage, on every thread of the region); then, after the region,
   // close_forces on one thread. `pose_bodies`: false right after a rebuild (it posed them) or
   // after pose_before_forces; spheres are posed by measure_motion, which must come first.
-  // `trail` (spheres' lists, one process): a pass right behind the body pairs' walk (WalkTrail).
+  // `trail` (one process): a pass right behind the body pairs' walk (WalkTrail).
   void forces(const LocalBodies& bodies, Drivers& drivers, double dt, bool pose_bodies, AfterPairs then,
               const WalkTrail* trail = nullptr);
   bool spheres_only() const { return spheres_only_; }
@@ -309,7 +313,8 @@ class ContactEngine {
   std::vector<std::uint32_t> make_driver_list(const LocalBodies& bodies, const Drivers& drivers, PairList fresh,
                                               const PairList& old_driver, bool share_candidates);
   void weigh_bodies(bool passes);  // direct_.body_weight, at a rebuild
-  void driver_pair_forces(const BodyView& view, Drivers& drivers, double dt);  // a team stage, no barrier
+  // A team stage, no barrier; `by_bodies`: each thread its bodies' pairs (trail_driver_range's), polyhedra's too.
+  void driver_pair_forces(const BodyView& view, Drivers& drivers, double dt, bool by_bodies = false);
   void trail_driver_range(const WalkTrail& trail) const;
   void cut_passes(int threads);  // pass_cut, at a rebuild (after the walk's cut and listed_)
   double driver_shift(const Drivers& drivers) const;  // m, the largest driver motion since the build

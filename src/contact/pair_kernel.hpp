@@ -580,10 +580,15 @@ template <class Parts, bool kLone = false, class Partner>
   return true;
 }
 
+// The turns this thread's pair loops left since ContactEngine::forces zeroed it (a trailing walk):
+// a body that turns takes its turn between its kicks, so no pass moves it behind the walk (ChunkTrail).
+inline thread_local std::uint32_t turns_left_here = 0;
+
 // Pair p's PairTurn from its pushing sub-contacts' moments (the law's), appended to `turns`.
 template <class Partner>
 [[gnu::noinline]] void leave_turn(const BodyView& bodies, const Partner& partner, BodyPair p, const PairScratch& scratch,
                                   std::vector<PairTurn>& turns) {
+  ++turns_left_here;
   const Vec3 xi = bodies.position[p.i], xj = partner.center(p.j);  // m
   PairTurn turn{p.i, p.j, partner.shape(p.j) == nullptr, Vec3::Zero(), Vec3::Zero()};
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {

@@ -240,8 +240,10 @@ struct ChunkTrail {
   static constexpr std::uint32_t kBatch = 64;
   const WalkTrail* trail = nullptr;
   std::uint32_t next = 0, last = 0;
-  // The walk is done with every body below `upto`; `all`: the chunk's end.
+  // The walk is done with every body below `upto`; `all`: the chunk's end. Once this thread's pairs
+  // left a turn (rare), it moves no more: the next step's pass moves the rest, turns and all.
   void done_below(std::uint32_t upto, bool all = false) {
+    if (turns_left_here != 0) last = next;
     const std::uint32_t stop = std::min(upto, last);
     if (next < stop && (all || stop - next >= kBatch)) trail->pass(trail->context, next, stop), next = stop;
   }
@@ -378,7 +380,10 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
     behind = {trail, done.first, done.last};
   }
   pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t, behind);
-  if (trail) behind.done_below(direct.split.body_cut[t + 1], true);
+  if (trail) {
+    behind.done_below(direct.split.body_cut[t + 1], true);
+    trail->done[t].last = behind.next;  // the bodies it moved (done_below may stop at a turn)
+  }
   if (threads > 1) direct.pace[t].took(omp_get_wtime() - start);
   if constexpr (!kNoWait) {
 #pragma omp barrier

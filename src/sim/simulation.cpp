@@ -100,6 +100,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   bodies = build_bodies(in_order(std::move(specs), *order), library);
   bodies.id = std::move(*order);
   rotors_ = group_rotors(bodies, library_.shapes);
+  trailing_.choose(rotors_, bodies.size());
   drop_sphere_orientations();  // before anything copies the bodies (a rank's store)
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);
@@ -276,8 +277,10 @@ void Simulation::step(bool leave_kick_open) {
     const bool wait = cut.threads != omp_get_num_threads();
     if (close_last && !one_process)
       ranks_->close_and_start(0.5 * dt_, dt_, gravity_, watched ? &watch : nullptr);
-    else if (ahead)  // the bodies the walk left: spheres' lists, watched
-      trailing_.rest(closing_sums());
+    else if (ahead) {  // the bodies the walk left (spheres' lists, watched; cubes, bounded and posed)
+      const PassTurns kept = kept_turns_.pass();  // a cube's turn, the rest's (its thread's walk left it alone)
+      trailing_.rest(closing_sums(), turning ? &kept : nullptr);
+    }
     else if (watched)  // points (spheres' lists): no turns
       close_and_start_step<true>(bodies, 0.5 * dt_, dt_, moved, gravity_, closing_sums(), cut, watch, wait);
     else if (turning)  // kept only where close_last
@@ -295,7 +298,8 @@ void Simulation::step(bool leave_kick_open) {
       start_step(bodies, 0.5 * dt_, dt_, moved, gravity_, cut);  // kick, drift, predict, gravity
     if (contacts && one_process) {
       engine_->measure_motion(all_owned(bodies), watched || bounded);
-      engine_->pose_before_forces(all_owned(bodies));
+      if (!(ahead && trailing_.kind() == TrailKind::isotropic))  // else posed behind the walk and in rest
+        engine_->pose_before_forces(all_owned(bodies));
     }
   });
   if (close_last) sums_taken(), book_kept_turns();
@@ -317,9 +321,14 @@ void Simulation::step(bool leave_kick_open) {
     }
   }
   PointWatch next_watch;
-  const bool trailing = trails_walk(leave_kick_open && open_steps_follow_, next_watch);
-  const WalkTrail trail =
-      trailing ? trailing_.open(bodies, 0.5 * dt_, dt_, gravity_, closing_sums(), next_watch) : WalkTrail{};
+  BoundWatch next_bounds;
+  const bool trailing = trails_walk(leave_kick_open && open_steps_follow_, next_watch, next_bounds);
+  WalkTrail trail{};
+  if (trailing && trailing_.kind() == TrailKind::spheres)
+    trail = trailing_.open(bodies, 0.5 * dt_, dt_, gravity_, closing_sums(), next_watch);
+  else if (trailing)
+    trail = trailing_.open(bodies, 0.5 * dt_, dt_, gravity_, closing_sums(), next_bounds,
+                           engine_->listed_poses(all_owned(bodies)));
   in_team(team, [&] {
     if (contacts && one_process) {
       const LocalBodies local = all_owned(bodies);
@@ -381,12 +390,16 @@ void Simulation::book_kept_turns() {
   kept_turns_.book([&](double work) { engine_->book_turn(work); });
 }
 
-// One process, the kick left open and the next step to follow, spheres' lists with nothing but
-// gravity and the contacts acting: the next step's joined pass (its watched one) can run behind
-// this step's walk, `watch` its rebuild test.
-bool Simulation::trails_walk(bool next_follows, PointWatch& watch) {
-  return next_follows && scene_.forces.contact.present && !ranks_ && !external_ && engine_->spheres_only() &&
-         trailing_fits(rotors_, bodies.size()) && engine_->watch_motion(all_owned(bodies), watch);
+// One process, the kick left open and the next step to follow, with nothing but gravity and the
+// contacts acting: the next step's joined pass (its watched one) can run behind this step's walk,
+// `watch` its rebuild test (spheres' lists), or `bounds` (isotropic polyhedra, but where the ledger
+// closes after the next step: a turn left now falls in this period only with the kick closed).
+bool Simulation::trails_walk(bool next_follows, PointWatch& watch, BoundWatch& bounds) {
+  if (!next_follows || !scene_.forces.contact.present || ranks_ || external_) return false;
+  if (trailing_.kind() == TrailKind::isotropic)
+    return !engine_->spheres_only() && !ledger_closes(step_ + 1) && engine_->watch_bounds(all_owned(bodies), bounds);
+  return engine_->spheres_only() && trailing_.kind() == TrailKind::spheres &&
+         engine_->watch_motion(all_owned(bodies), watch);
 }
 
 // One process: the sums a closing pass adds, from m gravity where nothing else acts (the

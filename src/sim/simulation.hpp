@@ -169,7 +169,8 @@ class Simulation {
   bool turns_left() const;
   void keep_turns();        // the last step's turns, left open with its kick: for the joined pass
   void book_kept_turns();   // after the joined pass: their work
-  bool trails_walk(bool next_follows, PointWatch& watch);  // the next step's joined pass behind this one's walk
+  // The next step's joined pass behind this one's walk (spheres: `watch`; cubes: `bounds`).
+  bool trails_walk(bool next_follows, PointWatch& watch, BoundWatch& bounds);
   ForceSums closing_sums();  // one process: the sums a closing pass adds (from gravity where nothing else acts)
   StateEnergy state_energy() const;  // one process: summed now; many: the last sum_energy's
 

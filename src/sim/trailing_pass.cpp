@@ -11,18 +11,45 @@ bool trailing_fits(const RotorGroups& groups, std::size_t n) {
          groups.asymmetric.empty();
 }
 
-WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity, ForceSums sums,
-                             const PointWatch& watch) {
-  arrays_ = alike_arrays_of(b, 0);
+// Every body isotropic, isotropic[k] == k (a pile of cubes).
+static bool isotropic_in_order(const RotorGroups& groups, std::size_t n) {
+  if (n == 0 || groups.isotropic.size() != n || !groups.spheres.empty() || !groups.asymmetric.empty()) return false;
+  for (std::size_t k = 0; k < n; ++k)
+    if (groups.isotropic[k] != k) return false;
+  return true;
+}
+
+void TrailingPass::choose(const RotorGroups& groups, std::size_t n) {
+  kind_ = trailing_fits(groups, n) ? TrailKind::spheres
+          : isotropic_in_order(groups, n) ? TrailKind::isotropic
+                                          : TrailKind::none;
+}
+
+WalkTrail TrailingPass::open_common(double h, double dt, const Vec3& gravity, ForceSums sums) {
   h_ = h, dt_ = dt, gravity_ = gravity;
   sums.late = LateTerms{};  // a body moved behind its walk has every pair in its home chunk: no late term
   sums_ = sums;
-  watch_ = watch;
   done_.assign(std::size_t(omp_get_max_threads()), BodyRange{});
-  return {&TrailingPass::pass, this, done_.data()};
+  return {kind_ == TrailKind::spheres ? &TrailingPass::pass_spheres : &TrailingPass::pass_isotropic, this,
+          done_.data()};
 }
 
-void TrailingPass::pass(const void* self, std::uint32_t first, std::uint32_t last) {
+WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity, ForceSums sums,
+                             const PointWatch& watch) {
+  arrays_ = alike_arrays_of(b, 0);
+  watch_ = watch;
+  return open_common(h, dt, gravity, sums);
+}
+
+WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity, ForceSums sums,
+                             const BoundWatch& watch, const ListedPoses& poses) {
+  body_arrays_ = arrays_of(b);
+  bounds_ = watch;
+  poses_ = poses;
+  return open_common(h, dt, gravity, sums);
+}
+
+void TrailingPass::pass_spheres(const void* self, std::uint32_t first, std::uint32_t last) {
   const TrailingPass& p = *static_cast<const TrailingPass*>(self);
   // Copies, as over_group's: the arrays' stores may alias `p`, whose members would be reloaded each body.
   const AlikeArrays a = p.arrays_;
@@ -32,6 +59,18 @@ void TrailingPass::pass(const void* self, std::uint32_t first, std::uint32_t las
   const Vec3 gravity = p.gravity_;    // m/s^2
   for (std::uint32_t i = first; i < last; ++i)
     integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
+}
+
+void TrailingPass::pass_isotropic(const void* self, std::uint32_t first, std::uint32_t last) {
+  const TrailingPass& p = *static_cast<const TrailingPass*>(self);
+  const BodyArrays a = p.body_arrays_;  // copies, as pass_spheres'
+  const ForceSums sums = p.sums_;
+  const BoundWatch bounds = p.bounds_;
+  const double h = p.h_, dt = p.dt_;  // s
+  const Vec3 gravity = p.gravity_;    // m/s^2
+  for (std::uint32_t i = first; i < last; ++i)
+    integrate_detail::close_and_start_from_gravity<Rotor::isotropic>(a, i, h, dt, gravity, sums, bounds);
+  p.poses_.pose(first, last);  // the bodies' state still in L1 (ChunkTrail::kBatch)
 }
 
 void TrailingPass::close(std::size_t n) {
@@ -46,9 +85,11 @@ void TrailingPass::close(std::size_t n) {
   if (at < n) left_.push_back({at, std::uint32_t(n)}), left_count_ += std::uint32_t(n) - at;
 }
 
-void TrailingPass::rest(const ForceSums& sums) const {
-  const AlikeArrays a = arrays_;  // copies, as pass's
+void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
+  const AlikeArrays a = arrays_;  // copies, as pass_spheres'
+  const BodyArrays ab = body_arrays_;
   const PointWatch watch = watch_;
+  const BoundWatch bounds = bounds_;
   const double h = h_, dt = dt_;  // s
   const Vec3 gravity = gravity_;  // m/s^2
   const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
@@ -56,9 +97,19 @@ void TrailingPass::rest(const ForceSums& sums) const {
   for (const BodyRange& g : left_) {
     const std::size_t size = g.last - g.first;
     const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
-    for (std::size_t k = from; k < to; ++k)
-      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, g.first + (k - skipped), h, dt, gravity, sums,
-                                                                    watch);
+    for (std::size_t k = from; k < to; ++k) {
+      const std::size_t i = g.first + (k - skipped);
+      if (kind_ == TrailKind::spheres) {
+        integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
+      } else if (PassTurn* turn = turns ? turns->at(i) : nullptr) {  // as close_and_start_step's
+        integrate_detail::turn_between_kicks<Rotor::isotropic>(ab, i, h, dt, gravity, sums, *turn);
+        bounds(i, ab.position[i]);
+      } else {
+        integrate_detail::close_and_start_from_gravity<Rotor::isotropic>(ab, i, h, dt, gravity, sums, bounds);
+      }
+    }
+    if (kind_ == TrailKind::isotropic && from < to)
+      poses_.pose(std::uint32_t(g.first + (from - skipped)), std::uint32_t(g.first + (to - skipped)));
     skipped += size;
   }
 #pragma omp barrier
