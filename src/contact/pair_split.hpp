@@ -73,7 +73,8 @@ struct BodyRange {
 // the walk has passed its pairs as i (pairs sorted by i < j: no later pair reads it) and no other
 // chunk's pair reads it. Thread t runs `pass(context, first, last)` on its own done bodies as its
 // walk finishes them, within done[t] (set by the caller to the bodies whose driver pairs thread t
-// made, narrowed by the walk to those it may move): the caller's next pass moves the others.
+// made, narrowed by the walk to those it moved: a thread whose pairs left a turn stops), the
+// caller's next pass moves the others.
 struct WalkTrail {
   void (*pass)(const void* context, std::uint32_t first, std::uint32_t last);
   const void* context;

@@ -100,7 +100,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   bodies = build_bodies(in_order(std::move(specs), *order), library);
   bodies.id = std::move(*order);
   rotors_ = group_rotors(bodies, library_.shapes);
-  trailing_.choose(rotors_, bodies.size());
+  trailing_.choose(rotors_, bodies);
   drop_sphere_orientations();  // before anything copies the bodies (a rank's store)
   if (scene.forces.gravity) gravity_ = *scene.forces.gravity;
   const ContactSettings cs = contact_settings(scene_, bodies, library_.shapes);

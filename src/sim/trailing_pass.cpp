@@ -19,10 +19,27 @@ static bool isotropic_in_order(const RotorGroups& groups, std::size_t n) {
   return true;
 }
 
-void TrailingPass::choose(const RotorGroups& groups, std::size_t n) {
-  kind_ = trailing_fits(groups, n) ? TrailKind::spheres
-          : isotropic_in_order(groups, n) ? TrailKind::isotropic
-                                          : TrailKind::none;
+// Every body of body 0's mass and inertia (equal cubes: the pass reads neither array, 32 bytes a body).
+static bool all_alike(const Bodies& b) {
+  for (std::size_t i = 1; i < b.size(); ++i)
+    if (b.mass[i] != b.mass[0] || b.inertia[i] != b.inertia[0]) return false;
+  return true;
+}
+
+void TrailingPass::choose(const RotorGroups& groups, const Bodies& b) {
+  kind_ = trailing_fits(groups, b.size()) ? TrailKind::spheres
+          : isotropic_in_order(groups, b.size()) ? TrailKind::isotropic
+                                                 : TrailKind::none;
+  alike_ = kind_ == TrailKind::spheres || (kind_ == TrailKind::isotropic && all_alike(b));
+}
+
+template <>
+const AlikeArrays& TrailingPass::arrays<AlikeArrays>() const {
+  return arrays_;
+}
+template <>
+const BodyArrays& TrailingPass::arrays<BodyArrays>() const {
+  return body_arrays_;
 }
 
 WalkTrail TrailingPass::open_common(double h, double dt, const Vec3& gravity, ForceSums sums) {
@@ -30,8 +47,11 @@ WalkTrail TrailingPass::open_common(double h, double dt, const Vec3& gravity, Fo
   sums.late = LateTerms{};  // a body moved behind its walk has every pair in its home chunk: no late term
   sums_ = sums;
   done_.assign(std::size_t(omp_get_max_threads()), BodyRange{});
-  return {kind_ == TrailKind::spheres ? &TrailingPass::pass_spheres : &TrailingPass::pass_isotropic, this,
-          done_.data()};
+  void (*pass)(const void*, std::uint32_t, std::uint32_t) =
+      kind_ == TrailKind::spheres ? &TrailingPass::pass_spheres
+      : alike_                    ? &TrailingPass::pass_isotropic<AlikeArrays>
+                                  : &TrailingPass::pass_isotropic<BodyArrays>;
+  return {pass, this, done_.data()};
 }
 
 WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity, ForceSums sums,
@@ -43,7 +63,8 @@ WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity
 
 WalkTrail TrailingPass::open(Bodies& b, double h, double dt, const Vec3& gravity, ForceSums sums,
                              const BoundWatch& watch, const ListedPoses& poses) {
-  body_arrays_ = arrays_of(b);
+  if (alike_) arrays_ = alike_arrays_of(b, 0);
+  else body_arrays_ = arrays_of(b);
   bounds_ = watch;
   poses_ = poses;
   return open_common(h, dt, gravity, sums);
@@ -61,9 +82,10 @@ void TrailingPass::pass_spheres(const void* self, std::uint32_t first, std::uint
     integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
 }
 
+template <class Arrays>
 void TrailingPass::pass_isotropic(const void* self, std::uint32_t first, std::uint32_t last) {
   const TrailingPass& p = *static_cast<const TrailingPass*>(self);
-  const BodyArrays a = p.body_arrays_;  // copies, as pass_spheres'
+  const Arrays a = p.arrays<Arrays>();  // copies, as pass_spheres'
   const ForceSums sums = p.sums_;
   const BoundWatch bounds = p.bounds_;
   const double h = p.h_, dt = p.dt_;  // s
@@ -86,9 +108,34 @@ void TrailingPass::close(std::size_t n) {
 }
 
 void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
+  if (kind_ == TrailKind::isotropic) {
+    if (alike_) rest_isotropic(arrays_, sums, turns);
+    else rest_isotropic(body_arrays_, sums, turns);
+#pragma omp barrier
+    return;
+  }
   const AlikeArrays a = arrays_;  // copies, as pass_spheres'
-  const BodyArrays ab = body_arrays_;
   const PointWatch watch = watch_;
+  const double h = h_, dt = dt_;  // s
+  const Vec3 gravity = gravity_;  // m/s^2
+  const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
+  std::size_t skipped = 0;  // bodies of the gaps before this one
+  for (const BodyRange& g : left_) {
+    const std::size_t size = g.last - g.first;
+    const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
+    for (std::size_t k = from; k < to; ++k)
+      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, g.first + (k - skipped), h, dt, gravity, sums,
+                                                                    watch);
+    skipped += size;
+  }
+#pragma omp barrier
+}
+
+// rest's isotropic bodies: this thread's share of the left ones moved (a turn of `turns` between
+// its body's kicks, as close_and_start_step's), then posed.
+template <class Arrays>
+void TrailingPass::rest_isotropic(const Arrays& arrays, const ForceSums& sums, const PassTurns* turns) const {
+  const Arrays a = arrays;  // copies, as pass_spheres'
   const BoundWatch bounds = bounds_;
   const double h = h_, dt = dt_;  // s
   const Vec3 gravity = gravity_;  // m/s^2
@@ -99,20 +146,16 @@ void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
     const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
     for (std::size_t k = from; k < to; ++k) {
       const std::size_t i = g.first + (k - skipped);
-      if (kind_ == TrailKind::spheres) {
-        integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
-      } else if (PassTurn* turn = turns ? turns->at(i) : nullptr) {  // as close_and_start_step's
-        integrate_detail::turn_between_kicks<Rotor::isotropic>(ab, i, h, dt, gravity, sums, *turn);
-        bounds(i, ab.position[i]);
+      if (PassTurn* turn = turns ? turns->at(i) : nullptr) {
+        integrate_detail::turn_between_kicks<Rotor::isotropic>(a, i, h, dt, gravity, sums, *turn);
+        bounds(i, a.position[i]);
       } else {
-        integrate_detail::close_and_start_from_gravity<Rotor::isotropic>(ab, i, h, dt, gravity, sums, bounds);
+        integrate_detail::close_and_start_from_gravity<Rotor::isotropic>(a, i, h, dt, gravity, sums, bounds);
       }
     }
-    if (kind_ == TrailKind::isotropic && from < to)
-      poses_.pose(std::uint32_t(g.first + (from - skipped)), std::uint32_t(g.first + (to - skipped)));
+    if (from < to) poses_.pose(std::uint32_t(g.first + (from - skipped)), std::uint32_t(g.first + (to - skipped)));
     skipped += size;
   }
-#pragma omp barrier
 }
 
 }  // namespace polydem

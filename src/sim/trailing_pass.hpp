@@ -27,7 +27,7 @@ bool trailing_fits(const RotorGroups& groups, std::size_t n);
 class TrailingPass {
  public:
   // Once the bodies are grouped: the kind of pass that can move them all.
-  void choose(const RotorGroups& groups, std::size_t n);
+  void choose(const RotorGroups& groups, const Bodies& b);
   TrailKind kind() const { return kind_; }
   // Before the step's second region: the next step's joined pass, h = dt/2 (s), gravity (m/s^2);
   // the hook for ContactEngine::forces. Spheres:
@@ -44,11 +44,17 @@ class TrailingPass {
 
  private:
   static void pass_spheres(const void* self, std::uint32_t first, std::uint32_t last);
+  template <class Arrays>
   static void pass_isotropic(const void* self, std::uint32_t first, std::uint32_t last);
+  template <class Arrays>
+  void rest_isotropic(const Arrays& a, const ForceSums& sums, const PassTurns* turns) const;
+  template <class Arrays>
+  const Arrays& arrays() const;
   WalkTrail open_common(double h, double dt, const Vec3& gravity, ForceSums sums);
   TrailKind kind_ = TrailKind::none;
-  AlikeArrays arrays_{};  // spheres
-  BodyArrays body_arrays_{};  // isotropic bodies
+  bool alike_ = false;  // one mass and inertia for all (spheres always): arrays_, else body_arrays_
+  AlikeArrays arrays_{};
+  BodyArrays body_arrays_{};
   double h_ = 0.0, dt_ = 0.0;  // s
   Vec3 gravity_ = Vec3::Zero();  // m/s^2
   ForceSums sums_{};
