@@ -6,7 +6,6 @@
 // bytes of vertices a cube were ~6 of a cube-step's 34 last-level lines at 216,000 cubes.
 // Other shapes keep their stored vertices, and a rebuild stores every listed body's (its
 // candidate searches and the rebuild step's walk read them there).
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -32,10 +31,12 @@ struct MadeBox {
 // A thread's boxes made in one walk, kept by body (slot b mod kSlots): bodies in space order
 // (cells z, y, x) meet their pairs within about two layers of cells of the pile (~450 bodies),
 // so a cube's corners are made about once a walk, not once for each of its ~4.6 pair ends.
+// Held inline: a walk's MadeWalk is made once (on the heap), and each lookup then loads no array's address.
 struct MadeCorners {
-  static constexpr std::uint32_t kSlots = 512;  // 160 KB: a core's L2, not the last level
-  std::unique_ptr<std::uint32_t[]> body;        // per slot, whose pose it holds; ~0: none
-  std::unique_ptr<MadeBox[]> made;
+  static constexpr std::uint32_t kSlots = 1024;  // 320 KB: a core's L2 (1 MB here), not the last level
+  std::array<std::uint32_t, kSlots> body;       // per slot, whose pose it holds; ~0: none
+  std::array<MadeBox, kSlots> made;
+  MadeCorners() { body.fill(~0u); }
 };
 
 // The box pose a kernel reads of one side of the walked pair (PairScratch).
@@ -49,11 +50,6 @@ struct MadePose {
 // instructions a cube-step at 54,000; the walk of stored vertices is another instance, no test).
 [[gnu::always_inline]] inline const PosedBody& find_or_make(const PosedBody& posed, std::uint32_t b, ShapeBoxes boxes,
                                                        MadeCorners& corners, MadePose& made, const MadePose& other) {
-  if (!corners.body) {  // first use in this walk
-    corners.body.reset(new std::uint32_t[MadeCorners::kSlots]);
-    corners.made.reset(new MadeBox[MadeCorners::kSlots]);
-    std::fill_n(corners.body.get(), MadeCorners::kSlots, ~0u);
-  }
   const std::uint32_t slot = b % MadeCorners::kSlots;
   made.body = b;
   if (corners.body[slot] != b) {
@@ -71,14 +67,14 @@ struct MadePose {
   return *made.pose;
 }
 
-// A walk's made boxes: a pair walk's scratch holds it only from its first box (a sphere walk's
-// scratch stays small: held inline, it cost the sphere bed's walk +0.45% instructions).
+// A walk's made boxes: a made walk's scratch holds it from its first pair read (pair_forces_into);
+// a sphere walk's scratch stays small (held inline, it cost the sphere bed's walk +0.45% instructions).
 struct MadeWalk {
   MadeCorners corners;
   MadePose made_i, made_j;  // the walked pair's box poses with their corners
 };
 inline MadeWalk& made_walk(std::unique_ptr<MadeWalk>& walk) {
-  if (!walk) walk = std::make_unique<MadeWalk>();
+  if (!walk) walk.reset(new MadeWalk);  // default-initialised: make_unique would zero its 160 KB first
   return *walk;
 }
 

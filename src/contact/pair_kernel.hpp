@@ -155,11 +155,11 @@ struct PairScratch {
   std::unique_ptr<MadeWalk> made;     // box corners made in this walk (with_vertices), from its first box
 };
 
-// The walked pair's side i as the kernels read it: stored, or a box made (with_vertices).
+// The walked pair's side i as the kernels read it: stored, or a box made (with_vertices) in
+// the walk's boxes `w` (made_walk).
 [[gnu::always_inline]] inline const PosedBody& pose_of_i(const PosedBody& posed, std::uint32_t i, ShapeBoxes boxes,
-                                                         PairScratch& scratch) {
+                                                         MadeWalk& w) {
   if (posed.vertices) return posed;
-  MadeWalk& w = made_walk(scratch.made);
   return with_vertices(posed, i, boxes, w.corners, w.made_i, w.made_j);
 }
 
@@ -311,7 +311,7 @@ template <class Partner, class Posed>
 // Partner must provide:
 //   kMadeVertices: a box's pose may come without vertices (made_pose.hpp: with_vertices makes them)
 //   posed_of(j, PairScratch&): what contact, separated and allowance take of partner j for one pair (a
-//     body: its pose with vertices, with_vertices; a driver: j)
+//     body: its pose with vertices, with_vertices, the scratch's MadeWalk made first where kMadeVertices; a driver: j)
 //   bool contact(const PosedBody& a, posed_of(j), FeaturePair f, double max_gap, ContactPoint&)
 //   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
 //   double moved(i, j): m, bound on how much closer two features got since the build
@@ -613,8 +613,9 @@ template <class Parts, bool kLone, class Partner>
   if (k + 1 < list.size()) partner.prefetch(list.pairs[k + 1].j);
   const int was_touching = list.touching[k];
   if (!was_touching && partner.apart(list, k, band)) return true;  // most listed pairs, at a glance
+  if constexpr (Partner::kMadeVertices) made_walk(scratch.made);  // posed_of and pose_of_i read it unchecked
   const PosedBody& a = Partner::kMadeVertices
-                           ? pose_of_i(bodies.posed[p.i], p.i, bodies.boxes, scratch)
+                           ? pose_of_i(bodies.posed[p.i], p.i, bodies.boxes, *scratch.made)
                            : bodies.posed[p.i];
   decltype(auto) b = partner.posed_of(p.j, scratch);  // a body's pose (a reference) or a driver's index
   if (!was_touching && partner.separated(a, b, band)) return true;

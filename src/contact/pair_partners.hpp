@@ -45,7 +45,7 @@ struct BodyPartner {
   const PosedBody& posed_of(std::uint32_t j, PairScratch& s) const {
     if constexpr (kMade) {
       if (posed[j].vertices) return posed[j];
-      MadeWalk& w = made_walk(s.made);
+      MadeWalk& w = *s.made;  // made by the caller (pair_forces_into)
       return with_vertices(posed[j], j, boxes, w.corners, w.made_j, w.made_i);
     }
     return posed[j];

@@ -3,6 +3,7 @@
 // keep their own corners while the kernels read the pair.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -70,5 +71,5 @@ TEST_CASE("stored vertices are read where they are: a general polyhedron's, a re
   MadePose a, b;
   CHECK(&with_vertices(rocks.with[2], 2, rocks.view(), corners, a, b) == &rocks.with[2]);
   CHECK(&with_vertices(cubes.with[3], 3, cubes.view(), corners, a, b) == &cubes.with[3]);
-  CHECK(!corners.body);  // nothing made
+  CHECK(std::count(corners.body.begin(), corners.body.end(), ~0u) == MadeCorners::kSlots);  // nothing made
 }
