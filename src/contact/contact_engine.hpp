@@ -44,7 +44,8 @@ struct ContactSettings {
 // Bodies from which a box's world vertices are made where read (ContactSettings::made_vertices):
 // a step streams ~2 KB a cube (34 lines at 216,000, README "The bytes a cube-step streams"), so
 // from ~16,000 cubes the stored vertices leave a 32 MB last level before the walk reads them.
-// Counted (cachegrind's Ir + 10 L1 + 100 LL a cube-step): 54,000 cubes -4.6%; the settled 3,375 made so +6.1% instructions.
+// Counted (cachegrind's Ir + 10 L1 + 100 LL a cube-step, made / stored): 13,500 cubes +5.9%, 30,375 -6.7%,
+// 54,000 -5.8% (README "The made corners' cost and threshold").
 constexpr std::size_t kMadeVerticesBodies = 16384;
 // Steps a body's own skin lasts at its speed at the rebuild (ContactSettings::skin_max): the pour
 // counted at 20, 30 and 50 (README, "A skin per body").
