@@ -107,6 +107,19 @@ void TrailingPass::close(std::size_t n) {
   if (at < n) left_.push_back({at, std::uint32_t(n)}), left_count_ += std::uint32_t(n) - at;
 }
 
+// f(first, last) on each run of this thread's even share of the left bodies, increasing.
+template <class F>
+void TrailingPass::for_my_left(F&& f) const {
+  const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
+  std::size_t skipped = 0;  // bodies of the gaps before this one
+  for (const BodyRange& g : left_) {
+    const std::size_t size = g.last - g.first;
+    const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
+    if (from < to) f(std::uint32_t(g.first + (from - skipped)), std::uint32_t(g.first + (to - skipped)));
+    skipped += size;
+  }
+}
+
 void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
   if (kind_ == TrailKind::isotropic) {
     if (alike_) rest_isotropic(arrays_, sums, turns);
@@ -118,16 +131,10 @@ void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
   const PointWatch watch = watch_;
   const double h = h_, dt = dt_;  // s
   const Vec3 gravity = gravity_;  // m/s^2
-  const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
-  std::size_t skipped = 0;  // bodies of the gaps before this one
-  for (const BodyRange& g : left_) {
-    const std::size_t size = g.last - g.first;
-    const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
-    for (std::size_t k = from; k < to; ++k)
-      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, g.first + (k - skipped), h, dt, gravity, sums,
-                                                                    watch);
-    skipped += size;
-  }
+  for_my_left([&](std::uint32_t first, std::uint32_t last) {
+    for (std::uint32_t i = first; i < last; ++i)
+      integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
+  });
 #pragma omp barrier
 }
 
@@ -139,13 +146,8 @@ void TrailingPass::rest_isotropic(const Arrays& arrays, const ForceSums& sums, c
   const BoundWatch bounds = bounds_;
   const double h = h_, dt = dt_;  // s
   const Vec3 gravity = gravity_;  // m/s^2
-  const auto [first, last] = team_shares(left_count_, TeamCut{})[0];
-  std::size_t skipped = 0;  // bodies of the gaps before this one
-  for (const BodyRange& g : left_) {
-    const std::size_t size = g.last - g.first;
-    const std::size_t from = std::max(first, skipped), to = std::min(last, skipped + size);
-    for (std::size_t k = from; k < to; ++k) {
-      const std::size_t i = g.first + (k - skipped);
+  for_my_left([&](std::uint32_t first, std::uint32_t last) {
+    for (std::uint32_t i = first; i < last; ++i) {
       if (PassTurn* turn = turns ? turns->at(i) : nullptr) {
         integrate_detail::turn_between_kicks<Rotor::isotropic>(a, i, h, dt, gravity, sums, *turn);
         bounds(i, a.position[i]);
@@ -153,9 +155,8 @@ void TrailingPass::rest_isotropic(const Arrays& arrays, const ForceSums& sums, c
         integrate_detail::close_and_start_from_gravity<Rotor::isotropic>(a, i, h, dt, gravity, sums, bounds);
       }
     }
-    if (from < to) poses_.pose(std::uint32_t(g.first + (from - skipped)), std::uint32_t(g.first + (to - skipped)));
-    skipped += size;
-  }
+    poses_.pose(first, last);
+  });
 }
 
 }  // namespace polydem

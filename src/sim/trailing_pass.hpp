@@ -49,6 +49,8 @@ class TrailingPass {
   static void pass_isotropic(const void* self, std::uint32_t first, std::uint32_t last);
   template <class Arrays>
   void rest_isotropic(const Arrays& a, const ForceSums& sums, const PassTurns* turns) const;
+  template <class F>
+  void for_my_left(F&& f) const;
   template <class Arrays>
   const Arrays& arrays() const;
   WalkTrail open_common(double h, double dt, const Vec3& gravity, ForceSums sums);
