@@ -74,7 +74,7 @@ struct MadeWalk {
   MadePose made_i, made_j;  // the walked pair's box poses with their corners
 };
 inline MadeWalk& made_walk(std::unique_ptr<MadeWalk>& walk) {
-  if (!walk) walk.reset(new MadeWalk);  // default-initialised: make_unique would zero its 160 KB first
+  if (!walk) walk.reset(new MadeWalk);  // default-initialised: make_unique would zero its 320 KB first
   return *walk;
 }
 
