@@ -240,7 +240,7 @@ void ContactEngine::rebuild(const LocalBodies& bodies, const Drivers& drivers, b
       },
       [&] { uncarried_d = make_driver_list(bodies, drivers, std::move(fresh_d), old_driver, !at_once); });
   flush_pairs(old_driver, uncarried_d, bodies.ghost);
-  if (spheres_only_) {  // a sphere's weight counts its wall pairs (driver_begin_)
+  if (spheres_only_ || trailed_) {  // a sphere's weight counts its wall pairs (driver_begin_), a trailed body's too
     weigh_bodies(!own_pass_cut_);
     direct_.cut(body_list_, team);
   }
@@ -274,7 +274,7 @@ void ContactEngine::close_body_list(const LocalBodies& bodies, PairList& old_bod
   body_list_ = std::move(fresh);
   if (spheres_only_) body_list_.set_recording(record_contacts_);
   direct_.reset(bodies.size());
-  if (spheres_only_) return;  // its weights read the driver pairs: cut after both lists
+  if (spheres_only_ || trailed_) return;  // its weights read the driver pairs: cut after both lists
   weigh_bodies(!own_pass_cut_);  // the last lists' passes had their own cut: likely these too
   direct_.cut(body_list_, team);
 }

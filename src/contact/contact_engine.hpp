@@ -208,6 +208,9 @@ class ContactEngine {
   TeamCut body_cut() const { return {direct_.split.body_cut.data(), direct_.split.threads}; }
   // Per body, its passes' instructions a step (kicks and drift by rotor: pass_weights), for pass_cut.
   void weigh_passes(std::vector<float> instructions) { pass_weight_ = std::move(instructions); }
+  // The next step's joined pass runs behind the walk on most steps (TrailingPass): the walk's cut
+  // weighs each body's pass and driver pairs where they run (weigh_bodies). From the next rebuild.
+  void trail_walks(bool on) { trailed_ = on; }
   // The cut of the step's first region (kicks, drift, the rebuild check, the poses; each thread
   // reads only the bodies it moved): the walk's body cut, or one of its own where that leaves a
   // thread far above an even share of those passes (a pour: the falling bodies have no pairs, so
@@ -374,6 +377,7 @@ class ContactEngine {
   int pass_threads_ = 0;
   bool pass_folded_ = false;               // pass_cut_ is folded on the walk's (fold_cut)
   bool own_pass_cut_ = false;
+  bool trailed_ = false;                   // trail_walks
   ContactStats stats_;
   ExactEnergy flushed_;                    // J, the pending energies flushed since the last take_energy
   std::vector<PairTurn> turns_;            // left by this step's pair loops, in no set order (take_turns)

@@ -20,6 +20,12 @@ namespace {
 constexpr double kSpherePassWeight = 1.4;
 constexpr double kWallPairWeight = 4.9;
 constexpr double kPolyhedronPassWeight = 2.9;
+// Behind the walk (trail_walks), in the same unit: a polyhedron's trailing pass (kicks, drift, bound,
+// pose) and a driver pair, shared by bodies there. Counted on the settled cubes (bb48e35, 2 threads,
+// 100 steps): a pair unit ~247 instructions (the walk over 7,742 pairs), a cube's pass ~558 (2.25),
+// a driver pair ~786 (3.2).
+constexpr double kTrailedPolyhedronWeight = 2.25;
+constexpr double kPolyhedronDriverPairWeight = 3.2;
 // The first region's work a body, in instructions a step (callgrind, the pour at 1 thread, 400
 // steps from boxfill_t0.1.bin; the kicks and drift: pass_weights): a polyhedron's rebuild check
 // (displacement_bound) and a listed polyhedron's pose (rotation and world vertices).
@@ -36,15 +42,22 @@ constexpr CrossWeights kSphereCross{0.7, 0.2}, kPolyhedronCross{0.2, 0.07};
 
 // Each body's passes and (spheres) wall pairs, in body pairs apart (split_pairs' unit), so the
 // body cut of the walk shares the passes too and evens out the walk and the wall pairs (no barrier
-// between them). Polyhedra's wall pairs are shared as they come. `passes` false: the passes have
-// a cut of their own (cut_passes), the walk's weighs its pairs and wall pairs alone.
+// between them). Polyhedra's wall pairs are shared as they come, but by bodies ahead of a trailing
+// pass. `passes` false: the passes have a cut of their own (cut_passes), the walk's weighs its
+// pairs and wall pairs alone; trailed, the passes run in the walk's region whatever their cut.
 void ContactEngine::weigh_bodies(bool passes) {
-  const double sphere = passes ? kSpherePassWeight : 0.0, polyhedron = passes ? kPolyhedronPassWeight : 0.0;
+  passes |= trailed_;
+  const double sphere = passes ? kSpherePassWeight : 0.0;
+  const double polyhedron = !passes ? 0.0 : trailed_ ? kTrailedPolyhedronWeight : kPolyhedronPassWeight;
+  // driver_begin_ read only after the driver list is made (rebuild): a polyhedron's untrailed cut is made beside it
+  const bool by_drivers = spheres_only_ || trailed_;
+  const double driver_pair = spheres_only_ ? kWallPairWeight : kPolyhedronDriverPairWeight;
   direct_.body_weight.resize(direct_.sums.size());
   for (std::size_t b = 0; b < direct_.body_weight.size(); ++b)
-    direct_.body_weight[b] = spheres_only_ ? float(sphere + kWallPairWeight * (driver_begin_[b + 1] - driver_begin_[b]))
-                                           : float(polyhedron);
+    direct_.body_weight[b] = float((spheres_only_ ? sphere : polyhedron) +
+                                   (by_drivers ? driver_pair * (driver_begin_[b + 1] - driver_begin_[b]) : 0.0));
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
+  direct_.trailed = trailed_;
 }
 
 namespace {
@@ -96,7 +109,7 @@ void ContactEngine::cut_passes(int threads) {
   double heaviest = 0.0;
   for (int t = 0; t < threads; ++t) heaviest = std::max(heaviest, before[walk[t + 1]] - before[walk[t]]);
   if (heaviest < kOwnPassCut * before[n] / threads) return;
-  if (walk_weighed_passes) {
+  if (walk_weighed_passes && !trailed_) {  // trailed, the walk's weights stay (weigh_bodies)
     weigh_bodies(false);  // the walk's cut again, without the passes (once a switch: ~0.2e6 instructions)
     direct_.cut(body_list_, threads);
   }

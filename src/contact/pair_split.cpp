@@ -6,6 +6,9 @@ namespace polydem {
 
 namespace {
 
+// A trailed cut made again at most this often (split_pairs): the settled cubes' stays after 3.
+constexpr int kTrailedCuts = 4;
+
 // A contact's cost in pairs apart (the law and the contact search on top of the distance test):
 // a pour's few contacts sit in its pile, so pairs counted alike left one thread twice the work.
 constexpr double kContactWeight = 3.0;
@@ -78,28 +81,9 @@ void add_crossing(const std::vector<BodyPair>& pairs, const std::vector<int>& ho
   }
 }
 
-}  // namespace
-
-void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
-                 const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size) {
+// Each chunk's bodies (body_cut) and its first body no earlier chunk's pair reads (trail_from).
+void cut_bodies(const std::vector<BodyPair>& pairs, std::size_t n_bodies, int threads, PairSplit& split) {
   const std::size_t n = pairs.size();
-  split.threads = threads;
-  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies, block_size);
-  std::vector<double> bodies = body_weights(pairs, body_weight, block, block_size);
-  std::vector<double> weight = bodies;  // each pair computed by its chunk's thread
-  for (std::uint32_t k = 0; k < n; ++k) weight[k / block_size] += pair_weight(touching, k);
-  cut_by_weight(weight, shares, threads, n, block_size, split.cut);
-  std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
-  if (threads > 1 && (cross.foreign > 0.0 || cross.late > 0.0)) {  // once more, with this cut's crossing work
-    add_crossing(pairs, home, split.cut, block, block_size, cross, weight, bodies);
-    cut_by_weight(weight, shares, threads, n, block_size, split.cut);
-    home = home_chunks(pairs, n_bodies, split.cut);
-  }
-  split.walk_weight.assign(threads, 0.0);
-  for (int t = 0; t < threads; ++t)
-    for (std::size_t b = split.cut[t] / block_size; b * block_size < split.cut[t + 1]; ++b)
-      split.walk_weight[t] += weight[b] - bodies[b];
   split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
     split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
@@ -109,6 +93,67 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
     for (; k < split.cut[t]; ++k) read_below = std::max(read_below, pairs[k].j + 1);
     split.trail_from[t] = std::max(split.body_cut[t], read_below);
   }
+}
+
+// `body_weight` less the bodies an earlier chunk reads (from body_cut[t] to trail_from[t]): a
+// trailing pass leaves them to the next step's first region, shared evenly there (WalkTrail).
+std::vector<float> trailed_weights(const std::vector<float>& body_weight, const PairSplit& split) {
+  std::vector<float> moved = body_weight;
+  for (int t = 1; t < split.threads; ++t)
+    for (std::size_t b = split.body_cut[t]; b < std::min<std::size_t>(split.trail_from[t], moved.size()); ++b) moved[b] = 0.0f;
+  return moved;
+}
+
+// A cut's weights: per block, its pairs' and bodies' (`weight`) and its bodies' alone (`bodies`).
+struct BlockWeights {
+  std::vector<double> weight, bodies;
+};
+
+// split.cut by `body_weight` and the pairs' (and with `cross` once more with its crossing work);
+// returns the blocks' weights and each body's home chunk.
+std::vector<int> weigh_and_cut(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
+                               const std::vector<float>& body_weight, std::size_t n_bodies, int threads,
+                               const std::vector<double>& shares, CrossWeights cross, std::size_t block_size,
+                               PairSplit& split, BlockWeights& w) {
+  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies, block_size);
+  w.bodies = body_weights(pairs, body_weight, block, block_size);
+  w.weight = w.bodies;  // each pair computed by its chunk's thread
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) w.weight[k / block_size] += pair_weight(touching, k);
+  cut_by_weight(w.weight, shares, threads, pairs.size(), block_size, split.cut);
+  std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
+  if (threads > 1 && (cross.foreign > 0.0 || cross.late > 0.0)) {  // once more, with this cut's crossing work
+    add_crossing(pairs, home, split.cut, block, block_size, cross, w.weight, w.bodies);
+    cut_by_weight(w.weight, shares, threads, pairs.size(), block_size, split.cut);
+    home = home_chunks(pairs, n_bodies, split.cut);
+  }
+  return home;
+}
+
+}  // namespace
+
+void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
+                 const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
+                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size, bool trailed) {
+  const std::size_t n = pairs.size();
+  split.threads = threads;
+  BlockWeights w;
+  std::vector<int> home =
+      weigh_and_cut(pairs, touching, body_weight, n_bodies, threads, shares, cross, block_size, split, w);
+  // Trailed: again without the bodies the last cut leaves to the next step, until the cut stays
+  // (the bodies left move with it). A late term is added where its body is moved: every one of a
+  // trailed cut's is left (its body is read by an earlier chunk).
+  for (int again = 0; trailed && threads > 1 && again < kTrailedCuts; ++again) {
+    const std::vector<std::uint32_t> last = split.cut;
+    cut_bodies(pairs, n_bodies, threads, split);
+    home = weigh_and_cut(pairs, touching, trailed_weights(body_weight, split), n_bodies, threads, shares,
+                         CrossWeights{cross.foreign, 0.0}, block_size, split, w);
+    if (split.cut == last) break;
+  }
+  split.walk_weight.assign(threads, 0.0);
+  for (int t = 0; t < threads; ++t)
+    for (std::size_t b = split.cut[t] / block_size; b * block_size < split.cut[t + 1]; ++b)
+      split.walk_weight[t] += w.weight[b] - (trailed ? 0.0 : w.bodies[b]);  // trailed: timed with the walk
+  cut_bodies(pairs, n_bodies, threads, split);
   // The foreign pairs, with the side (if any) homed in their own chunk.
   split.foreign.clear();
   split.foreign_side.clear();
@@ -177,7 +222,7 @@ std::vector<double> paced_shares(const PairSplit& split, const std::vector<Threa
 void DirectSums::cut(const PairList& list, int threads) {
   if (follow_pace) shares = paced_shares(split, pace, shares);
   if (shares.size() != std::size_t(threads)) shares.clear();  // another team: even shares
-  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross, list.block);
+  split_pairs(list.pairs, list.touching, body_weight, sums.size(), threads, split, shares, cross, list.block, trailed);
   foreign.resize(split.foreign_side.size());
   pace.assign(threads > 1 ? threads : 0, ThreadPace{});
   const bool on = !zero.empty() && zero[0].on;  // the flags agree between loops

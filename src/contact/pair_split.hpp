@@ -53,7 +53,7 @@ struct PairSplit {
   int threads = 0;                           // the team it was cut for; 0: to be cut
   std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of the list's block but the last
   std::vector<std::uint32_t> body_cut;       // threads + 1 bodies: chunk t's pairs' bodies i from body_cut[t] (TeamCut)
-  std::vector<double> walk_weight;           // per chunk, its walk's weight (pairs apart; its bodies' left out)
+  std::vector<double> walk_weight;           // per chunk, its walk's weight (pairs apart; its bodies' left out but trailed)
   std::vector<std::uint32_t> foreign;        // foreign pairs, increasing, then the list size (a sentinel)
   std::vector<std::uint32_t> foreign_begin;  // per chunk + 1: its foreign pairs' ordinals
   std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j
@@ -94,11 +94,13 @@ struct CrossWeights {
 // fraction shares[t] of the whole weight (`shares`: per thread, summing to 1, or empty: even
 // shares). Thread t takes the bodies from the body i of chunk t's first pair (body_cut): each
 // body with pairs as i is in the share of the chunk of its last one. With `cross`, the cut is made
-// again once with the first cut's foreign pairs and late terms weighed where they run.
+// again once with the first cut's foreign pairs and late terms weighed where they run. `trailed`:
+// the bodies' work runs behind the walk (WalkTrail) but for the bodies an earlier chunk reads,
+// which the next step's first region moves: the cut is made again once without those.
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
                  const std::vector<double>& shares = {}, CrossWeights cross = {},
-                 std::size_t block_size = kPairBlock);
+                 std::size_t block_size = kPairBlock, bool trailed = false);
 
 // One thread's walk times (s) since the last cut, the last kSteps kept. A cache line of its own
 // start: each thread writes its own every step.
@@ -130,6 +132,7 @@ struct DirectSums {
   std::vector<BodySum> sums;
   std::vector<float> body_weight;  // per body, its other passes' work in pairs apart (split_pairs), or empty
   CrossWeights cross;              // the cut's crossing work (split_pairs)
+  bool trailed = false;            // body_weight is a trailing pass's, behind the walk (split_pairs)
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`: its late terms
   // The cut follows the threads' measured speed: a vCPU slowed by the host (or another process

@@ -110,7 +110,10 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   Bodies none;
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(many ? none : bodies), cs);
   if (many) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
-  else engine_->weigh_passes(pass_weights(rotors_, bodies.size()));
+  else {
+    engine_->weigh_passes(pass_weights(rotors_, bodies.size()));
+    engine_->trail_walks(trailing_.kind() != TrailKind::none);
+  }
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
     const MotionSettings& m = drivers.motion(j);
     drivers_move_ |= m.rotates || m.velocity != Vec3::Zero() || m.force || m.pressure;
