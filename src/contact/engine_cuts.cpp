@@ -57,7 +57,7 @@ void ContactEngine::weigh_bodies(bool passes) {
     direct_.body_weight[b] = float((spheres_only_ ? sphere : polyhedron) +
                                    (by_drivers ? driver_pair * (driver_begin_[b + 1] - driver_begin_[b]) : 0.0));
   direct_.cross = spheres_only_ ? kSphereCross : kPolyhedronCross;
-  direct_.trailed = trailed_;
+  direct_.trailed = !trailed_ ? 0.0 : spheres_only_ ? sphere : polyhedron;
 }
 
 namespace {

@@ -95,12 +95,14 @@ void cut_bodies(const std::vector<BodyPair>& pairs, std::size_t n_bodies, int th
   }
 }
 
-// `body_weight` less the bodies an earlier chunk reads (from body_cut[t] to trail_from[t]): a
-// trailing pass leaves them to the next step's first region, shared evenly there (WalkTrail).
-std::vector<float> trailed_weights(const std::vector<float>& body_weight, const PairSplit& split) {
+// `body_weight` less the trailing pass (`trailed` each) of the bodies an earlier chunk reads (from
+// body_cut[t] to trail_from[t]): it leaves them to the next step's first region, shared evenly there
+// (WalkTrail); their driver pairs stay with their chunk.
+std::vector<float> trailed_weights(const std::vector<float>& body_weight, double trailed, const PairSplit& split) {
   std::vector<float> moved = body_weight;
   for (int t = 1; t < split.threads; ++t)
-    for (std::size_t b = split.body_cut[t]; b < std::min<std::size_t>(split.trail_from[t], moved.size()); ++b) moved[b] = 0.0f;
+    for (std::size_t b = split.body_cut[t]; b < std::min<std::size_t>(split.trail_from[t], moved.size()); ++b)
+      moved[b] = float(std::max(0.0, moved[b] - trailed));
   return moved;
 }
 
@@ -133,7 +135,7 @@ std::vector<int> weigh_and_cut(const std::vector<BodyPair>& pairs, const std::ve
 
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
-                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size, bool trailed) {
+                 const std::vector<double>& shares, CrossWeights cross, std::size_t block_size, double trailed) {
   const std::size_t n = pairs.size();
   split.threads = threads;
   BlockWeights w;
@@ -142,17 +144,17 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
   // Trailed: again without the bodies the last cut leaves to the next step, until the cut stays
   // (the bodies left move with it). A late term is added where its body is moved: every one of a
   // trailed cut's is left (its body is read by an earlier chunk).
-  for (int again = 0; trailed && threads > 1 && again < kTrailedCuts; ++again) {
+  for (int again = 0; trailed > 0.0 && threads > 1 && again < kTrailedCuts; ++again) {
     const std::vector<std::uint32_t> last = split.cut;
     cut_bodies(pairs, n_bodies, threads, split);
-    home = weigh_and_cut(pairs, touching, trailed_weights(body_weight, split), n_bodies, threads, shares,
+    home = weigh_and_cut(pairs, touching, trailed_weights(body_weight, trailed, split), n_bodies, threads, shares,
                          CrossWeights{cross.foreign, 0.0}, block_size, split, w);
     if (split.cut == last) break;
   }
   split.walk_weight.assign(threads, 0.0);
   for (int t = 0; t < threads; ++t)
     for (std::size_t b = split.cut[t] / block_size; b * block_size < split.cut[t + 1]; ++b)
-      split.walk_weight[t] += w.weight[b] - (trailed ? 0.0 : w.bodies[b]);  // trailed: timed with the walk
+      split.walk_weight[t] += w.weight[b] - (trailed > 0.0 ? 0.0 : w.bodies[b]);  // trailed: timed with the walk
   cut_bodies(pairs, n_bodies, threads, split);
   // The foreign pairs, with the side (if any) homed in their own chunk.
   split.foreign.clear();

@@ -94,13 +94,14 @@ struct CrossWeights {
 // fraction shares[t] of the whole weight (`shares`: per thread, summing to 1, or empty: even
 // shares). Thread t takes the bodies from the body i of chunk t's first pair (body_cut): each
 // body with pairs as i is in the share of the chunk of its last one. With `cross`, the cut is made
-// again once with the first cut's foreign pairs and late terms weighed where they run. `trailed`:
-// the bodies' work runs behind the walk (WalkTrail) but for the bodies an earlier chunk reads,
-// which the next step's first region moves: the cut is made again once without those.
+// again once with the first cut's foreign pairs and late terms weighed where they run. `trailed`
+// (> 0): each body's pass, that much of its weight, runs behind the walk (WalkTrail) but for the
+// bodies an earlier chunk reads, which the next step's first region moves: the cut is made again
+// without those passes until it stays.
 void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
                  const std::vector<float>& body_weight, std::size_t n_bodies, int threads, PairSplit& split,
                  const std::vector<double>& shares = {}, CrossWeights cross = {},
-                 std::size_t block_size = kPairBlock, bool trailed = false);
+                 std::size_t block_size = kPairBlock, double trailed = 0.0);
 
 // One thread's walk times (s) since the last cut, the last kSteps kept. A cache line of its own
 // start: each thread writes its own every step.
@@ -132,7 +133,7 @@ struct DirectSums {
   std::vector<BodySum> sums;
   std::vector<float> body_weight;  // per body, its other passes' work in pairs apart (split_pairs), or empty
   CrossWeights cross;              // the cut's crossing work (split_pairs)
-  bool trailed = false;            // body_weight is a trailing pass's, behind the walk (split_pairs)
+  double trailed = 0.0;            // the trailing pass's part of each body_weight, behind the walk (split_pairs)
   PairSplit split;
   std::vector<ForeignResult> foreign;  // per foreign pair of `split`: its late terms
   // The cut follows the threads' measured speed: a vCPU slowed by the host (or another process
