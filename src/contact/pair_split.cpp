@@ -66,33 +66,40 @@ std::vector<double> body_weights(const std::vector<BodyPair>& pairs, const std::
 }
 
 // A cut's crossing work added where it runs: each foreign pair's (its walk's block) and each late
-// term's (its body's passes' block, in `bodies` too: not walk work).
+// term's (its body's passes' block, in `bodies`: not walk work).
 void add_crossing(const std::vector<BodyPair>& pairs, const std::vector<int>& home, const std::vector<std::uint32_t>& cut,
                   const std::vector<std::uint32_t>& block, std::size_t block_size, CrossWeights cross,
-                  std::vector<double>& weight, std::vector<double>& bodies) {
+                  std::vector<double>& walk, std::vector<double>& bodies) {
   int c = 0;
   for (std::uint32_t k = 0; k < pairs.size(); ++k) {
     while (k >= cut[c + 1]) ++c;
     const bool home_i = home[pairs[k].i] == c, home_j = home[pairs[k].j] == c;
     if (home_i && home_j) continue;
-    weight[k / block_size] += cross.foreign;
+    walk[k / block_size] += cross.foreign;
     for (std::uint32_t b : {pairs[k].i, pairs[k].j})
-      if (home[b] != c) weight[block[b]] += cross.late, bodies[block[b]] += cross.late;
+      if (home[b] != c) bodies[block[b]] += cross.late;
   }
 }
 
+// Per block + 1, one past the largest body of the pairs before it (j > i): what a cut there leaves read.
+std::vector<std::uint32_t> reads_below(const std::vector<BodyPair>& pairs, std::size_t block_size) {
+  std::vector<std::uint32_t> below((pairs.size() + block_size - 1) / block_size + 1, 0);
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    below[k / block_size + 1] = std::max(below[k / block_size + 1], pairs[k].j + 1);
+  for (std::size_t b = 1; b < below.size(); ++b) below[b] = std::max(below[b], below[b - 1]);
+  return below;
+}
+
 // Each chunk's bodies (body_cut) and its first body no earlier chunk's pair reads (trail_from).
-void cut_bodies(const std::vector<BodyPair>& pairs, std::size_t n_bodies, int threads, PairSplit& split) {
+void cut_bodies(const std::vector<BodyPair>& pairs, const std::vector<std::uint32_t>& below, std::size_t n_bodies,
+                int threads, std::size_t block_size, PairSplit& split) {
   const std::size_t n = pairs.size();
   split.body_cut.assign(threads + 1, std::uint32_t(n_bodies));
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
     split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
   split.trail_from.assign(threads + 1, std::uint32_t(n_bodies));
-  std::uint32_t read_below = 0;  // one past the largest body of the pairs before chunk t (j > i)
-  for (std::uint32_t t = 0, k = 0; t < std::uint32_t(threads); ++t) {
-    for (; k < split.cut[t]; ++k) read_below = std::max(read_below, pairs[k].j + 1);
-    split.trail_from[t] = std::max(split.body_cut[t], read_below);
-  }
+  for (int t = 0; t < threads; ++t)  // a cut falls at a block's start or the list's end
+    split.trail_from[t] = std::max(split.body_cut[t], below[(split.cut[t] + block_size - 1) / block_size]);
 }
 
 // `body_weight` less the trailing pass (`trailed` each) of the bodies an earlier chunk reads (from
@@ -106,30 +113,15 @@ std::vector<float> trailed_weights(const std::vector<float>& body_weight, double
   return moved;
 }
 
-// A cut's weights: per block, its pairs' and bodies' (`weight`) and its bodies' alone (`bodies`).
+// Per block, its walk's weight (`walk`: its pairs and crossing work) and its bodies' (`bodies`).
 struct BlockWeights {
-  std::vector<double> weight, bodies;
-};
-
-// split.cut by `body_weight` and the pairs' (and with `cross` once more with its crossing work);
-// returns the blocks' weights and each body's home chunk.
-std::vector<int> weigh_and_cut(const std::vector<BodyPair>& pairs, const std::vector<std::uint16_t>& touching,
-                               const std::vector<float>& body_weight, std::size_t n_bodies, int threads,
-                               const std::vector<double>& shares, CrossWeights cross, std::size_t block_size,
-                               PairSplit& split, BlockWeights& w) {
-  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies, block_size);
-  w.bodies = body_weights(pairs, body_weight, block, block_size);
-  w.weight = w.bodies;  // each pair computed by its chunk's thread
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) w.weight[k / block_size] += pair_weight(touching, k);
-  cut_by_weight(w.weight, shares, threads, pairs.size(), block_size, split.cut);
-  std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
-  if (threads > 1 && (cross.foreign > 0.0 || cross.late > 0.0)) {  // once more, with this cut's crossing work
-    add_crossing(pairs, home, split.cut, block, block_size, cross, w.weight, w.bodies);
-    cut_by_weight(w.weight, shares, threads, pairs.size(), block_size, split.cut);
-    home = home_chunks(pairs, n_bodies, split.cut);
+  std::vector<double> walk, bodies;
+  std::vector<double> sum() const {
+    std::vector<double> all = walk;
+    for (std::size_t b = 0; b < all.size(); ++b) all[b] += bodies[b];
+    return all;
   }
-  return home;
-}
+};
 
 }  // namespace
 
@@ -138,24 +130,33 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
                  const std::vector<double>& shares, CrossWeights cross, std::size_t block_size, double trailed) {
   const std::size_t n = pairs.size();
   split.threads = threads;
-  BlockWeights w;
-  std::vector<int> home =
-      weigh_and_cut(pairs, touching, body_weight, n_bodies, threads, shares, cross, block_size, split, w);
-  // Trailed: again without the bodies the last cut leaves to the next step, until the cut stays
-  // (the bodies left move with it). A late term is added where its body is moved: every one of a
-  // trailed cut's is left (its body is read by an earlier chunk).
+  // A late term is added where its body is moved: a trailed cut's all by the next step's first
+  // region (its body is read by an earlier chunk), none behind the walk.
+  if (trailed > 0.0) cross.late = 0.0;
+  const std::vector<std::uint32_t> block = body_blocks(pairs, n_bodies, block_size);
+  BlockWeights w{std::vector<double>((n + block_size - 1) / block_size, 0.0), body_weights(pairs, body_weight, block, block_size)};
+  for (std::uint32_t k = 0; k < n; ++k) w.walk[k / block_size] += pair_weight(touching, k);  // each by its chunk's thread
+  cut_by_weight(w.sum(), shares, threads, n, block_size, split.cut);
+  if (threads > 1 && (cross.foreign > 0.0 || cross.late > 0.0)) {  // once more, with this cut's crossing work
+    add_crossing(pairs, home_chunks(pairs, n_bodies, split.cut), split.cut, block, block_size, cross, w.walk, w.bodies);
+    cut_by_weight(w.sum(), shares, threads, n, block_size, split.cut);
+  }
+  const std::vector<std::uint32_t> below = reads_below(pairs, block_size);
+  // Trailed: again without the passes the last cut leaves to the next step, until the cut stays
+  // (the bodies left move with it).
   for (int again = 0; trailed > 0.0 && threads > 1 && again < kTrailedCuts; ++again) {
     const std::vector<std::uint32_t> last = split.cut;
-    cut_bodies(pairs, n_bodies, threads, split);
-    home = weigh_and_cut(pairs, touching, trailed_weights(body_weight, trailed, split), n_bodies, threads, shares,
-                         CrossWeights{cross.foreign, 0.0}, block_size, split, w);
+    cut_bodies(pairs, below, n_bodies, threads, block_size, split);
+    w.bodies = body_weights(pairs, trailed_weights(body_weight, trailed, split), block, block_size);
+    cut_by_weight(w.sum(), shares, threads, n, block_size, split.cut);
     if (split.cut == last) break;
   }
+  const std::vector<int> home = home_chunks(pairs, n_bodies, split.cut);
   split.walk_weight.assign(threads, 0.0);
   for (int t = 0; t < threads; ++t)
     for (std::size_t b = split.cut[t] / block_size; b * block_size < split.cut[t + 1]; ++b)
-      split.walk_weight[t] += w.weight[b] - (trailed > 0.0 ? 0.0 : w.bodies[b]);  // trailed: timed with the walk
-  cut_bodies(pairs, n_bodies, threads, split);
+      split.walk_weight[t] += w.walk[b] + (trailed > 0.0 ? w.bodies[b] : 0.0);  // trailed: timed with the walk
+  cut_bodies(pairs, below, n_bodies, threads, block_size, split);
   // The foreign pairs, with the side (if any) homed in their own chunk.
   split.foreign.clear();
   split.foreign_side.clear();
