@@ -17,8 +17,10 @@ import subprocess
 import sys
 
 
-# Regions whose loops are schedule(dynamic): the rebuild's candidate search and broad phase.
-DYNAMIC = ('CandidateMemory::find', 'CellList::collect_pairs', 'CellList::merge_pairs')
+# Regions whose loops are schedule(dynamic): the rebuild's candidate searches and broad phase
+# (body_candidates: spheres' lists; CellList::build_pairs: the region collect_pairs runs in).
+DYNAMIC = ('CandidateMemory::find', 'CellList::collect_pairs', 'CellList::merge_pairs', 'body_candidates',
+           'CellList::build_pairs')
 
 
 def inclusive(path):
