@@ -302,6 +302,26 @@ TEST_CASE("a cut's crossing work moves it: a star's foreign pairs weighed twice 
   CHECK(crossed.foreign_side.size() == n_pairs - crossed.cut[1]);  // chunk 1's pairs, of the second cut
 }
 
+TEST_CASE("a trailed cut leaves out the passes of the bodies an earlier chunk reads: a chain reaching R ahead", "[pair_split]") {
+  // Pairs (b, b + R) for b < 4096, every body's pass weighing 3 pairs. Chunk 0 = pairs [0, c) reads
+  // bodies up to c + R, which a trailing pass leaves to the next step: chunk 0 walks and moves
+  // c (1 + 3), chunk 1 (4096 - c) + 3 (4096 - c): level at c = 2048. Weighed as untrailed passes
+  // chunk 1 also moves the R left: c (1 + 3) = (4096 - c) + 3 (5120 - c), c = 2048 + 3 R / 8 = 2432.
+  const std::uint32_t reach = 1024, n_pairs = 64 * kPairBlock, n_bodies = n_pairs + reach;
+  std::vector<BodyPair> pairs;
+  for (std::uint32_t b = 0; b < n_pairs; ++b) pairs.push_back({b, b + reach});
+  const std::vector<float> pass(n_bodies, 3.0f);
+  PairSplit untrailed, trailed;
+  split_pairs(pairs, {}, pass, n_bodies, 2, untrailed);
+  split_pairs(pairs, {}, pass, n_bodies, 2, trailed, {}, CrossWeights{}, kPairBlock, 3.0);
+  CHECK(untrailed.cut[1] == 2432);
+  CHECK(trailed.cut[1] == 2048);
+  CHECK(trailed.body_cut[1] == 2048);
+  CHECK(trailed.trail_from[1] == 2048 + reach);
+  CHECK(trailed.walk_weight[0] == 8192.0);  // each thread's walk and the passes behind it
+  CHECK(trailed.walk_weight[1] == 8192.0);
+}
+
 TEST_CASE("a polyhedron list's few hundred pairs cut near halves: its blocks are small", "[pair_split]") {
   // A pour's ~300 body pairs, alike: 64-pair blocks cut them at 128 or 192 (43% or 64%).
   std::mt19937_64 rng(23);
