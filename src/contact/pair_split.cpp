@@ -98,7 +98,8 @@ void cut_bodies(const std::vector<BodyPair>& pairs, const std::vector<std::uint3
   for (int t = 0; t < threads; ++t)  // no pairs: even shares
     split.body_cut[t] = n == 0 ? std::uint32_t(n_bodies * t / threads) : t == 0 ? 0 : split.cut[t] < n ? pairs[split.cut[t]].i : n_bodies;
   split.trail_from.assign(threads + 1, std::uint32_t(n_bodies));
-  for (int t = 0; t < threads; ++t)  // a cut falls at a block's start or the list's end
+  split.trail_from[0] = split.body_cut[0];  // no pair before chunk 0 (one thread: `below` empty)
+  for (int t = 1; t < threads; ++t)  // a cut falls at a block's start or the list's end
     split.trail_from[t] = std::max(split.body_cut[t], below[(split.cut[t] + block_size - 1) / block_size]);
 }
 
@@ -141,7 +142,7 @@ void split_pairs(const std::vector<BodyPair>& pairs, const std::vector<std::uint
     add_crossing(pairs, home_chunks(pairs, n_bodies, split.cut), split.cut, block, block_size, cross, w.walk, w.bodies);
     cut_by_weight(w.sum(), shares, threads, n, block_size, split.cut);
   }
-  const std::vector<std::uint32_t> below = reads_below(pairs, block_size);
+  const std::vector<std::uint32_t> below = threads > 1 ? reads_below(pairs, block_size) : std::vector<std::uint32_t>{};
   // Trailed: again without the passes the last cut leaves to the next step, until the cut stays
   // (the bodies left move with it).
   for (int again = 0; trailed > 0.0 && threads > 1 && again < kTrailedCuts; ++again) {
