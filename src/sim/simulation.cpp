@@ -110,10 +110,7 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   Bodies none;
   engine_ = std::make_unique<ContactEngine>(library_.shapes, all_owned(many ? none : bodies), cs);
   if (many) ranks_ = std::make_unique<RankContacts>(*link, library_.shapes, bodies, cs);
-  else {
-    engine_->weigh_passes(pass_weights(rotors_, bodies.size()));
-    engine_->trail_walks(trailing_.kind() != TrailKind::none);
-  }
+  else engine_->weigh_passes(pass_weights(rotors_, bodies.size()));
   for (std::uint32_t j = 0; j < drivers.size(); ++j) {
     const MotionSettings& m = drivers.motion(j);
     drivers_move_ |= m.rotates || m.velocity != Vec3::Zero() || m.force || m.pressure;
@@ -138,6 +135,8 @@ Simulation::Simulation(const Scene& scene, const ShapeLibrary& library, std::vec
   if (ExternalForces::wanted(scene.forces))
     external_ = std::make_unique<ExternalForces>(scene.forces, library_.shapes, bodies);
   if (ranks_ && !external_) ranks_->only_gravity(gravity_);
+  // One process with nothing but gravity and the contacts acting: most steps trail the walk (trails_walk)
+  if (!ranks_) engine_->trail_walks(trailing_.kind() != TrailKind::none && !external_);
   if (contacts && rank() == 0)  // before a rank's cut drops the state it reads
     impact_warning_ = polydem::fast_impact_warning(bodies, library_.shapes, drivers, dt_estimate_.kn_particle,
                                                    dt_estimate_.kn_driver, dt_);
