@@ -53,7 +53,7 @@ struct PairSplit {
   int threads = 0;                           // the team it was cut for; 0: to be cut
   std::vector<std::uint32_t> cut;            // threads + 1 pair indices, multiples of the list's block but the last
   std::vector<std::uint32_t> body_cut;       // threads + 1 bodies: chunk t's pairs' bodies i from body_cut[t] (TeamCut)
-  std::vector<double> walk_weight;           // per chunk, its walk's weight (pairs apart; its bodies' left out but trailed)
+  std::vector<double> walk_weight;           // per chunk, its walk's weight (pairs apart; its bodies' left out, a trailed cut's in)
   std::vector<std::uint32_t> foreign;        // foreign pairs, increasing, then the list size (a sentinel)
   std::vector<std::uint32_t> foreign_begin;  // per chunk + 1: its foreign pairs' ordinals
   std::vector<std::uint8_t> foreign_side;    // per foreign pair: 1 its i is homed in its chunk, 2 its j
