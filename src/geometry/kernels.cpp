@@ -266,12 +266,12 @@ template <FeatureKernel K>
   return true;
 }
 
-// Kernel K compiled for AVX2: its VEX three-operand forms need none of SSE2's register copies
+// Kernel K compiled for AVX: its VEX three-operand forms need none of SSE2's register copies
 // (the settled cubes' kernels ~22% fewer instructions). The same IEEE operations in the same
 // order, none fused (the target has no FMA): the same bits, checked by kernel_builds_test.cpp.
 template <FeatureKernel K>
-[[gnu::target("avx2"), gnu::flatten]] bool avx2(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap,
-                                                ContactPoint& out) {
+[[gnu::target("avx"), gnu::flatten]] bool avx(const PosedBody& A, const PosedBody& B, int a, int b, double max_gap,
+                                               ContactPoint& out) {
   return K(A, B, a, b, max_gap, out);
 }
 
@@ -289,16 +289,16 @@ double rejection_allowance(const PosedBody& A, const PosedBody& B, FeaturePair p
 // Indexed by PairType; no virtual call per contact.
 const std::array<FeatureKernel, kPairTypeCount> kSse2Kernels = {
     vertex_vertex, vertex_edge, swapped<vertex_edge>, vertex_face, swapped<vertex_face>, edge_edge};
-const std::array<FeatureKernel, kPairTypeCount> kAvx2Kernels = {
-    avx2<vertex_vertex>, avx2<vertex_edge>,         avx2<swapped<vertex_edge>>,
-    avx2<vertex_face>,   avx2<swapped<vertex_face>>, avx2<edge_edge>};
+const std::array<FeatureKernel, kPairTypeCount> kAvxKernels = {
+    avx<vertex_vertex>, avx<vertex_edge>, avx<swapped<vertex_edge>>,
+    avx<vertex_face>,   avx<swapped<vertex_face>>, avx<edge_edge>};
 
-bool cpu_has_avx2() {
+bool cpu_has_avx() {
   __builtin_cpu_init();  // this may run in a static initializer before libgcc's own
-  return __builtin_cpu_supports("avx2");
+  return __builtin_cpu_supports("avx");
 }
 
 // Chosen once at start-up: every thread and rank of a run on one machine takes the same build.
-const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = cpu_has_avx2() ? kAvx2Kernels : kSse2Kernels;
+const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = cpu_has_avx() ? kAvxKernels : kSse2Kernels;
 
 }  // namespace polydem
