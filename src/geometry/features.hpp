@@ -61,6 +61,7 @@ using FeatureKernel = bool (*)(const PosedBody&, const PosedBody&, int, int, dou
 extern const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels;
 extern const std::array<FeatureKernel, kPairTypeCount> kSse2Kernels, kAvxKernels;
 bool cpu_has_avx();  // and the OS saves its registers: kAvxKernels may run
+extern const bool kHasAvx;  // cpu_has_avx() at start-up: the hot loops' AVX builds run
 inline bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
                             ContactPoint& out) {
   return kFeatureKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);

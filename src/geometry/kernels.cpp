@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 
 #include "geometry/features.hpp"
 #include "geometry/segment.hpp"
@@ -294,11 +295,13 @@ const std::array<FeatureKernel, kPairTypeCount> kAvxKernels = {
     avx<vertex_face>,   avx<swapped<vertex_face>>, avx<edge_edge>};
 
 bool cpu_has_avx() {
+  if (std::getenv("POLYDEM_SSE2")) return false;  // the SSE2 builds asked for: to compare (README "The AVX builds")
   __builtin_cpu_init();  // this may run in a static initializer before libgcc's own
   return __builtin_cpu_supports("avx");
 }
 
 // Chosen once at start-up: every thread and rank of a run on one machine takes the same build.
-const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = cpu_has_avx() ? kAvxKernels : kSse2Kernels;
+const bool kHasAvx = cpu_has_avx();
+const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels = kHasAvx ? kAvxKernels : kSse2Kernels;
 
 }  // namespace polydem
