@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 
+#include "geometry/features.hpp"
 #include "io/generate.hpp"
 #include "io/scene.hpp"
 #include "polydem/error.hpp"
@@ -249,8 +250,9 @@ int cmd_run(const std::vector<std::string>& args, const RankLink* link) {
   o.adapt_threads = !a.fixed_threads;
   const int team = omp_get_max_threads();
   if (io)
-    std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s%s, %d thread%s%s%s, output in %s\n",
-                 sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), team, team > 1 ? "s" : "",
+    std::fprintf(stderr, "polydem: %zu bodies, %zu drivers, dt = %.4g s%s, %s kernels, %d thread%s%s%s, output in %s\n",
+                 sim.bodies.size(), sim.drivers.size(), sim.dt(), dt_note(sim).c_str(), kHasAvx ? "AVX" : "SSE2", team,
+                 team > 1 ? "s" : "",
                  link ? (" x " + std::to_string(link->ranks()) + " ranks").c_str() : "",
                  team > 1 ? wait_note().c_str() : "", o.out_dir.c_str());
   if (RankContacts* r = sim.rank_contacts(); r && std::getenv("POLYDEM_CUT_TIMED")) r->time_by_clock();  // README: the cut in time

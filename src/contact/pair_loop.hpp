@@ -281,6 +281,14 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
   }
 }
 
+// walk_chunk compiled for AVX (no FMA): the same IEEE operations in the same order in VEX's
+// three-operand forms, without SSE2's register copies; chosen where the CPU has it (the same bits).
+template <class Kernel>
+[[gnu::target("avx"), gnu::flatten]] void walk_chunk_avx(PairList& list, const Kernel& kernel, DirectSums& direct,
+                                                         PairScratch& scratch, int t, ChunkTrail& behind) {
+  walk_chunk(list, kernel, direct, scratch, t, behind);
+}
+
 // Pair k's results kept in the list (its forces too), its block's contacts and ended flag.
 [[gnu::always_inline]] inline void keep_results(PairList& list, std::uint32_t k, const PairTotals& t,
                                                 std::uint32_t& contacts, bool& ended) {
@@ -353,6 +361,12 @@ template <class Kernel>
 [[gnu::noinline]] void even_block(PairList& list, const Kernel& kernel, std::size_t b, PairScratch& scratch) {
   block_forces(list, kernel, b, scratch);
 }
+// even_block compiled for AVX, as walk_chunk_avx (the same bits).
+template <class Kernel>
+[[gnu::noinline, gnu::target("avx"), gnu::flatten]] void even_block_avx(PairList& list, const Kernel& kernel, std::size_t b,
+                                                                       PairScratch& scratch) {
+  block_forces(list, kernel, b, scratch);
+}
 
 }  // namespace pair_loop_detail
 
@@ -379,7 +393,8 @@ void direct_pair_forces(PairList& list, const Kernel& kernel, DirectSums& direct
     done.last = std::max(done.first, std::min(done.last, direct.split.body_cut[t + 1]));
     behind = {trail, done.first, done.last};
   }
-  pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t, behind);
+  if (kHasAvx) pair_loop_detail::walk_chunk_avx(list, kernel, direct, scratch, t, behind);
+  else pair_loop_detail::walk_chunk(list, kernel, direct, scratch, t, behind);
   if (trail) {
     behind.done_below(direct.split.body_cut[t + 1], true);
     trail->done[t].last = behind.next;  // the bodies it moved (done_below may stop at a turn)
@@ -444,7 +459,10 @@ void even_pair_forces(PairList& list, const Kernel& kernel, const std::uint32_t*
   in_team(n > kPairBlock, [&] {
     PairScratch scratch;
     const auto [first, end] = even_blocks(list, begin, cut, omp_get_thread_num(), omp_get_num_threads());
-    for (std::size_t b = first; b < end; ++b) pair_loop_detail::even_block(list, kernel, b, scratch);
+    for (std::size_t b = first; b < end; ++b) {
+      if (kHasAvx) pair_loop_detail::even_block_avx(list, kernel, b, scratch);
+      else pair_loop_detail::even_block(list, kernel, b, scratch);
+    }
   });
 }
 

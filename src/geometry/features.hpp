@@ -55,8 +55,13 @@ void pose_vertices(const Shape& shape, double scale, const Vec3& position, const
 // has no such rule, and the faces of a non-convex body are two-sided (|distance|, as Rockable).
 // One kernel per PairType (kernels.cpp), called through the table: inline, the per-step loop
 // makes one call per candidate, not two.
+// The table is one of two builds of the same kernels, chosen at start-up: AVX's where the CPU has
+// it (fewer instructions), else SSE2's; they give the same bits.
 using FeatureKernel = bool (*)(const PosedBody&, const PosedBody&, int, int, double, ContactPoint&);
 extern const std::array<FeatureKernel, kPairTypeCount> kFeatureKernels;
+extern const std::array<FeatureKernel, kPairTypeCount> kSse2Kernels, kAvxKernels;
+bool cpu_has_avx();  // and the OS saves its registers: kAvxKernels may run
+extern const bool kHasAvx;  // cpu_has_avx() at start-up: the hot loops' AVX builds run
 inline bool feature_contact(const PosedBody& A, const PosedBody& B, FeaturePair pair, double max_gap,
                             ContactPoint& out) {
   return kFeatureKernels[static_cast<std::size_t>(pair.type)](A, B, pair.a, pair.b, max_gap, out);

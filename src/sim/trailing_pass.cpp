@@ -48,9 +48,9 @@ WalkTrail TrailingPass::open_common(double h, double dt, const Vec3& gravity, Fo
   sums_ = sums;
   done_.assign(std::size_t(omp_get_max_threads()), BodyRange{});
   void (*pass)(const void*, std::uint32_t, std::uint32_t) =
-      kind_ == TrailKind::spheres ? &TrailingPass::pass_spheres
-      : alike_                    ? &TrailingPass::pass_isotropic<AlikeArrays>
-                                  : &TrailingPass::pass_isotropic<BodyArrays>;
+      kind_ == TrailKind::spheres ? (kHasAvx ? &TrailingPass::pass_spheres_avx : &TrailingPass::pass_spheres)
+      : alike_ ? (kHasAvx ? &TrailingPass::pass_isotropic_avx<AlikeArrays> : &TrailingPass::pass_isotropic<AlikeArrays>)
+               : (kHasAvx ? &TrailingPass::pass_isotropic_avx<BodyArrays> : &TrailingPass::pass_isotropic<BodyArrays>);
   return {pass, this, done_.data()};
 }
 
@@ -93,6 +93,15 @@ void TrailingPass::pass_isotropic(const void* self, std::uint32_t first, std::ui
   for (std::uint32_t i = first; i < last; ++i)
     integrate_detail::close_and_start_from_gravity<Rotor::isotropic>(a, i, h, dt, gravity, sums, bounds);
   p.poses_.pose(first, last);  // the bodies' state still in L1 (ChunkTrail::kBatch)
+}
+
+void TrailingPass::pass_spheres_avx(const void* self, std::uint32_t first, std::uint32_t last) {
+  pass_spheres(self, first, last);
+}
+
+template <class Arrays>
+void TrailingPass::pass_isotropic_avx(const void* self, std::uint32_t first, std::uint32_t last) {
+  pass_isotropic<Arrays>(self, first, last);
 }
 
 void TrailingPass::close(std::size_t n) {

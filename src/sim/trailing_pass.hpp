@@ -47,6 +47,11 @@ class TrailingPass {
   static void pass_spheres(const void* self, std::uint32_t first, std::uint32_t last);
   template <class Arrays>
   static void pass_isotropic(const void* self, std::uint32_t first, std::uint32_t last);
+  // The two passes compiled for AVX, as walk_chunk_avx (the same bits): the walk calls these where the CPU has it.
+  [[gnu::target("avx"), gnu::flatten]] static void pass_spheres_avx(const void* self, std::uint32_t first, std::uint32_t last);
+  template <class Arrays>
+  [[gnu::target("avx"), gnu::flatten]] static void pass_isotropic_avx(const void* self, std::uint32_t first,
+                                                                      std::uint32_t last);
   template <class Arrays>
   void rest_isotropic(const Arrays& a, const ForceSums& sums, const PassTurns* turns) const;
   template <class F>
