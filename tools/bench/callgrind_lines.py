@@ -16,13 +16,12 @@ Each row: instructions, share, the line's most frequent execution count (how oft
 instructions per run are Ir / runs) and the line. callgrind_asm.py then lists one stage's code.
 """
 import collections
-import re
 import subprocess
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / 'scale'))
-from miss_lines import IR, self_costs, short_path  # noqa: E402
+from miss_lines import IR, self_costs, short_path, src_chains  # noqa: E402
 
 
 def address_ranges(binary, name):
@@ -34,24 +33,6 @@ def address_ranges(binary, name):
             start = int(parts[0], 16)
             ranges.append((start, start + int(parts[1], 16)))
     return ranges
-
-
-def src_chains(binary, addresses):
-    """Address -> its src/ lines from innermost to outermost (addr2line -i)."""
-    out = []
-    for i in range(0, len(addresses), 5000):
-        out += subprocess.run(['addr2line', '-i', '-a', '-e', binary] + [hex(a) for a in addresses[i:i + 5000]],
-                              capture_output=True, text=True, check=True).stdout.split('\n')
-    chains, address = {}, None
-    for text in out:
-        if text.startswith('0x'):
-            address = int(text, 16)
-            chains[address] = []
-        elif address is not None and text:
-            where = short_path(re.sub(r' \(discriminator \d+\)', '', text))
-            if where.startswith('src/'):
-                chains[address].append(where)
-    return chains
 
 
 def main():

@@ -82,12 +82,12 @@ def self_costs(path):
     return by_function, by_line, by_address
 
 
-def project_lines(by_address, binary, per):
-    """(innermost src/ line, the two it was inlined into) -> events, for the instructions with
-    a last-level miss in 500 body-steps at least (addr2line's inline chains)."""
-    hot = [a for a, v in by_address.items() if abs(last_level(v)) * 500 >= per]
-    out = subprocess.run(['addr2line', '-i', '-a', '-e', binary] + [hex(a) for a in hot],
-                         capture_output=True, text=True, check=True).stdout.split('\n')
+def src_chains(binary, addresses):
+    """Address -> its src/ lines from innermost to outermost (addr2line -i)."""
+    out = []
+    for i in range(0, len(addresses), 5000):
+        out += subprocess.run(['addr2line', '-i', '-a', '-e', binary] + [hex(a) for a in addresses[i:i + 5000]],
+                              capture_output=True, text=True, check=True).stdout.split('\n')
     chains, address = {}, None
     for text in out:
         if text.startswith('0x'):
@@ -97,6 +97,14 @@ def project_lines(by_address, binary, per):
             where = short_path(re.sub(r' \(discriminator \d+\)', '', text))
             if where.startswith('src/'):
                 chains[address].append(where)
+    return chains
+
+
+def project_lines(by_address, binary, per):
+    """(innermost src/ line, the two it was inlined into) -> events, for the instructions with
+    a last-level miss in 500 body-steps at least (addr2line's inline chains)."""
+    hot = [a for a, v in by_address.items() if abs(last_level(v)) * 500 >= per]
+    chains = src_chains(binary, hot)
     by_line = collections.defaultdict(lambda: [0] * EVENTS)
     for a in hot:
         chain = chains.get(a) or ['(outside src/)']
