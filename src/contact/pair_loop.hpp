@@ -219,18 +219,31 @@ template <class Kernel, class Add>
 }
 
 // The run of foreign pairs from pair k (ordinal f) to the next internal one or `end`, computed
-// as the internal ones are (two lanes). Out of line: the walk's loop over internal pairs stays as
-// it was. Returns the pair after the run.
+// as the internal ones are (two lanes). Returns the pair after the run.
 template <class Kernel>
-[[gnu::noinline]] std::uint32_t foreign_run(PairList& list, const Kernel& kernel, DirectSums& direct,
-                                            PairScratch& scratch, std::uint32_t k, std::uint32_t f, std::uint32_t end,
-                                            std::uint32_t& contacts, bool& ended) {
+[[gnu::always_inline]] inline std::uint32_t foreign_pairs(PairList& list, const Kernel& kernel, DirectSums& direct,
+                                                          PairScratch& scratch, std::uint32_t k, std::uint32_t f,
+                                                          std::uint32_t end, std::uint32_t& contacts, bool& ended) {
   const PairSplit& split = direct.split;
   std::uint32_t stop = k + 1;
   while (stop < end && split.foreign[f + (stop - k)] == stop) ++stop;
   const ForeignAdd add{direct.sums.data(), list.pairs.data(), split.foreign_side.data(), direct.foreign.data(), k, f};
   chunk_pairs(list, kernel, add, scratch, k, stop, contacts, ended);
   return stop;
+}
+// foreign_pairs out of line: the walk's loop over internal pairs stays as it was.
+template <class Kernel>
+[[gnu::noinline]] std::uint32_t foreign_run(PairList& list, const Kernel& kernel, DirectSums& direct,
+                                            PairScratch& scratch, std::uint32_t k, std::uint32_t f, std::uint32_t end,
+                                            std::uint32_t& contacts, bool& ended) {
+  return foreign_pairs(list, kernel, direct, scratch, k, f, end, contacts, ended);
+}
+// foreign_run compiled for AVX, as walk_chunk_avx, which calls it (the same bits).
+template <class Kernel>
+[[gnu::noinline, gnu::target("avx"), gnu::flatten]] std::uint32_t foreign_run_avx(
+    PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, std::uint32_t k, std::uint32_t f,
+    std::uint32_t end, std::uint32_t& contacts, bool& ended) {
+  return foreign_pairs(list, kernel, direct, scratch, k, f, end, contacts, ended);
 }
 
 // The bodies [next, last) a trailing pass may move on this thread (WalkTrail), handed to it in order.
@@ -252,8 +265,9 @@ struct ChunkTrail {
 // Chunk t's pairs in order, each computed and added to the sums of its bodies homed here; a
 // foreign pair's other side kept as a late term (DirectSums::foreign); the blocks' contacts and
 // ended flags. The runs of internal pairs between two foreign ones are plain loops (one thread:
-// the whole list). After each block, the bodies it finished go to `behind`'s pass.
-template <class Kernel>
+// the whole list). After each block, the bodies it finished go to `behind`'s pass. kAvx: the
+// foreign runs' AVX build (walk_chunk_avx's).
+template <class Kernel, bool kAvx = false>
 void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairScratch& scratch, int t,
                 ChunkTrail& behind) {
   const PairSplit& split = direct.split;
@@ -269,7 +283,8 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
       const std::uint32_t stop = std::min(end, next);
       chunk_pairs(list, kernel, internal, scratch, k, stop, contacts, ended);
       if ((k = stop) == end) break;
-      const std::uint32_t after = foreign_run(list, kernel, direct, scratch, k, f, end, contacts, ended);  // k == next
+      const std::uint32_t after = kAvx ? foreign_run_avx(list, kernel, direct, scratch, k, f, end, contacts, ended)
+                                       : foreign_run(list, kernel, direct, scratch, k, f, end, contacts, ended);  // k == next
       f += after - k;
       next = split.foreign[f];
       k = after - 1;
@@ -286,7 +301,7 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
 template <class Kernel>
 [[gnu::target("avx"), gnu::flatten]] void walk_chunk_avx(PairList& list, const Kernel& kernel, DirectSums& direct,
                                                          PairScratch& scratch, int t, ChunkTrail& behind) {
-  walk_chunk(list, kernel, direct, scratch, t, behind);
+  walk_chunk<Kernel, true>(list, kernel, direct, scratch, t, behind);
 }
 
 // Pair k's results kept in the list (its forces too), its block's contacts and ended flag.

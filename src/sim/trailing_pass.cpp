@@ -130,10 +130,15 @@ void TrailingPass::for_my_left(F&& f) const {
 }
 
 void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
+  if (kHasAvx) move_left_avx(sums, turns);
+  else move_left(sums, turns);
+#pragma omp barrier
+}
+
+void TrailingPass::move_left(const ForceSums& sums, const PassTurns* turns) const {
   if (kind_ == TrailKind::isotropic) {
     if (alike_) rest_isotropic(arrays_, sums, turns);
     else rest_isotropic(body_arrays_, sums, turns);
-#pragma omp barrier
     return;
   }
   const AlikeArrays a = arrays_;  // copies, as pass_spheres'
@@ -144,8 +149,9 @@ void TrailingPass::rest(const ForceSums& sums, const PassTurns* turns) const {
     for (std::uint32_t i = first; i < last; ++i)
       integrate_detail::close_and_start_from_gravity<Rotor::sphere>(a, i, h, dt, gravity, sums, watch);
   });
-#pragma omp barrier
 }
+
+void TrailingPass::move_left_avx(const ForceSums& sums, const PassTurns* turns) const { move_left(sums, turns); }
 
 // rest's isotropic bodies: this thread's share of the left ones moved (a turn of `turns` between
 // its body's kicks, as close_and_start_step's), then posed.

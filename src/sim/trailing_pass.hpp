@@ -52,6 +52,9 @@ class TrailingPass {
   template <class Arrays>
   [[gnu::target("avx"), gnu::flatten]] static void pass_isotropic_avx(const void* self, std::uint32_t first,
                                                                       std::uint32_t last);
+  // rest's moves of this thread's share, without its barrier; and compiled for AVX, as the passes.
+  void move_left(const ForceSums& sums, const PassTurns* turns) const;
+  [[gnu::target("avx"), gnu::flatten]] void move_left_avx(const ForceSums& sums, const PassTurns* turns) const;
   template <class Arrays>
   void rest_isotropic(const Arrays& a, const ForceSums& sums, const PassTurns* turns) const;
   template <class F>
