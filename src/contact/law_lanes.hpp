@@ -1,8 +1,9 @@
 #pragma once
-// Two sub-contacts of one pair through the linear law at once, one in each lane (geometry/lanes.hpp),
-// or a lone one through the same code: the steady sticking case, nearly every sub-contact of a
-// resting pile. Each lane does contact_force's operations in its order, so a lane has its bits; a
-// lane whose contact is not steady is left untouched for contact_force (the caller's fallback).
+// Two sub-contacts of one pair through the linear law at once (four in the AVX builds), one in
+// each lane (geometry/lanes.hpp), or a lone one through the same code: the steady sticking case,
+// nearly every sub-contact of a resting pile. Each lane does contact_force's operations in its
+// order, so a lane has its bits; a lane whose contact is not steady is left untouched for
+// contact_force (the caller's fallback).
 // Steady: touching now and at the last step (dn < 0, gap < 0: no onset, no release), the clamp
 // not letting go, kt_w > 0, the tangential spring under its cap. For the law of
 // LawParts<NormalLinear, false, false, false> without the exact step or the contact's mass.
@@ -30,8 +31,12 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
   return {lever, v_centre + w_rel.cross(lever), v_centre_end + w_rel_end.cross(lever)};
 }
 
+// N = 4 runs only inlined into the AVX builds' copies (pair_loop.hpp's walk_chunk_avx): no call
+// passes a 256-bit vector, so GCC's note on their ABI without AVX does not apply.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 // Applies the law to sub-contacts g[0..N) (weights w, histories h), one per lane, where steady:
-// N = 2, two sub-contacts side by side; N = 1, a lone one through the same operations. Lane l's
+// N = 2 or 4, sub-contacts side by side; N = 1, a lone one through the same operations. Lane l's
 // pair values are pc[l]'s: kAcross, two pairs' (their lone contacts, pair_lanes.hpp), else pc[0]'s
 // for every lane (one pair's); the law's constants (kn, kt, mu, dt) are pc[0]'s.
 // Bit l of the result is set when lane l was: its force is in out[l], its torque about its xi (N m)
@@ -119,6 +124,7 @@ template <int N, bool kAcross = false, class H>
   }
   return done;
 }
+#pragma GCC diagnostic pop
 
 // Sub-contacts a and b side by side (steady_law<2>).
 template <class H>

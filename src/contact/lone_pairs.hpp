@@ -12,7 +12,8 @@ namespace polydem {
 
 // The pair loop's kernel for body pairs under a law with lanes (lanes_law): pair_forces for
 // pair k, or its lone contact left in a LonePair, and the law of one or two such pairs.
-template <class Parts, class Partner>
+// kLanes: the law's lanes within a pair (apply_law); wide() is the AVX builds' kernel, of four.
+template <class Parts, class Partner, int kLanes = 2>
 struct LonePairKernel {
   static constexpr bool kLonePairs = true;
   using Lone = LonePair;
@@ -22,12 +23,13 @@ struct LonePairKernel {
   const Partner& partner;
   PairList& list;
 
+  LonePairKernel<Parts, Partner, 4> wide() const { return {law, band, dt, bodies, partner, list}; }
   PairTotals operator()(std::uint32_t k, PairScratch& scratch) const {
-    return pair_forces<Parts>(law, band, dt, bodies, partner, list, k, scratch);
+    return pair_forces<Parts, kLanes>(law, band, dt, bodies, partner, list, k, scratch);
   }
   // Pair k's totals (true), or false with its lone contact waiting in `lone`.
   [[gnu::always_inline]] bool forces(std::uint32_t k, PairScratch& scratch, PairTotals& totals, LonePair& lone) const {
-    return pair_forces_into<Parts, true>(law, band, dt, bodies, partner, list, k, scratch, totals, &lone);
+    return pair_forces_into<Parts, true, kLanes>(law, band, dt, bodies, partner, list, k, scratch, totals, &lone);
   }
   // The pair made last leaves the scratch to wait: its contact copied out.
   [[gnu::always_inline]] void park(LonePair& a, const PairScratch& scratch) const { a.contact = scratch.found[0]; }

@@ -471,14 +471,40 @@ template <class Parts, class Partner>
   contact_by_law<Parts>(pl, c);
 }
 
-// The sub-contacts of a pair two at a time through steady_lanes (law_lanes.hpp), the last of an
-// odd count through steady_alone, one that is not steady through contact_force; each added and
-// recorded in order.
-template <class Parts, class Partner>
+// Sub-contacts [c, c + N) of a pair side by side (steady_law<N>, law_lanes.hpp), each added and
+// recorded in order: a steady one from its lane, another through contact_force.
+template <int N, class Parts, class Partner>
+[[gnu::always_inline]] inline void sub_contacts_in_lanes(const PairLaw<Partner>& pl, std::size_t c) {
+  const PairScratch& scratch = pl.scratch;
+  const LaneConstants* pc[N];
+  const ContactPoint* g[N];
+  double w[N];
+  SlotState* h[N];
+  for (int l = 0; l < N; ++l) {
+    pc[l] = &pl.lc;
+    g[l] = &scratch.found[c + l].geometry;
+    w[l] = scratch.weight[c + l];
+    h[l] = scratch.found[c + l].state;
+  }
+  ContactForce f[N];
+  Vec3 torque[N];
+  const unsigned steady = steady_law<N>(pc, g, w, h, f, torque);
+  for (int l = 0; l < N; ++l) {
+    if (steady & (1u << l)) add_contact<true>(pl, c + l, f[l], torque[l]);
+    else contact_by_law_apart<Parts>(pl, c + l);
+  }
+}
+
+// The sub-contacts of a pair four at a time where kLanes is 4 (the AVX builds), then two at a time
+// through steady_lanes (law_lanes.hpp), the last of an odd count through steady_alone, one that is
+// not steady through contact_force; each added and recorded in order.
+template <class Parts, int kLanes, class Partner>
 [[gnu::always_inline]] inline void law_in_lanes(const PairLaw<Partner>& pl) {
   const PairScratch& scratch = pl.scratch;
   const std::size_t n = scratch.found.size();
   std::size_t c = 0;
+  if constexpr (kLanes == 4)
+    for (; c + 3 < n; c += 4) sub_contacts_in_lanes<4, Parts>(pl, c);
   for (; c + 1 < n; c += 2) {
     ContactForce f[2];
     Vec3 torque[2];
@@ -509,7 +535,8 @@ constexpr bool lanes_law() {
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
 // their forces, torques and energy to `totals`. With `lone` (kLone), a pair whose one sub-contact
 // goes through the lanes is left there instead (its totals too), for lone_pairs.hpp: false then.
-template <class Parts, bool kLone = false, class Partner>
+// kLanes: the law's lanes within a pair (law_in_lanes), 4 in the AVX builds only.
+template <class Parts, bool kLone = false, int kLanes = 2, class Partner>
 [[gnu::always_inline]] inline bool apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, double r_star,
                                  PairTotals& totals, LonePair* lone = nullptr) {
@@ -570,7 +597,7 @@ template <class Parts, bool kLone = false, class Partner>
                             exact_step,
                             totals};
   if constexpr (lanes_law<Parts>()) {
-    if (laned) law_in_lanes<Parts>(pl);
+    if (laned) law_in_lanes<Parts, kLanes>(pl);
   }
   if (!laned)
     for (std::size_t c = 0; c < scratch.found.size(); ++c) contact_by_law<Parts>(pl, c);
@@ -604,7 +631,7 @@ template <class Partner>
 
 // Pair k's forces, torques and energy in `totals`; true. With `lone` (kLone), false where the
 // pair's one sub-contact waits there for the lanes' law instead (apply_law).
-template <class Parts, bool kLone, class Partner>
+template <class Parts, bool kLone, int kLanes = 2, class Partner>
 [[gnu::always_inline]] inline bool pair_forces_into(const LawParams& law, double band, double dt,
                                                     const BodyView& bodies, const Partner& partner, PairList& list,
                                                     std::uint32_t k, PairScratch& scratch, PairTotals& totals,
@@ -646,16 +673,16 @@ template <class Parts, bool kLone, class Partner>
                    dt, scratch);
     }
   }
-  if (!apply_law<Parts, kLone>(law, dt, bodies, partner, list, k, scratch, r_star, totals, lone)) return false;
+  if (!apply_law<Parts, kLone, kLanes>(law, dt, bodies, partner, list, k, scratch, r_star, totals, lone)) return false;
   if (scratch.pushes && bodies.turns) [[unlikely]] leave_turn(bodies, partner, p, scratch, *bodies.turns);
   return true;
 }
 
-template <class Parts, class Partner>
+template <class Parts, int kLanes = 2, class Partner>
 PairTotals pair_forces(const LawParams& law, double band, double dt, const BodyView& bodies,
                        const Partner& partner, PairList& list, std::uint32_t k, PairScratch& scratch) {
   PairTotals totals;
-  pair_forces_into<Parts, false>(law, band, dt, bodies, partner, list, k, scratch, totals, nullptr);
+  pair_forces_into<Parts, false, kLanes>(law, band, dt, bodies, partner, list, k, scratch, totals, nullptr);
   return totals;
 }
 

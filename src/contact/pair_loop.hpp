@@ -297,11 +297,15 @@ void walk_chunk(PairList& list, const Kernel& kernel, DirectSums& direct, PairSc
 }
 
 // walk_chunk compiled for AVX (no FMA): the same IEEE operations in the same order in VEX's
-// three-operand forms, without SSE2's register copies; chosen where the CPU has it (the same bits).
+// three-operand forms, without SSE2's register copies, through the kernel's four lanes where it
+// has them (wide()); chosen where the CPU has it (the same bits).
 template <class Kernel>
 [[gnu::target("avx"), gnu::flatten]] void walk_chunk_avx(PairList& list, const Kernel& kernel, DirectSums& direct,
                                                          PairScratch& scratch, int t, ChunkTrail& behind) {
-  walk_chunk<Kernel, true>(list, kernel, direct, scratch, t, behind);
+  if constexpr (requires { kernel.wide(); })
+    walk_chunk<decltype(kernel.wide()), true>(list, kernel.wide(), direct, scratch, t, behind);
+  else
+    walk_chunk<Kernel, true>(list, kernel, direct, scratch, t, behind);
 }
 
 // Pair k's results kept in the list (its forces too), its block's contacts and ended flag.

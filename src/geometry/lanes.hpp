@@ -1,7 +1,8 @@
 #pragma once
 // N doubles in one register (GCC vector extension): two (SSE2) for kernels that run two
-// independent evaluations side by side (contact/law_lanes.hpp), one (a plain double) for a lone
-// evaluation through the same code. Each lane does the scalar code's IEEE operations
+// independent evaluations side by side (contact/law_lanes.hpp), four (AVX's 256 bits) for the
+// same in the AVX builds only (lowered to SSE2 halves they cost more), one (a plain double) for a
+// lone evaluation through the same code. Each lane does the scalar code's IEEE operations
 // in its order (no FMA: the build has none, POLYDEM_NATIVE turns contraction off), so the same bits.
 #include <cmath>
 #include <type_traits>
@@ -13,12 +14,22 @@
 
 namespace polydem::lanes {
 
+// Types<4> runs only inlined into the AVX builds' copies (contact/law_lanes.hpp): no call passes
+// a 256-bit vector, so GCC's note on their ABI without AVX does not apply.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 template <int N>
 struct Types;
 template <>
 struct Types<2> {
   using V = double __attribute__((vector_size(16)));
   using Mask = long long __attribute__((vector_size(16)));  // a comparison's lanes: all ones or 0
+};
+template <>
+struct Types<4> {
+  using V = double __attribute__((vector_size(32)));
+  using Mask = long long __attribute__((vector_size(32)));
 };
 // One lane: a plain double and bool, so a comparison is a branch or a max, not a mask and its
 // and/andn/or blend, and a lane's test a flag.
@@ -40,7 +51,8 @@ inline auto at(const T& v, int l) {
 // Lane l of the result is get(l).
 template <class V, class Get>
 inline V gather(const Get& get) {
-  if constexpr (kWidth<V> == 2) return V{get(0), get(1)};
+  if constexpr (kWidth<V> == 4) return V{get(0), get(1), get(2), get(3)};
+  else if constexpr (kWidth<V> == 2) return V{get(0), get(1)};
   else return V{get(0)};
 }
 template <class V>
@@ -52,14 +64,21 @@ inline V max0(V a) { return a < splat<V>(0.0) ? splat<V>(0.0) : a; }  // std::ma
 template <class V>
 inline V sqrt(V a) { return gather<V>([&](int l) { return std::sqrt(at(a, l)); }); }
 
-// Whether every lane of m is set (a mask of two lanes, or one lane's bool).
+// Whether every lane of m is set (a mask of two or four lanes, or one lane's bool).
 template <class M>
 inline bool all(M m) {
+  if constexpr (std::is_same_v<M, bool>) {
+    return m;
+  } else if constexpr (sizeof(M) == 32) {  // both halves' lanes
+    using Half = long long __attribute__((vector_size(16)));
+    return all(Half(__builtin_shufflevector(m, m, 0, 1) & __builtin_shufflevector(m, m, 2, 3)));
+  } else {
 #if defined(__SSE2__)
-  if constexpr (!std::is_same_v<M, bool>) return _mm_movemask_pd((__m128d)m) == 3;
+    return _mm_movemask_pd((__m128d)m) == 3;
+#else
+    return m[0] && m[1];
 #endif
-  if constexpr (std::is_same_v<M, bool>) return m;
-  else return m[0] && m[1];
+  }
 }
 
 template <class V>
@@ -93,5 +112,7 @@ template <class V>
 inline Vec3Of<V> cross(const Vec3Of<V>& a, const Vec3Of<V>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+
+#pragma GCC diagnostic pop
 
 }  // namespace polydem::lanes
