@@ -72,7 +72,7 @@ TEST_CASE("a box's pose made where read equals the stored pose, bit for bit, wha
   }
 }
 
-TEST_CASE("a general polyhedron's stored pose is read where it is; every box is made") {
+TEST_CASE("a general polyhedron's stored pose is read where it is, every box made") {
   const PosedSet rocks(make_octahedron(0.6, 0.05), 4), cubes(make_cube(0.5, 0.05), 4);
   MadeCorners corners;
   MadePose a, b;
