@@ -74,8 +74,8 @@ struct LonePairKernel {
     scratch.weight.assign(1, 1.0);
     scratch.onsets = scratch.pushes = false;
     // No poses: a lane's law reads no contact mass (apply_law's `laned`).
-    const PairLaw<Partner> pl{law,  bodies, partner, list, scratch, a.k, list.pairs[a.k], nullptr, nullptr, a.r_star, a.lc,
-                              a.nu_t, a.exact_step, a.totals};
+    const PairLaw<Partner> pl{law,     bodies,  partner,  list, scratch, a.k,          list.pairs[a.k],
+                              nullptr, nullptr, a.r_star, a.lc, a.nu_t,  a.exact_step, a.totals};
     contact_by_law<Parts>(pl, 0);
   }
 };

@@ -364,12 +364,12 @@ template <class Partner, class Posed>
     drop_shadowed(list, a.radius + partner.radius(b), a.shape->convex, partner.convex(b), scratch);
 }
 
-// What the law of pair k's sub-contacts shares, made once per pair by apply_law: explicit, so the
-// rare sub-contact through contact_force is a call with one pointer, no closures built per pair.
 // The partner's side of a pair as its kernels read it (Partner::posed_of): a body's pose or a driver's index.
 template <class Partner>
 using PartnerSide = std::remove_cvref_t<decltype(std::declval<const Partner&>().posed_of(0u, std::declval<PairScratch&>()))>;
 
+// What the law of pair k's sub-contacts shares, made once per pair by apply_law: explicit, so the
+// rare sub-contact through contact_force is a call with one pointer, no closures built per pair.
 template <class Partner>
 struct PairLaw {
   const LawParams& law;
