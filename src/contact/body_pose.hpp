@@ -24,12 +24,14 @@ struct PoseArrays {
   const std::uint32_t* vertex_offset;
   Vec3* world_vertices;  // m
   PosedBody* posed;
-  bool box_vertices;  // a box's too (a rebuild's readers); else left unmade, made where read (made_pose.hpp)
+  bool box_vertices;  // a box's too (a rebuild's readers); else a box's pose is left as it was, made where read (made_pose.hpp)
 };
 
 // Body b's rotation and world vertices, filled in place: no temporary pose to copy.
-// A box's vertices only where a.box_vertices: a step's walk makes them (with_vertices).
+// A box's pose only where a.box_vertices: a step's walk makes it (with_vertices).
 [[gnu::always_inline]] inline void pose_body(const PoseArrays& a, std::uint32_t b) {
+  const std::optional<BoxCorners>& box = a.boxes[a.shape[b]];
+  if (box && !a.box_vertices) return;
   const Shape& s = a.shapes[a.shape[b]];
   Vec3* v = a.world_vertices + a.vertex_offset[b];
   PosedBody& posed = a.posed[b];
@@ -37,13 +39,12 @@ struct PoseArrays {
   const Vec3 position = a.position[b];  // m
   const double scale = a.scale[b];
   posed.rotation = a.orientation[b].toRotationMatrix();  // once per body and step
-  const std::optional<BoxCorners>& box = a.boxes[a.shape[b]];
   if (!box)
     pose_vertices(s, scale, position, posed.rotation, v);
-  else if (a.box_vertices)
+  else
     pose_box(*box, scale, position, posed.rotation, v);  // the same bits in a third of the arithmetic
   posed.shape = &s;
-  posed.vertices = box && !a.box_vertices ? nullptr : v;
+  posed.vertices = v;
   posed.position = position;
   posed.radius = s.radius * scale;
   posed.scale = scale;

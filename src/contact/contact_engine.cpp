@@ -557,7 +557,8 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                       bodies.mass->data(),
                       any_sphere_,
                       &turns_,
-                      {shapes_.data(), boxes_.data()}};
+                      {shapes_.data(), boxes_.data(), bodies.shape->data(), bodies.scale->data(),
+                       bodies.position->data(), bodies.orientation->data(), boxes_only_}};
   // Both pair loops end without a barrier: the one after them is kept only where the region
   // reads their results (the sums) before its end. A trailing pass reads a body's driver pairs
   // after its body pairs: each thread makes its driver pairs first.
@@ -576,7 +577,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
       const Partner partner{posed_.data(),          view.position,         view.velocity,
                             view.angular_velocity,  view.velocity_end,     view.angular_velocity_end,
                             view.mass,              trigger_.displacement().data(),
-                            boxes_only_ && made ? nullptr : world_vertices_.data(), vertex_offset_.data(),
+                            world_vertices_.data(),  vertex_offset_.data(),
                             view.boxes};
       with_law(settings_.particle, [&](auto parts) {
         using Parts = decltype(parts);

@@ -349,7 +349,7 @@ class ContactEngine {
   bool spheres_only_ = false;              // every body a sphere: the sphere fast path
   bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
   bool made_vertices_ = false;             // a step's poses leave a box's vertices unmade (made_pose.hpp)
-  bool boxes_only_ = false;                // every body a box: no stored vertices to prefetch in the walk
+  bool boxes_only_ = false;                // every body a box: a made walk asks no body's shape (ShapeBoxes::all_boxes)
   std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
   bool record_contacts_ = true;            // the lists keep their records (record_contacts)
   bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)

@@ -75,8 +75,9 @@ struct LonePairKernel {
     scratch.found.assign(1, a.contact);
     scratch.weight.assign(1, 1.0);
     scratch.onsets = scratch.pushes = false;
-    const PairLaw<Partner> pl{law, bodies, partner, list, scratch, a.k, list.pairs[a.k], a.r_star, a.lc,
-                              a.nu_t, a.exact_step, a.totals};
+    // No poses: a lane's law reads no contact mass (apply_law's `laned`).
+    const PairLaw<Partner> pl{law,     bodies,  partner,  list, scratch, a.k,          list.pairs[a.k],
+                              nullptr, nullptr, a.r_star, a.lc, a.nu_t,  a.exact_step, a.totals};
     contact_by_law<Parts>(pl, 0);
   }
 };

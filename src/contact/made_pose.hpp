@@ -1,11 +1,11 @@
 #pragma once
-// A box's world vertices made where the pair walk reads them (issue 19): the step's pose pass
-// leaves them unmade (PosedBody::vertices null) and the walk makes the eight corners with
-// pose_box from the pose's own rotation, position and scale, the pass's arithmetic and bits. At
-// scale the pose was written every step and read back after ~70 MB of other traffic: its 192
-// bytes of vertices a cube were ~6 of a cube-step's 34 last-level lines at 216,000 cubes.
-// Other shapes keep their stored vertices, and a rebuild stores every listed body's (its
-// candidate searches and the rebuild step's walk read them there).
+// A box's pose made where the pair walk reads it (issue 19): the step's pose pass leaves a box's
+// PosedBody as it was, and the walk makes it, rotation and eight corners (pose_box), from the
+// body's orientation, position and scale: the pass's arithmetic and bits. At scale the pose was
+// written every step and read back after ~70 MB of other traffic: its 192 bytes of vertices a
+// cube were ~6 of a cube-step's 34 last-level lines at 216,000 cubes, its 128 bytes ~2 of 17 at
+// 54,000. Other shapes keep their stored poses, and a rebuild stores every listed body's (its
+// candidate searches read them there).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -15,11 +15,17 @@
 
 namespace polydem {
 
-// The engine's shapes and each one's box corners (ContactEngine::boxes_): a posed body's shape
-// is one of `shapes`, so its corners are boxes[shape - shapes].
+// The engine's shapes and each one's box corners (ContactEngine::boxes_), and the body arrays a
+// box's pose is made from (pose_body's).
 struct ShapeBoxes {
   const Shape* shapes = nullptr;
-  const std::optional<BoxCorners>* boxes = nullptr;
+  const std::optional<BoxCorners>* boxes = nullptr;  // per shape
+  const int* shape = nullptr;                        // per body, into `shapes`
+  const double* scale = nullptr;                     // per body
+  const Vec3* position = nullptr;                    // m, per body
+  const Quat* orientation = nullptr;                 // per body
+  bool all_boxes = false;                            // every body a box: is_box reads no array
+  bool is_box(std::uint32_t b) const { return all_boxes || boxes[shape[b]].has_value(); }
 };
 
 // A box's pose with its corners made.
@@ -46,20 +52,31 @@ struct MadePose {
   MadeBox own;  // where the body's slot holds the other side's body
 };
 
+// Box b's pose and corners in `box`, as pose_body makes them (the same bits).
+[[gnu::always_inline]] inline void make_box(std::uint32_t b, ShapeBoxes boxes, MadeBox& box) {
+  const int shape = boxes.shape[b];
+  const Shape& s = boxes.shapes[shape];
+  PosedBody& pose = box.pose;
+  pose.scale = boxes.scale[b];
+  pose.position = boxes.position[b];
+  pose.rotation = boxes.orientation[b].toRotationMatrix();
+  pose.shape = &s;
+  pose.vertices = box.vertices.data();
+  pose.radius = s.radius * pose.scale;
+  pose_box(*boxes.boxes[shape], pose.scale, pose.position, pose.rotation, box.vertices.data());
+}
+
 // with_vertices' slot lookup, and the make where b is not there (inline: out of line, +93
 // instructions a cube-step at 54,000; the walk of stored vertices is another instance, no test).
-[[gnu::always_inline]] inline const PosedBody& find_or_make(const PosedBody& posed, std::uint32_t b, ShapeBoxes boxes,
-                                                       MadeCorners& corners, MadePose& made, const MadePose& other) {
+[[gnu::always_inline]] inline const PosedBody& find_or_make(std::uint32_t b, ShapeBoxes boxes, MadeCorners& corners,
+                                                       MadePose& made, const MadePose& other) {
   const std::uint32_t slot = b % MadeCorners::kSlots;
   made.body = b;
   if (corners.body[slot] != b) {
     const bool taken = other.body != ~0u && corners.body[slot] == other.body;
     MadeBox& box = taken ? made.own : corners.made[slot];
     if (!taken) corners.body[slot] = b;
-    box.pose = posed;
-    box.pose.vertices = box.vertices.data();
-    pose_box(*boxes.boxes[posed.shape - boxes.shapes], posed.scale, posed.position, posed.rotation,
-             box.vertices.data());
+    make_box(b, boxes, box);
     made.pose = &box.pose;
   } else {
     made.pose = &corners.made[slot].pose;
@@ -78,15 +95,16 @@ inline MadeWalk& made_walk(std::unique_ptr<MadeWalk>& walk) {
   return *walk;
 }
 
-// Body b's pose as the kernels read it: `posed` where its vertices are stored, else its box
-// made in `corners` (or found there). The slot of `other` (the pair's other side, whose pose
-// the kernels read beside) is never taken: b is then made in made.own (rare).
-[[gnu::always_inline]] inline const PosedBody& with_vertices(const PosedBody& posed, std::uint32_t b, ShapeBoxes boxes,
+// Body b's pose as the kernels read it: a box's made in `corners` (or found there), another
+// shape's stored, posed[b]. The slot of `other` (the pair's other side, whose pose the kernels
+// read beside) is never taken: b is then made in made.own (rare). A box's posed[b] is not read:
+// the step's pose pass leaves it as the last rebuild posed it.
+[[gnu::always_inline]] inline const PosedBody& with_vertices(const PosedBody* posed, std::uint32_t b, ShapeBoxes boxes,
                                                              MadeCorners& corners, MadePose& made,
                                                              const MadePose& other) {
-  if (posed.vertices) return posed;
   if (made.body == b) return *made.pose;
-  return find_or_make(posed, b, boxes, corners, made, other);
+  if (!boxes.is_box(b)) return posed[b];
+  return find_or_make(b, boxes, corners, made, other);
 }
 
 }  // namespace polydem

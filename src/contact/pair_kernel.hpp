@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "contact/contact_mass.hpp"
@@ -50,7 +52,7 @@ struct BodyView {
   const double* mass;       // kg
   bool any_sphere = true;   // some body is a sphere: else no body pair takes the exact step (no shape read per pair)
   std::vector<PairTurn>* turns = nullptr;  // where a pair whose patch pushed leaves its turn (rare)
-  ShapeBoxes boxes;         // a pose without vertices is a box's: its corners made where read (made_pose.hpp)
+  ShapeBoxes boxes;         // a made walk's boxes: their poses made where read (made_pose.hpp)
 };
 // Every body of the contact stage the same sphere: one radius (m) and mass (kg) for all.
 struct EqualSpheres {
@@ -155,11 +157,10 @@ struct PairScratch {
   std::unique_ptr<MadeWalk> made;     // box corners made in this walk (with_vertices), from its first box
 };
 
-// The walked pair's side i as the kernels read it: stored, or a box made (with_vertices) in
-// the walk's boxes `w` (made_walk).
-[[gnu::always_inline]] inline const PosedBody& pose_of_i(const PosedBody& posed, std::uint32_t i, ShapeBoxes boxes,
+// The walked pair's side i as the kernels read it: stored (posed[i]), or a box made
+// (with_vertices) in the walk's boxes `w` (made_walk).
+[[gnu::always_inline]] inline const PosedBody& pose_of_i(const PosedBody* posed, std::uint32_t i, ShapeBoxes boxes,
                                                          MadeWalk& w) {
-  if (posed.vertices) return posed;
   return with_vertices(posed, i, boxes, w.corners, w.made_i, w.made_j);
 }
 
@@ -238,10 +239,10 @@ inline void patch_pushes(const Vec3& xi, const Vec3& v_centre, const Vec3& w_rel
 // weights), so each one's dashpot takes the mass at the patch's centre of pressure, the levers
 // and normals averaged with the weights over its region (the whole pair on convex bodies). A
 // face landing flat then sees the body's mass, not a quarter of it at each corner (which gave
-// a rebound of 0.672 for en 0.5).
-template <class Partner>
-void patch_dashpot_masses(const PosedBody& a, double mass_i, const Vec3& xi, const Partner& partner, std::uint32_t j,
-                          bool regions, PairScratch& scratch) {
+// a rebound of 0.672 for en 0.5). `b`: partner j's pose (Partner::posed_of).
+template <class Partner, class Posed>
+void patch_dashpot_masses(const PosedBody& a, double mass_i, const Vec3& xi, const Partner& partner, const Posed& b,
+                          std::uint32_t j, bool regions, PairScratch& scratch) {
   const std::size_t n = scratch.found.size();
   scratch.patch_mass.resize(n);
   for (std::size_t r = 0; r < n; ++r) {  // region labels are sub-contact indices (contact_regions.hpp)
@@ -257,7 +258,7 @@ void patch_dashpot_masses(const PosedBody& a, double mass_i, const Vec3& xi, con
     const double length = normal.norm();
     if (length > 0.0) normal /= length;
     else normal = scratch.found[r].geometry.normal;  // opposed normals cancel: take the region's first
-    const double m = 1.0 / (point_inverse_mass(a, mass_i, lever, normal) + partner.point_inverse_mass(j, xi + lever, normal));
+    const double m = 1.0 / (point_inverse_mass(a, mass_i, lever, normal) + partner.point_inverse_mass(b, j, xi + lever, normal));
     for (std::size_t c = 0; c < n; ++c)
       if ((regions ? scratch.region[c] : 0) == r) scratch.patch_mass[c] = m;
   }
@@ -316,12 +317,13 @@ template <class Partner, class Posed>
 //   bool apart(const PairList&, std::uint32_t k, double band): true only when pair k cannot touch (O(1))
 //   double moved(i, j): m, bound on how much closer two features got since the build
 //   bool separated(const PosedBody& a, posed_of(j), double band): true only when no contact is possible
-//   double radius(j): the partner's rounding radius (m)
-//   double r_star(r_i, j): m, the curvature radius of a contact of a body of rounding r_i with j (Hertz)
-//   bool convex(j): the partner's core is convex (drivers: true; a mesh keeps its own rules)
-//   const Shape* shape(j): the partner body's shape, null for a driver (contact regions)
+//   of b = posed_of(j) (a made box's pose is read where it was made):
+//   double radius(b): the partner's rounding radius (m)
+//   double r_star(r_i, b): m, the curvature radius of a contact of a body of rounding r_i with j (Hertz)
+//   bool convex(b): the partner's core is convex (drivers: true; a mesh keeps its own rules)
+//   const Shape* shape(b): the partner body's shape, null for a driver (contact regions)
+//   double point_inverse_mass(b, j, point, n): 1/kg, the partner's share of 1/m* (contact_mass.hpp; a driver: 0)
 //   Vec3 center(j), RigidMotion motion(j), double m_eff(i, j)
-//   double point_inverse_mass(j, point, n): 1/kg, the partner's share of 1/m* (contact_mass.hpp; a driver: 0)
 //   void prefetch(j): starts loading partner j's data for the next pair (a hint, no effect on results)
 //   kRetires: a rejected candidate's allowance holds for it (bodies, whose displacement bounds `moved`
 //     sums; not a driver, whose partner pose is made anew); then double allowance(a, posed_of(j), FeaturePair)
@@ -359,8 +361,12 @@ template <class Partner, class Posed>
     __builtin_prefetch(state + 64, 1);
   }
   if (shadows_any(types) && may_be_shadowed_any(types))  // rare: nothing to drop otherwise
-    drop_shadowed(list, a.radius + partner.radius(p.j), a.shape->convex, partner.convex(p.j), scratch);
+    drop_shadowed(list, a.radius + partner.radius(b), a.shape->convex, partner.convex(b), scratch);
 }
+
+// The partner's side of a pair as its kernels read it (Partner::posed_of): a body's pose or a driver's index.
+template <class Partner>
+using PartnerSide = std::remove_cvref_t<decltype(std::declval<const Partner&>().posed_of(0u, std::declval<PairScratch&>()))>;
 
 // What the law of pair k's sub-contacts shares, made once per pair by apply_law: explicit, so the
 // rare sub-contact through contact_force is a call with one pointer, no closures built per pair.
@@ -373,6 +379,8 @@ struct PairLaw {
   const PairScratch& scratch;
   std::uint32_t k;
   BodyPair p;
+  const PosedBody* a;              // i's pose; null where the law reads no contact mass (the lanes')
+  const PartnerSide<Partner>* b;   // j's side; likewise
   double r_star;      // m
   LaneConstants lc;   // the pair's motion relative to i's centre, m_eff, nu and the law's constants
   double nu_t;        // N s/m
@@ -433,8 +441,8 @@ template <class Parts, class Partner>
   double m_dashpot = lc.m_eff, nu_dashpot = lc.nu;  // kg, N s/m: the normal dashpot's mass and coefficient
   if (law.contact_mass) {  // damping_mass: contact: a lone contact's point, or its patch's
     m_dashpot = pl.scratch.found.size() == 1
-                    ? 1.0 / (point_inverse_mass(pl.bodies.posed[pl.p.i], pl.bodies.mass[pl.p.i], motion.lever, g.normal) +
-                             pl.partner.point_inverse_mass(pl.p.j, g.point, g.normal))
+                    ? 1.0 / (point_inverse_mass(*pl.a, pl.bodies.mass[pl.p.i], motion.lever, g.normal) +
+                             pl.partner.point_inverse_mass(*pl.b, pl.p.j, g.point, g.normal))
                     : pl.scratch.patch_mass[c];
     nu_dashpot = Normal::pair_damping(law, m_dashpot, pl.r_star);
   }
@@ -535,11 +543,13 @@ constexpr bool lanes_law() {
 // Applies the law to the sub-contacts in scratch.found (weights in scratch.weight) and adds
 // their forces, torques and energy to `totals`. With `lone` (kLone), a pair whose one sub-contact
 // goes through the lanes is left there instead (its totals too), for lone_pairs.hpp: false then.
-// kLanes: the law's lanes within a pair (law_in_lanes), 4 in the AVX builds only.
+// kLanes: the law's lanes within a pair (law_in_lanes), 4 in the AVX builds only. `a`, `b`: i's
+// pose and j's side (Partner::posed_of).
 template <class Parts, bool kLone = false, int kLanes = 2, class Partner>
 [[gnu::always_inline]] inline bool apply_law(const LawParams& law, double dt, const BodyView& bodies, const Partner& partner,
                                  PairList& list, std::uint32_t k, const PairScratch& scratch, double r_star,
-                                 PairTotals& totals, LonePair* lone = nullptr) {
+                                 const PosedBody& a, const PartnerSide<Partner>& b, PairTotals& totals,
+                                 LonePair* lone = nullptr) {
   using Normal = typename Parts::Normal;
   const BodyPair p = list.pairs[k];
   const Vec3 xi = bodies.position[p.i];
@@ -551,11 +561,10 @@ template <class Parts, bool kLone = false, int kLanes = 2, class Partner>
   const Vec3 v_centre_end = bodies.velocity_end[p.i] - mj.at_end(xi);  // m/s
   const double m_eff = partner.m_eff(p.i, p.j);
   const double nu = Normal::pair_damping(law, m_eff, r_star), nu_t = pair_tangential_damping(law, m_eff);  // N s/m
-  const Shape* shape_j = partner.shape(p.j);  // null: a driver, of infinite mass
+  const Shape* shape_j = partner.shape(b);  // null: a driver, of infinite mass
   const bool exact_step =
       law.exact_step &&
-      (law.contact_mass ||
-       (bodies.any_sphere && bodies.posed[p.i].shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
+      (law.contact_mass || (bodies.any_sphere && a.shape->is_sphere() && (!shape_j || shape_j->is_sphere())));
   // Through the lanes where the law allows it (law_lanes.hpp), in their order.
   bool laned = false;
   if constexpr (lanes_law<Parts>()) {
@@ -591,6 +600,8 @@ template <class Parts, bool kLone = false, int kLanes = 2, class Partner>
                             scratch,
                             k,
                             p,
+                            &a,
+                            &b,
                             r_star,
                             {xi, v_centre, w_rel, v_centre_end, w_rel_end, m_eff, nu, law.kn, law.kt, law.mu, dt},
                             nu_t,
@@ -613,11 +624,11 @@ inline thread_local std::uint32_t turns_left_here = 0;
 
 // Pair p's PairTurn from its pushing sub-contacts' moments (the law's), appended to `turns`.
 template <class Partner>
-[[gnu::noinline]] void leave_turn(const BodyView& bodies, const Partner& partner, BodyPair p, const PairScratch& scratch,
-                                  std::vector<PairTurn>& turns) {
+[[gnu::noinline]] void leave_turn(const BodyView& bodies, const Partner& partner, const PartnerSide<Partner>& b,
+                                  BodyPair p, const PairScratch& scratch, std::vector<PairTurn>& turns) {
   ++turns_left_here;
   const Vec3 xi = bodies.position[p.i], xj = partner.center(p.j);  // m
-  PairTurn turn{p.i, p.j, partner.shape(p.j) == nullptr, Vec3::Zero(), Vec3::Zero()};
+  PairTurn turn{p.i, p.j, partner.shape(b) == nullptr, Vec3::Zero(), Vec3::Zero()};
   for (std::size_t c = 0; c < scratch.found.size(); ++c) {
     if (!scratch.pushing[c]) continue;
     const ContactPoint& g = scratch.found[c].geometry;
@@ -642,27 +653,27 @@ template <class Parts, bool kLone, int kLanes = 2, class Partner>
   if (!was_touching && partner.apart(list, k, band)) return true;  // most listed pairs, at a glance
   if constexpr (Partner::kMadeVertices) made_walk(scratch.made);  // posed_of and pose_of_i read it unchecked
   const PosedBody& a = Partner::kMadeVertices
-                           ? pose_of_i(bodies.posed[p.i], p.i, bodies.boxes, *scratch.made)
+                           ? pose_of_i(bodies.posed, p.i, bodies.boxes, *scratch.made)
                            : bodies.posed[p.i];
   decltype(auto) b = partner.posed_of(p.j, scratch);  // a body's pose (a reference) or a driver's index
   if (!was_touching && partner.separated(a, b, band)) return true;
   find_contacts(band, a, b, partner, list, k, scratch);
-  const double r_star = Parts::Normal::kCurved ? partner.r_star(a.radius, p.j) : 0.0;  // m
+  const double r_star = Parts::Normal::kCurved ? partner.r_star(a.radius, b) : 0.0;  // m
   const bool changed = (was_touching || !scratch.found.empty()) && !same_contacts(list, was_touching, scratch.found);
   if (changed)
     totals.energy = hand_over_history(list, list.slot_begin[k], list.slot_begin[k + 1], was_touching,
                                       scratch.found, scratch.now_on, &law, r_star);
   if (scratch.found.empty()) return true;
-  const bool regions = scratch.found.size() > 1 && !(a.shape->convex && partner.convex(p.j));
+  const bool regions = scratch.found.size() > 1 && !(a.shape->convex && partner.convex(b));
   if (regions)
     region_patch_weights(
         scratch.found.size(), [&](std::size_t c) { return list.features[scratch.found[c].slot]; },
-        [&](std::size_t c) { return scratch.found[c].geometry.gap; }, *a.shape, partner.shape(p.j), band,
+        [&](std::size_t c) { return scratch.found[c].geometry.gap; }, *a.shape, partner.shape(b), band,
         scratch.weight, scratch.region);
   else
     patch_weights(scratch.found, band, scratch.weight);
   if (law.contact_mass && scratch.found.size() > 1)
-    patch_dashpot_masses(a, bodies.mass[p.i], bodies.position[p.i], partner, p.j, regions, scratch);
+    patch_dashpot_masses(a, bodies.mass[p.i], bodies.position[p.i], partner, b, p.j, regions, scratch);
   scratch.onsets = scratch.pushes = false;
   if (changed && scratch.found.size() > 1) {
     patch_onsets(regions, scratch);
@@ -673,8 +684,9 @@ template <class Parts, bool kLone, int kLanes = 2, class Partner>
                    dt, scratch);
     }
   }
-  if (!apply_law<Parts, kLone, kLanes>(law, dt, bodies, partner, list, k, scratch, r_star, totals, lone)) return false;
-  if (scratch.pushes && bodies.turns) [[unlikely]] leave_turn(bodies, partner, p, scratch, *bodies.turns);
+  if (!apply_law<Parts, kLone, kLanes>(law, dt, bodies, partner, list, k, scratch, r_star, a, b, totals, lone))
+    return false;
+  if (scratch.pushes && bodies.turns) [[unlikely]] leave_turn(bodies, partner, b, p, scratch, *bodies.turns);
   return true;
 }
 

@@ -23,16 +23,20 @@ struct BodyPartner {
   const Vec3* angular_velocity_end;  // rad/s, likewise
   const double* mass;            // kg
   const double* displacement;  // m, per body since the lists were built
-  const Vec3* world_vertices;  // null: every body a box, its vertices made where read
+  const Vec3* world_vertices;  // m, the stored poses' vertices
   const std::uint32_t* vertex_offset;  // body j's vertices: world_vertices[vertex_offset[j] ...]
   ShapeBoxes boxes;
-  // Starts loading what the kernels will read of body j: its pose, vertices and velocities
-  // sit anywhere in memory, and the next pair's loads would otherwise stall.
+  // Starts loading what the kernels will read of body j: its pose (a box's orientation: its pose
+  // is made from it), vertices and velocities sit anywhere in memory, and the next pair's loads
+  // would otherwise stall.
   void prefetch(std::uint32_t j) const {
-    const char* pose = reinterpret_cast<const char*>(&posed[j]);
-    __builtin_prefetch(pose);
-    __builtin_prefetch(pose + 64);
-    if (world_vertices) {
+    if (kMade && boxes.is_box(j)) {
+      __builtin_prefetch(&boxes.orientation[j]);
+      __builtin_prefetch(&position[j]);
+    } else {
+      const char* pose = reinterpret_cast<const char*>(&posed[j]);
+      __builtin_prefetch(pose);
+      __builtin_prefetch(pose + 64);
       const char* v = reinterpret_cast<const char*>(world_vertices + vertex_offset[j]);
       const char* v_end = reinterpret_cast<const char*>(world_vertices + vertex_offset[j + 1]);
       for (; v < v_end; v += 64) __builtin_prefetch(v);
@@ -44,9 +48,8 @@ struct BodyPartner {
   }
   const PosedBody& posed_of(std::uint32_t j, PairScratch& s) const {
     if constexpr (kMade) {
-      if (posed[j].vertices) return posed[j];
       MadeWalk& w = *s.made;  // made by the caller (pair_forces_into)
-      return with_vertices(posed[j], j, boxes, w.corners, w.made_j, w.made_i);
+      return with_vertices(posed, j, boxes, w.corners, w.made_j, w.made_i);
     }
     return posed[j];
   }
@@ -61,16 +64,17 @@ struct BodyPartner {
   }
   double moved(std::uint32_t i, std::uint32_t j) const { return displacement[i] + displacement[j]; }  // m
   bool separated(const PosedBody& a, const PosedBody& b, double band) const { return separated_along_centres(a, b, band); }
-  double radius(std::uint32_t j) const { return posed[j].radius; }
-  double r_star(double r_i, std::uint32_t j) const { return r_i * posed[j].radius / (r_i + posed[j].radius); }  // m
-  bool convex(std::uint32_t j) const { return posed[j].shape->convex; }
-  const Shape* shape(std::uint32_t j) const { return posed[j].shape; }
+  // Of body j's pose b (posed_of's): a made box's is read where it was made, not in `posed`.
+  double radius(const PosedBody& b) const { return b.radius; }
+  double r_star(double r_i, const PosedBody& b) const { return r_i * b.radius / (r_i + b.radius); }  // m
+  bool convex(const PosedBody& b) const { return b.shape->convex; }
+  const Shape* shape(const PosedBody& b) const { return b.shape; }
   Vec3 center(std::uint32_t j) const { return position[j]; }
   RigidMotion motion(std::uint32_t j) const {
     return {velocity[j], angular_velocity[j], position[j], velocity_end[j], angular_velocity_end[j]};
   }
-  double point_inverse_mass(std::uint32_t j, const Vec3& point, const Vec3& n) const {
-    return polydem::point_inverse_mass(posed[j], mass[j], point - position[j], n);
+  double point_inverse_mass(const PosedBody& b, std::uint32_t j, const Vec3& point, const Vec3& n) const {
+    return polydem::point_inverse_mass(b, mass[j], point - position[j], n);
   }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
     const double mi = mass[i], mj = mass[j];
@@ -92,6 +96,7 @@ struct DriverPartner {
   bool apart(const PairList&, std::uint32_t, double) const { return false; }  // a moving driver has no bound
   double moved(std::uint32_t, std::uint32_t) const { return 0.0; }  // its slots' gaps are -inf
   bool separated(const PosedBody&, std::uint32_t, double) const { return false; }  // walls: slots are cheap
+  // Of driver j (posed_of's): as BodyPartner's of a body's pose.
   double radius(std::uint32_t j) const { return drivers->rounding(j); }  // balls and posts: a rounded point, segment
   double r_star(double r_i, std::uint32_t j) const { return drivers->r_star(j, r_i); }  // m
   bool convex(std::uint32_t) const { return true; }
@@ -102,7 +107,7 @@ struct DriverPartner {
     return {d.velocity, d.omega, d.pivot, d.velocity, d.omega};
   }
   double m_eff(std::uint32_t i, std::uint32_t) const { return mass[i]; }
-  double point_inverse_mass(std::uint32_t, const Vec3&, const Vec3&) const { return 0.0; }  // infinitely massive
+  double point_inverse_mass(std::uint32_t, std::uint32_t, const Vec3&, const Vec3&) const { return 0.0; }  // infinitely massive
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };
 
