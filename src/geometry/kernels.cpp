@@ -73,7 +73,7 @@ inline bool points_into(const Vec3& n, const Vec3& ca, const Vec3& cb, const Pos
 // For a vertex p inside B's core at signed depth d < 0 below face f: true when f is the face it
 // is least deep under (ties to the lowest index), the face it will leave through. Other faces
 // would give a sideways push; only called for interpenetrating cores, O(faces).
-[[gnu::noinline]] bool is_exit_face(const PosedBody& B, int f, const Vec3& p, double d) {
+bool is_exit_face(const PosedBody& B, int f, const Vec3& p, double d) {
   const Shape& s = *B.shape;
   for (int g = 0; g < static_cast<int>(s.faces.size()); ++g) {
     if (g == f) continue;
