@@ -3,9 +3,23 @@
 command -v mpirun > /dev/null || fail "no mpirun: tools/setup.sh installs openmpi-bin"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI runs as root
 expect_timeout=240
+exec 9>&2  # the test's own stderr: callers send a run's output elsewhere, a failure's tail comes here
 mpi() {  # ranks, then polydem's arguments; ranks that wait yield the cores (2 in CI)
-  local np=$1; shift
-  timeout "$expect_timeout" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np "$np" "$polydem" "$@"
+  local np=$1 code attempt; shift
+  for attempt in 1 2; do
+    set +e
+    timeout "$expect_timeout" mpirun --oversubscribe -q --mca mpi_yield_when_idle 1 -np "$np" "$polydem" "$@" \
+      2> "$tmp/mpi.err"
+    code=$?
+    set -e
+    cat "$tmp/mpi.err" >&2
+    # Open MPI failing to start the ranks (no rank printed a 'polydem:' or 'error:' line): once more
+    [ "$code" -ne 0 ] && [ "$attempt" = 1 ] && ! grep -q '^polydem:\|^error:' "$tmp/mpi.err" || break
+    echo "mpirun -np $np failed (exit $code) before polydem started; once more. It printed:" >&9
+    tail -n 20 "$tmp/mpi.err" >&9
+  done
+  [ "$code" -eq 0 ] || { echo "mpirun -np $np $*: exit $code; its last lines:" >&9; tail -n 20 "$tmp/mpi.err" >&9; }
+  return "$code"
 }
 # The newest checkpoint of a folder: a one-file checkpoint or a manifest, not a piece.
 last_checkpoint() { ls "$1"/checkpoint_*.bin | grep -v '_p[0-9]*\.bin$' | sort | tail -1; }
