@@ -32,7 +32,8 @@ inline SubContactMotion sub_contact_motion(const Vec3& point, const Vec3& xi, co
 }
 
 // N = 4 runs only inlined into the AVX builds' copies (pair_loop.hpp's walk_chunk_avx): no call
-// passes a 256-bit vector, so GCC's note on their ABI without AVX does not apply.
+// passes a 256-bit vector (the helpers here and in lanes.hpp are inlined: POLYDEM_LANE_INLINE), so
+// GCC's note on their ABI without AVX does not apply.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 // Applies the law to sub-contacts g[0..N) (weights w, histories h), one per lane, where steady:
@@ -50,13 +51,13 @@ template <int N, bool kAcross = false, class H>
   using V = typename Types<N>::V;
   using V3 = Vec3Of<V>;
   const LaneConstants& p = *pc[0];
-  const auto each = [&](auto get) { return gather<V>(get); };
+  const auto each = [&](auto get) POLYDEM_LANE_LAMBDA { return gather<V>(get); };
   // A pair value: lane by lane across pairs, one splat within a pair.
-  const auto pair_vec = [&](Vec3 LaneConstants::*member) {
+  const auto pair_vec = [&](Vec3 LaneConstants::*member) POLYDEM_LANE_LAMBDA {
     if constexpr (kAcross) return load<V>([&](int l) -> const Vec3& { return pc[l]->*member; });
     else return splat<V>(p.*member);
   };
-  const auto pair_value = [&](double LaneConstants::*member) {
+  const auto pair_value = [&](double LaneConstants::*member) POLYDEM_LANE_LAMBDA {
     if constexpr (kAcross) return each([&](int l) { return pc[l]->*member; });
     else return splat<V>(p.*member);
   };

@@ -23,9 +23,7 @@ struct LonePairKernel {
   const Partner& partner;
   PairList& list;
 
-#if !defined(__clang__)  // clang's steady_law<4> disagrees with steady_law<1> (test_law_lanes_wide): two lanes there
   LonePairKernel<Parts, Partner, 4> wide() const { return {law, band, dt, bodies, partner, list}; }
-#endif
   PairTotals operator()(std::uint32_t k, PairScratch& scratch) const {
     return pair_forces<Parts, kLanes>(law, band, dt, bodies, partner, list, k, scratch);
   }

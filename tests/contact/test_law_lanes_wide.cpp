@@ -6,9 +6,6 @@
 #include "contact/law_lanes.hpp"
 #include "law_lanes_draw.hpp"
 
-// GCC only: clang's build of steady_law<4> takes fewer lanes than steady_law<1> on some draws, so
-// its walk keeps two lanes (LonePairKernel::wide, lone_pairs.hpp).
-#if !defined(__clang__)
 using namespace polydem;
 using namespace polydem::law_lanes_test;
 
@@ -97,4 +94,3 @@ TEST_CASE("law lanes: four pairs' lone contacts have the one-lane law's bits, la
   CHECK(steady > 15000);  // 23,347 drawn
   CHECK(steady < 35000);
 }
-#endif  // !__clang__
