@@ -79,6 +79,7 @@ ContactEngine::ContactEngine(const std::vector<Shape>& shapes, const LocalBodies
   made_vertices_ = settings_.made_vertices >= 0 ? settings_.made_vertices == 1 : n >= kMadeVerticesBodies;
   made_vertices_ = made_vertices_ && std::any_of(shape.begin(), shape.end(), [&](int s) { return boxes_[s].has_value(); });
   boxes_only_ = std::all_of(shape.begin(), shape.end(), [&](int s) { return boxes_[s].has_value(); });
+  alike_ = alike_bodies(shape, scale, *bodies.mass);
   if (spheres_only_) return;  // spheres are posed when read (sphere_pose), or kept by keep_sphere_poses
   world_vertices_.resize(vertex_offset_[n]);
   if (was && !was->spheres_only_) posed_ = std::move(was->posed_);  // its rows are posed again before read
@@ -131,7 +132,7 @@ ListedPoses ContactEngine::listed_poses(const LocalBodies& bodies) {
   return {{bodies.position->data(), bodies.orientation->data(), bodies.shape->data(), bodies.scale->data(),
            shapes_.data(), boxes_.data(), listed_.data(), vertex_offset_.data(), world_vertices_.data(),
            posed_.data(), !made_vertices_},
-          std::uint32_t(listed_.size())};
+          std::uint32_t(unposed_boxes() ? 0 : listed_.size())};
 }
 
 // Bodies far from every other body and driver (falling in a pour) need no world vertices.
@@ -558,7 +559,7 @@ void ContactEngine::forces(const LocalBodies& bodies, Drivers& drivers, double d
                       any_sphere_,
                       &turns_,
                       {shapes_.data(), boxes_.data(), bodies.shape->data(), bodies.scale->data(),
-                       bodies.position->data(), bodies.orientation->data(), boxes_only_}};
+                       bodies.position->data(), bodies.orientation->data(), boxes_only_, alike_ ? 0u : ~0u}};
   // Both pair loops end without a barrier: the one after them is kept only where the region
   // reads their results (the sums) before its end. A trailing pass reads a body's driver pairs
   // after its body pairs: each thread makes its driver pairs first.
@@ -625,7 +626,7 @@ void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, d
       with_law(settings_.driver, [&](auto parts) {
         using Parts = decltype(parts);
         const LawParams& law = settings_.driver;
-        const DriverPartner<decltype(made)::value> partner{&drivers, view.mass};
+        const DriverPartner<decltype(made)::value> partner{&drivers, view.mass, view.boxes.body_mask};
         const std::uint64_t at_rest = drivers_at_rest(drivers);
         // Equal spheres: one radius, mass and k', c' for all (index 0 through mask 0).
         const double r = equal_spheres_ ? equal_spheres_->radius : 0.0, m = equal_spheres_ ? equal_spheres_->mass : 0.0;

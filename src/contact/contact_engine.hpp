@@ -350,6 +350,10 @@ class ContactEngine {
   bool any_sphere_ = true;                 // some body is a sphere (BodyView::any_sphere)
   bool made_vertices_ = false;             // a step's poses leave a box's vertices unmade (made_pose.hpp)
   bool boxes_only_ = false;                // every body a box: a made walk asks no body's shape (ShapeBoxes::all_boxes)
+  bool alike_ = false;                     // every body body 0's shape, scale and mass (ShapeBoxes::body_mask)
+  // Every body a box a made walk makes: the pass behind the walk would leave each pose as it was
+  // (pose_body), so it reads none of the listed bodies' indices and shapes (8 bytes a cube-step, issue 19).
+  bool unposed_boxes() const { return boxes_only_ && made_vertices_; }
   std::optional<EqualSpheres> equal_spheres_;  // spheres only, all alike (set at rebuilds): the body list has no linear_steps
   bool record_contacts_ = true;            // the lists keep their records (record_contacts)
   bool reactions_wanted_ = true;           // close_forces sums the drivers' reactions (want_reactions)

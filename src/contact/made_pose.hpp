@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "geometry/box_pose.hpp"
 
@@ -25,8 +26,19 @@ struct ShapeBoxes {
   const Vec3* position = nullptr;                    // m, per body
   const Quat* orientation = nullptr;                 // per body
   bool all_boxes = false;                            // every body a box: is_box reads no array
-  bool is_box(std::uint32_t b) const { return all_boxes || boxes[shape[b]].has_value(); }
+  // ~0u, or 0 where every body has body 0's shape, scale and mass (alike_bodies): a made walk reads
+  // body b's at b & body_mask, so equal cubes stream none of the three arrays (issue 19).
+  std::uint32_t body_mask = ~0u;
+  bool is_box(std::uint32_t b) const { return all_boxes || boxes[shape[b & body_mask]].has_value(); }
 };
+
+// Whether every body has body 0's shape, scale and mass (ShapeBoxes::body_mask 0); none: false.
+inline bool alike_bodies(const std::vector<int>& shape, const std::vector<double>& scale,
+                         const std::vector<double>& mass) {
+  for (std::size_t b = 1; b < shape.size(); ++b)
+    if (shape[b] != shape[0] || scale[b] != scale[0] || mass[b] != mass[0]) return false;
+  return !shape.empty();
+}
 
 // A box's pose with its corners made.
 struct MadeBox {
@@ -54,10 +66,10 @@ struct MadePose {
 
 // Box b's pose and corners in `box`, as pose_body makes them (the same bits).
 [[gnu::always_inline]] inline void make_box(std::uint32_t b, ShapeBoxes boxes, MadeBox& box) {
-  const int shape = boxes.shape[b];
+  const int shape = boxes.shape[b & boxes.body_mask];
   const Shape& s = boxes.shapes[shape];
   PosedBody& pose = box.pose;
-  pose.scale = boxes.scale[b];
+  pose.scale = boxes.scale[b & boxes.body_mask];
   pose.position = boxes.position[b];
   pose.rotation = boxes.orientation[b].toRotationMatrix();
   pose.shape = &s;

@@ -74,12 +74,14 @@ struct BodyPartner {
     return {velocity[j], angular_velocity[j], position[j], velocity_end[j], angular_velocity_end[j]};
   }
   double point_inverse_mass(const PosedBody& b, std::uint32_t j, const Vec3& point, const Vec3& n) const {
-    return polydem::point_inverse_mass(b, mass[j], point - position[j], n);
+    return polydem::point_inverse_mass(b, mass_of(j), point - position[j], n);
   }
   double m_eff(std::uint32_t i, std::uint32_t j) const {
-    const double mi = mass[i], mj = mass[j];
+    const double mi = mass_of(i), mj = mass_of(j);
     return mi * mj / (mi + mj);
   }
+  // kg; a made walk's alike bodies read body 0's (ShapeBoxes::body_mask), the stored walk each one's.
+  double mass_of(std::uint32_t b) const { return mass[kMade ? b & boxes.body_mask : b]; }
 };
 
 // The partner of a body-driver pair: a driver of infinite mass (m_eff = m_i, SPEC). kMade: as BodyPartner's.
@@ -89,6 +91,7 @@ struct DriverPartner {
   static constexpr bool kMadeVertices = kMade;
   const Drivers* drivers;
   const double* mass;  // kg, per local body
+  std::uint32_t body_mask = ~0u;  // a made walk's ShapeBoxes::body_mask: 0, every body body 0's mass
   std::uint32_t posed_of(std::uint32_t j, PairScratch&) const { return j; }  // its kernels pose it themselves
   bool contact(const PosedBody& a, std::uint32_t j, FeaturePair f, double max_gap, ContactPoint& out) const {
     return drivers->contact(a, j, f, max_gap, out);
@@ -106,7 +109,7 @@ struct DriverPartner {
     const DriverState& d = (*drivers)[j];
     return {d.velocity, d.omega, d.pivot, d.velocity, d.omega};
   }
-  double m_eff(std::uint32_t i, std::uint32_t) const { return mass[i]; }
+  double m_eff(std::uint32_t i, std::uint32_t) const { return mass[kMade ? i & body_mask : i]; }
   double point_inverse_mass(std::uint32_t, std::uint32_t, const Vec3&, const Vec3&) const { return 0.0; }  // infinitely massive
   void prefetch(std::uint32_t) const {}  // few drivers: they stay in cache
 };

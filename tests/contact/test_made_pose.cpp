@@ -84,3 +84,41 @@ TEST_CASE("a general polyhedron's stored pose is read where it is, every box mad
   CHECK(&made != &cubes.with[3]);
   CHECK(cubes.same(made, 3));
 }
+
+TEST_CASE("alike bodies: one shape, scale and mass for all, and a made box then reads body 0's") {
+  const std::vector<int> shape(5, 0);
+  const std::vector<double> scale(5, 1.5), mass(5, 2.7e-3);  // -, kg
+  CHECK(alike_bodies(shape, scale, mass));
+  CHECK_FALSE(alike_bodies({}, {}, {}));
+  std::vector<int> other_shape = shape;
+  other_shape[4] = 1;
+  std::vector<double> other_scale = scale, other_mass = mass;
+  other_scale[3] = 1.25;
+  other_mass[2] = 2.8e-3;  // kg
+  CHECK_FALSE(alike_bodies(other_shape, scale, mass));
+  CHECK_FALSE(alike_bodies(shape, other_scale, mass));
+  CHECK_FALSE(alike_bodies(shape, scale, other_mass));
+
+  // body_mask 0: body b's box is made with body 0's shape and scale, its own orientation and position.
+  PosedSet alike(make_cube(0.0045, 0.0005), 6);
+  const std::size_t nv = alike.shapes[0].vertices.size();
+  for (std::size_t b = 0; b < alike.with.size(); ++b) {  // stored again at body 0's scale
+    alike.scale[b] = alike.scale[0];
+    pose_vertices(alike.shapes[0], alike.scale[b], alike.position[b], alike.with[b].rotation, &alike.stored[b * nv]);
+    alike.with[b].radius = alike.shapes[0].radius * alike.scale[b];
+    alike.with[b].scale = alike.scale[b];
+  }
+  ShapeBoxes masked = alike.view();
+  masked.body_mask = 0;
+  const std::vector<int> one_shape{0};
+  const std::vector<double> one_scale{alike.scale[0]};
+  masked.shape = one_shape.data();  // body 0's alone: a read of another body's would leave the arrays
+  masked.scale = one_scale.data();
+  MadeCorners corners;
+  MadePose a, b;
+  for (std::uint32_t k = 0; k < alike.with.size(); ++k) {
+    INFO("body " << k);
+    CHECK(masked.is_box(k));
+    CHECK(alike.same(with_vertices(alike.stale.data(), k, masked, corners, a, b), k));
+  }
+}
