@@ -27,15 +27,13 @@ struct PoseArrays {
   bool box_vertices;  // a box's too (a rebuild's readers); else a box's pose is left as it was, made where read (made_pose.hpp)
 };
 
-// What moves with body b (its rotation, world vertices and centre), made in place: no temporary
+// What moves with body b (its rotation, world vertices v and centre), made in place: no temporary
 // pose to copy. `box`: its shape's corners where it is a box (the same bits in a third of the
-// arithmetic), else null.
+// arithmetic), else null; `scale` b's. The caller reads v and scale: the vertices' stores may
+// alias anything, so a read after them is a reload.
 [[gnu::always_inline]] inline void pose_motion(const PoseArrays& a, std::uint32_t b, const Shape& s,
-                                               const BoxCorners* box, PosedBody& posed) {
-  Vec3* v = a.world_vertices + a.vertex_offset[b];
-  // Read once into locals: the vertices' stores may alias anything, so each read reloaded them.
-  const Vec3 position = a.position[b];  // m
-  const double scale = a.scale[b];
+                                               const BoxCorners* box, double scale, Vec3* v, PosedBody& posed) {
+  const Vec3 position = a.position[b];  // m, read once into locals as v and scale
   posed.rotation = a.orientation[b].toRotationMatrix();  // once per body and step
   if (!box)
     pose_vertices(s, scale, position, posed.rotation, v);
@@ -51,11 +49,12 @@ struct PoseArrays {
   const std::optional<BoxCorners>& box = a.boxes[a.shape[b]];
   if (box && !a.box_vertices) return;
   const Shape& s = a.shapes[a.shape[b]];
+  Vec3* v = a.world_vertices + a.vertex_offset[b];
   PosedBody& posed = a.posed[b];
-  pose_motion(a, b, s, box ? &*box : nullptr, posed);
   const double scale = a.scale[b];
+  pose_motion(a, b, s, box ? &*box : nullptr, scale, v, posed);
   posed.shape = &s;
-  posed.vertices = a.world_vertices + a.vertex_offset[b];
+  posed.vertices = v;
   posed.radius = s.radius * scale;
   posed.scale = scale;
 }
@@ -66,7 +65,8 @@ struct PoseArrays {
 [[gnu::always_inline]] inline void repose_body(const PoseArrays& a, std::uint32_t b) {
   const std::optional<BoxCorners>& box = a.boxes[a.shape[b]];
   if (box && !a.box_vertices) return;
-  pose_motion(a, b, a.shapes[a.shape[b]], box ? &*box : nullptr, a.posed[b]);
+  pose_motion(a, b, a.shapes[a.shape[b]], box ? &*box : nullptr, a.scale[b], a.world_vertices + a.vertex_offset[b],
+              a.posed[b]);
 }
 
 }  // namespace engine_detail
@@ -89,7 +89,8 @@ struct ListedPoses {
     if (!a.box_vertices) return;  // a made walk makes every box's pose
     for (; e < count && a.listed[e] < last; ++e) {  // repose_body's, ~6 instructions a cube-step fewer
       const std::uint32_t b = a.listed[e];
-      engine_detail::pose_motion(a, b, a.shapes[a.shape[b]], &*a.boxes[a.shape[b]], a.posed[b]);
+      engine_detail::pose_motion(a, b, a.shapes[a.shape[b]], &*a.boxes[a.shape[b]], a.scale[b],
+                                 a.world_vertices + a.vertex_offset[b], a.posed[b]);
     }
   }
 };
