@@ -132,7 +132,7 @@ ListedPoses ContactEngine::listed_poses(const LocalBodies& bodies) {
   return {{bodies.position->data(), bodies.orientation->data(), bodies.shape->data(), bodies.scale->data(),
            shapes_.data(), boxes_.data(), listed_.data(), vertex_offset_.data(), world_vertices_.data(),
            posed_.data(), !made_vertices_},
-          std::uint32_t(unposed_boxes() ? 0 : listed_.size())};
+          std::uint32_t(unposed_boxes() ? 0 : listed_.size()), boxes_only_};
 }
 
 // Bodies far from every other body and driver (falling in a pour) need no world vertices.

@@ -92,10 +92,12 @@ struct ForceSums {
     add_to(b, force[b], torque[b]);
   }
   // Body b's sum (its pairs', then its touching driver pairs') added to f_to and t_to (N, N m).
+  // kLate false: b has no late term (every pair of it in its home chunk), `late` is not read.
+  template <bool kLate = true>
   [[gnu::always_inline]] void add_to(std::size_t b, Vec3& f_to, Vec3& t_to) const {
     Vec3 f = body[b].force, t = body[b].torque;
     body[b] = BodySum{};
-    late.add_to(b, f, t);
+    if constexpr (kLate) late.add_to(b, f, t);
     for (std::uint32_t k = driver_begin[b]; k < driver_begin[b + 1]; ++k) {
       if (!touching[k]) continue;
       f += force_i[k];
