@@ -626,7 +626,8 @@ void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, d
       with_law(settings_.driver, [&](auto parts) {
         using Parts = decltype(parts);
         const LawParams& law = settings_.driver;
-        const DriverPartner<decltype(made)::value> partner{&drivers, view.mass, view.boxes.body_mask};
+        using Partner = DriverPartner<decltype(made)::value>;
+        const Partner partner{&drivers, view.mass, view.boxes.body_mask};
         const std::uint64_t at_rest = drivers_at_rest(drivers);
         // Equal spheres: one radius, mass and k', c' for all (index 0 through mask 0).
         const double r = equal_spheres_ ? equal_spheres_->radius : 0.0, m = equal_spheres_ ? equal_spheres_->mass : 0.0;
@@ -642,15 +643,22 @@ void ContactEngine::driver_pair_forces(const BodyView& view, Drivers& drivers, d
         // Spheres' pairs cost alike: a fixed share each. Polyhedra's shared as they come (they
         // also even out the body pairs' walk, which ends without a barrier), but by bodies ahead of a
         // trailing pass (trail_driver_range).
-        if (spheres_only_ && wall_lanes_fit<Parts>(law))  // steady sphere-wall pairs two at a time
-          even_pair_forces(driver_list_,
-                           WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_,
-                                                             sizes, at_rest},
-                           driver_begin_.data(), body_cut());
-        else if (spheres_only_ || by_bodies)
-          even_pair_forces(driver_list_, kernel, driver_begin_.data(), body_cut());
-        else
+        const auto by_body = [&](const auto& k) { even_pair_forces(driver_list_, k, driver_begin_.data(), body_cut()); };
+        if (spheres_only_ && wall_lanes_fit<Parts>(law)) {  // steady sphere-wall pairs two at a time
+          by_body(WallLanesKernel<decltype(kernel)>{kernel, law, band_driver_, dt, view, drivers, driver_list_, sizes,
+                                                    at_rest});
+        } else if (spheres_only_) {
+          by_body(kernel);
+        } else if (by_bodies) {
+          // Pairs of one steady contact (a cube's corner on a wall) two at a time, a flat cube's
+          // four corners in four lanes in the AVX build (lone_pairs.hpp).
+          if constexpr (lanes_law<Parts>())
+            by_body(LonePairKernel<Parts, Partner>{law, band_driver_, dt, view, partner, driver_list_});
+          else
+            by_body(kernel);
+        } else {
           all_pair_forces<true>(driver_list_, kernel);
+        }
       });
     });
   }

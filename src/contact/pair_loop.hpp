@@ -358,6 +358,18 @@ template <class Kernel>
       });
 }
 
+// A pair's forces kept in the list (block_forces through lone_paired_pairs): each pair's own, so
+// their order is free.
+struct KeepForces {
+  PairList& list;
+  [[gnu::always_inline]] void operator()(std::uint32_t k, const PairTotals& pt) const {
+    list.force_i[k] = pt.force_i;
+    list.torque_i[k] = pt.torque_i;
+    list.torque_j[k] = pt.torque_j;
+  }
+  [[gnu::always_inline]] void out_of_reach(std::uint32_t k, const PairTotals& pt) const { (*this)(k, pt); }
+};
+
 // Block b's pairs: each one's forces kept in the list, its energy added to its pending sum in
 // step order, the block's contacts counted and its ended contacts flagged.
 template <class Kernel>
@@ -367,6 +379,8 @@ void block_forces(PairList& list, const Kernel& kernel, std::size_t b, PairScrat
   const std::uint32_t begin = std::uint32_t(b * list.block), end = std::uint32_t(std::min(list.size(), (b + 1) * list.block));
   if constexpr (requires { Kernel::kTwoLanes; }) {
     paired_block(list, kernel, scratch, begin, end, contacts, ended);
+  } else if constexpr (requires { Kernel::kLonePairs; }) {
+    lone_paired_pairs(list, kernel, KeepForces{list}, scratch, begin, end, contacts, ended);
   } else {
     for (std::uint32_t k = begin; k < end; ++k) keep_results(list, k, kernel(k, scratch), contacts, ended);
   }
@@ -380,11 +394,15 @@ template <class Kernel>
 [[gnu::noinline]] void even_block(PairList& list, const Kernel& kernel, std::size_t b, PairScratch& scratch) {
   block_forces(list, kernel, b, scratch);
 }
-// even_block compiled for AVX, as walk_chunk_avx (the same bits).
+// even_block compiled for AVX, as walk_chunk_avx, through the kernel's four lanes where it has
+// them (wide()): the same bits.
 template <class Kernel>
 [[gnu::noinline, gnu::target("avx"), gnu::flatten]] void even_block_avx(PairList& list, const Kernel& kernel, std::size_t b,
                                                                        PairScratch& scratch) {
-  block_forces(list, kernel, b, scratch);
+  if constexpr (requires { kernel.wide(); })
+    block_forces(list, kernel.wide(), b, scratch);
+  else
+    block_forces(list, kernel, b, scratch);
 }
 
 }  // namespace pair_loop_detail
